@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+
+class Amesos_BaseSolver;
+class Epetra_LinearProblem;
+class Epetra_MultiVector;
+
+namespace fdem
+{
+  namespace blocks
+  {
+    using namespace dealii;
+
+    /**
+     * A sparse direct solver from Trilinos Amesos that factorises a matrix
+     * once and then solves for any number of right-hand sides, one or many
+     * at a time. The FE part of the method is linear, so each block's
+     * stiffness is factorised exactly once per run.
+     */
+    class DirectSolver
+    {
+    public:
+      /** @p solver_type is an Amesos class name, e.g. "Amesos_Klu". */
+      explicit DirectSolver(const std::string &solver_type);
+      ~DirectSolver();
+
+      /** Symbolic and numeric factorisation of @p matrix (kept by reference). */
+      void
+      factorize(const TrilinosWrappers::SparseMatrix &matrix);
+
+      /** Solves A x = b for all columns of @p b at once. */
+      void
+      solve(Epetra_MultiVector &x, Epetra_MultiVector &b) const;
+
+      /** Solves A x = b for one right-hand side. */
+      Vector<double>
+      solve(const Vector<double> &b) const;
+
+    private:
+      const std::string                     solver_type;
+      const TrilinosWrappers::SparseMatrix *matrix = nullptr;
+      std::unique_ptr<Epetra_LinearProblem> problem;
+      std::unique_ptr<Amesos_BaseSolver>    solver;
+    };
+  } // namespace blocks
+} // namespace fdem

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/blocks/direct_solver.h>
+#include <fdem/geometry/mesh_description.h>
+#include <fdem/parameters/model_parameters.h>
+
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace blocks
+  {
+    using namespace dealii;
+
+    /**
+     * A node of a block on an interface: a support point of the finite
+     * element with its dofs and its consistent nodal weights.
+     */
+    template <int dim>
+    struct InterfaceNode
+    {
+      Point<dim>                                   position;
+      std::array<types::global_dof_index, dim>     dofs;
+      /** Tributary area A = int_Gamma phi dGamma (length in 2D, per unit thickness). */
+      double                                       area = 0;
+      /** int_Gamma phi n dGamma with n the block's outward normal. */
+      Tensor<1, dim>                               area_normal;
+    };
+
+    /**
+     * One linear elastic body meshed with finite elements: its stiffness K
+     * (factorised once), its load vector F (gravity and pressures), its
+     * Dirichlet conditions, and the rigid motions those conditions leave free
+     * (design/formulation.md Sec. 2). A block with free modes is held for the
+     * FE solves by a minimal, statically determinate support that removes
+     * exactly those modes; the mixed system then adds them back as unknowns.
+     *
+     * The merged mesh of a whole model is an ElasticBlock too (every cell
+     * takes the material of its block): that is the plain FE model the mixed
+     * method must reproduce when everything sticks.
+     */
+    template <int dim>
+    class ElasticBlock
+    {
+    public:
+      /**
+       * Builds the block from the cells of @p block_ids in @p mesh, with the
+       * material of each block index in @p materials.
+       */
+      ElasticBlock(const std::string &                          name,
+                   const geometry::MeshDescription<dim> &       mesh,
+                   const std::vector<unsigned int> &            block_ids,
+                   const std::map<unsigned int, parameters::MaterialParameters>
+                     &                                          materials,
+                   const unsigned int                           fe_degree);
+
+      /**
+       * Applies the Dirichlet conditions and records the pressures, keyed by
+       * face-group index (boundary id). @p interface_ids lists the face
+       * groups that are interfaces (never used for supports).
+       */
+      void
+      setup_constraints(
+        const std::map<types::boundary_id, parameters::BoundaryParameters>
+          &                                    boundary_conditions,
+        const std::vector<types::boundary_id> &interface_ids);
+
+      /** Finds the free rigid modes and adds a minimal support for them. */
+      void
+      find_free_rigid_modes();
+
+      /** Assembles K and F, and factorises K with the Amesos @p solver_type. */
+      void
+      assemble_and_factorize(const parameters::LoadParameters &loads,
+                             const std::string &               solver_type);
+
+      /**
+       * Displacement u = K^{-1} (F_nodal) for a nodal force vector on this
+       * block's dofs (Dirichlet and support dofs end with zero).
+       */
+      Vector<double>
+      solve(const Vector<double> &nodal_forces) const;
+
+      /**
+       * Flexibility matrix C(i,j) = (K^{-1})_{ij} restricted to @p dofs: the
+       * displacement at dof i due to a unit force at dof j. Solved with
+       * blocks of right-hand sides, the factorisation reused.
+       */
+      FullMatrix<double>
+      flexibility(const std::vector<types::global_dof_index> &dofs) const;
+
+      /** The nodes of this block on the face group @p group. */
+      std::vector<InterfaceNode<dim>>
+      interface_nodes(const types::boundary_id group) const;
+
+      /**
+       * Nodal forces sum over cells (K_e u_e - F_e) over the cells whose
+       * material id is @p material_id (all cells for invalid_unsigned_int): at
+       * a node on the boundary of that set, the force the rest of the world
+       * exerts on it. Used for reactions and interface forces.
+       */
+      Vector<double>
+      nodal_residual(const Vector<double> &u,
+                     const unsigned int    material_id =
+                       numbers::invalid_unsigned_int) const;
+
+      /** Number of free rigid modes. */
+      unsigned int
+      n_free_rigid_modes() const
+      {
+        return free_modes.n();
+      }
+
+      /**
+       * Displacement at @p x of free mode @p k (the k-th column of omega
+       * restricted to the free modes, eq. 1).
+       */
+      Tensor<1, dim>
+      free_mode_displacement(const unsigned int k, const Point<dim> &x) const;
+
+      /** Adds the rigid motion sum_k gamma_k omega_k (eq. 1) to the field @p u. */
+      void
+      add_rigid_motion(const Vector<double> &gamma, Vector<double> &u) const;
+
+      /** Generalised load on free mode k: omega_k^T F (eq. 7). */
+      double
+      free_mode_load(const unsigned int k) const;
+
+      std::string                    name;
+      Triangulation<dim>             triangulation;
+      FESystem<dim>                  fe;
+      MappingQ<dim>                  mapping;
+      DoFHandler<dim>                dof_handler;
+      /** Material per block index (the cells' material ids). */
+      std::map<unsigned int, parameters::MaterialParameters> materials;
+      /** Dirichlet conditions of the block. */
+      AffineConstraints<double>      dirichlet_constraints;
+      /** Dirichlet conditions plus the minimal support of the free modes. */
+      AffineConstraints<double>      constraints;
+      /** Dofs of the minimal support. */
+      std::vector<types::global_dof_index> support_dofs;
+      /** Free rigid modes: n_rigid_modes x n_free coefficients of the modes. */
+      FullMatrix<double>             free_modes;
+      /** Centre and length scale of the rigid modes (centroid, size). */
+      Point<dim>                     centre;
+      double                         length_scale = 1;
+      /** External nodal forces F (before constraints). */
+      Vector<double>                 load_vector;
+
+    private:
+      std::map<types::boundary_id, std::shared_ptr<Function<dim>>> pressures;
+      std::vector<types::boundary_id> interface_ids;
+      TrilinosWrappers::SparseMatrix  stiffness_matrix;
+      std::unique_ptr<DirectSolver>   direct_solver;
+      parameters::LoadParameters      loads;
+
+      /** Support point and vector component of every dof. */
+      std::vector<Point<dim>>   dof_support_points;
+      std::vector<unsigned int> dof_components;
+
+      /** Values of every rigid mode at every dof (n_dofs x n_rigid_modes). */
+      FullMatrix<double>
+      rigid_modes_at_dofs() const;
+
+      /** Element stiffness K_e and load F_e (gravity and pressures). */
+      void
+      assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    FEValues<dim> &                                       fe_values,
+                    FEFaceValues<dim> &  fe_face_values,
+                    FullMatrix<double> & cell_matrix,
+                    Vector<double> &     cell_rhs) const;
+    };
+  } // namespace blocks
+} // namespace fdem

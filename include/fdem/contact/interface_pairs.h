@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/blocks/elastic_block.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    /**
+     * A node pair of an interface (design/formulation.md Sec. 1): node a on
+     * block I, node b on block J. Its local frame has the unit normal n,
+     * pointing from J into I, as row 0 and the tangents as the other rows,
+     * so that local = frame * global. Contact forces f are the forces that
+     * block I exerts on block J; f_n > 0 is tension.
+     */
+    template <int dim>
+    struct NodePair
+    {
+      Point<dim>                               position_I, position_J;
+      std::array<types::global_dof_index, dim> dofs_I, dofs_J;
+      /** Rows: n, then the tangent(s). In 2D t is n turned +90 degrees. */
+      Tensor<2, dim> frame;
+      /** Tributary area A_k = int phi_k dGamma on side J (length in 2D). */
+      double area = 0;
+      /** Initial normal gap delta_0 = (x_a - x_b) . n >= 0. */
+      double initial_gap = 0;
+    };
+
+    /** An interface between block I and block J with its node pairs. */
+    template <int dim>
+    struct Interface
+    {
+      std::string              name;
+      types::boundary_id       face_group = 0;
+      unsigned int             block_I = 0, block_J = 0;
+      std::vector<NodePair<dim>> pairs;
+      /** Interface nodes left without a partner on each side. */
+      unsigned int n_unpaired_I = 0, n_unpaired_J = 0;
+    };
+
+    /**
+     * Pairs the nodes of face group @p face_group on @p block_I with those on
+     * @p block_J: coincident nodes, or, within @p search_distance, the node
+     * of J found along J's normal. Normals and areas are the consistent
+     * nodal ones of side J (design/formulation.md Sec. 1).
+     */
+    template <int dim>
+    Interface<dim>
+    make_interface(const std::string &                  name,
+                   const types::boundary_id             face_group,
+                   const unsigned int                   index_I,
+                   const blocks::ElasticBlock<dim> &    block_I,
+                   const unsigned int                   index_J,
+                   const blocks::ElasticBlock<dim> &    block_J,
+                   const double                         search_distance);
+  } // namespace contact
+} // namespace fdem

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/geometry/mesh_description.h>
+
+#include <string>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    /**
+     * Scope of the Gmsh library (gmsh::initialize() ... gmsh::finalize()),
+     * silent on the terminal. Gmsh is a global singleton, so only one
+     * session may exist at a time.
+     *
+     * Gmsh 4.8's C++ API reports an error by throwing the message as a
+     * std::string (option General.AbortOnError = 2, which initialize() sets).
+     * After such a throw while reading a file, Gmsh stays locked and ignores
+     * further files ("I'm busy!") until it is finalized, so the session
+     * that saw an error should end: run() converts the error and the
+     * destructor finalizes while the exception propagates.
+     */
+    class GmshSession
+    {
+    public:
+      GmshSession();
+      ~GmshSession();
+
+      GmshSession(const GmshSession &) = delete;
+      GmshSession &
+      operator=(const GmshSession &) = delete;
+
+      /**
+       * Call @p gmsh_calls and turn a Gmsh error into an ExcMessage that
+       * starts with @p context (e.g. "Gmsh could not read 'slope.msh'").
+       */
+      template <typename Function>
+      static void
+      run(const std::string &context, const Function &gmsh_calls)
+      {
+        try
+          {
+            gmsh_calls();
+          }
+        catch (const std::string &gmsh_error)
+          {
+            throw_error(context, gmsh_error);
+          }
+      }
+
+    private:
+      [[noreturn]] static void
+      throw_error(const std::string &context, const std::string &gmsh_error);
+
+      static bool active;
+    };
+
+    /**
+     * Read a Gmsh file and convert it with extract_current_gmsh_model(): a
+     * mesh (.msh of any version, ASCII or binary) or a geometry (.geo), which
+     * is meshed in @p dim dimensions. Opens its own GmshSession.
+     */
+    template <int dim>
+    MeshDescription<dim>
+    read_gmsh_file(const std::string &file_name);
+
+    /**
+     * Convert the mesh of the model currently loaded in Gmsh (a GmshSession
+     * must be active). Physical groups of dimension @p dim become the blocks
+     * (an unnamed group is called "block <tag>"), those of dimension dim-1
+     * the face groups. Cells must be quadrilaterals (2D) or hexahedra (3D) of
+     * any order; their corner nodes are used. Only vertices of cells are
+     * kept, and the cells are made positively oriented and consistently
+     * ordered. @p source names the model in messages.
+     */
+    template <int dim>
+    MeshDescription<dim>
+    extract_current_gmsh_model(const std::string &source);
+
+    /**
+     * Write @p mesh as a Gmsh file (format from the extension; .msh is
+     * written as version 4 ASCII), with one physical group per block and
+     * per face group. Opens its own GmshSession.
+     */
+    template <int dim>
+    void
+    write_gmsh_file(const MeshDescription<dim> &mesh,
+                    const std::string          &file_name);
+  } // namespace geometry
+} // namespace fdem

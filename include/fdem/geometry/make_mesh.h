@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/geometry/mesh_description.h>
+#include <fdem/parameters/geometry_parameters.h>
+
+#include <string>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    /**
+     * The mesh that the subsection "Geometry" describes: read from the mesh
+     * file (relative to @p prm_directory) or made by a built-in generator
+     * (2D only), then transformed by apply_transformation(). If
+     * @p msh_output_file is not empty, the final mesh is also written there
+     * (Gmsh .msh version 4, ASCII) for the user to look at.
+     */
+    template <int dim>
+    MeshDescription<dim>
+    make_mesh(const parameters::GeometryParameters &geometry,
+              const std::string                    &prm_directory,
+              const std::string                    &msh_output_file);
+
+    /**
+     * Map every vertex x of @p mesh to R (s x) + t, with the scale factor s,
+     * the rotation R (about z in 2D, about the rotation axis in 3D) and the
+     * translation t of @p geometry. Orientations are kept since s > 0.
+     */
+    template <int dim>
+    void
+    apply_transformation(const parameters::GeometryParameters &geometry,
+                         MeshDescription<dim>                 &mesh);
+  } // namespace geometry
+} // namespace fdem

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/blocks/elastic_block.h>
+#include <fdem/contact/interface_pairs.h>
+#include <fdem/contact/mixed_system.h>
+#include <fdem/geometry/mesh_description.h>
+#include <fdem/parameters/parameters.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  using namespace dealii;
+
+  /**
+   * A slope model of the mixed FEM-DEM method (Liu et al. 2012): elastic
+   * blocks meshed with finite elements, joined by interfaces of node pairs.
+   * run() follows the paper's steps; the steps are public so that tests can
+   * drive them one by one.
+   */
+  template <int dim>
+  class Model
+  {
+  public:
+    Model(const parameters::Parameters &parameters,
+          const std::string &           expanded_parameters,
+          std::ostream &                log);
+
+    /** Everything, as the paper does it, then the output files. */
+    void
+    run();
+
+    /** Mesh from Gmsh (a file or a generator): blocks, face groups. */
+    void
+    make_geometry();
+    /** One elastic block per mesh block: dofs, constraints, free rigid modes. */
+    void
+    setup_blocks();
+    /** K and F of each block, K factorised once; u_bar = K^{-1} F. */
+    void
+    assemble_and_factorize();
+    /** Node pairs of every interface, with frames, areas and gaps. */
+    void
+    build_interfaces();
+    /** C = C_I + C_J, g_bar, W and omega^T F (eqs. 4-8), computed once. */
+    void
+    compute_flexibility();
+    /** Solves eq. (9) for the pair forces and rigid motions. */
+    void
+    solve_contact();
+    /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
+    void
+    recover_block_displacements();
+    /** VTU/PVD, interface CSV, summary.json. */
+    void
+    output_results();
+
+    const parameters::Parameters                        parameters;
+    geometry::MeshDescription<dim>                      mesh;
+    std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> blocks;
+    std::vector<contact::Interface<dim>>                interfaces;
+    std::vector<Vector<double>>                         external_displacements;
+    std::unique_ptr<contact::MixedSystem<dim>>          mixed_system;
+    std::vector<contact::PairStatus>                    statuses;
+    contact::ContactSolution                            contact_solution;
+    std::vector<Vector<double>>                         displacements;
+    nlohmann::json                                      summary;
+
+  private:
+    std::string   expanded_parameters;
+    std::ostream &log;
+    TimerOutput   timer;
+
+    /** Index of the face group called @p name, or throws naming @p what. */
+    types::boundary_id
+    face_group(const std::string &name, const std::string &what) const;
+  };
+
+  /** Reads the .prm file and runs the case in its dimension; returns the summary. */
+  nlohmann::json
+  run_case(const std::string &prm_file, std::ostream &log);
+} // namespace fdem

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace parameters
+  {
+    /**
+     * Material of one block: subsection "Blocks/<block name>".
+     * Units are the model's (e.g. kN and m, or N and mm), used consistently.
+     */
+    struct MaterialParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      /** Young's modulus E (force/length^2). */
+      double youngs_modulus = 0;
+      /** Poisson's ratio nu, 0 <= nu < 0.5. */
+      double poissons_ratio = 0.3;
+      /** Unit weight (force/length^3); acts along the gravity direction. */
+      double unit_weight = 0;
+      /** Density (mass/length^3); multiplied by the gravitational acceleration. */
+      double density = 0;
+    };
+
+    /** How a boundary part is supported. */
+    enum class Constraint
+    {
+      none,
+      fixed,
+      normal
+    };
+
+    /**
+     * Conditions on one named boundary part: subsection
+     * "Boundaries/<face group name>".
+     */
+    struct BoundaryParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string &       path,
+                       const unsigned int        dim);
+
+      /** Displacement constraint on the part. */
+      Constraint constraint = Constraint::none;
+      /**
+       * Pressure (force/length^2, positive pushing into the body) as a
+       * function of x, y (, z); "0" for none.
+       */
+      std::string pressure = "0";
+    };
+
+    /** Geometric pairing and strength of one interface: "Interfaces/<name>". */
+    struct InterfaceParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      /**
+       * Largest initial normal gap (length) at which a node of one side is
+       * paired with the node of the other side found along the normal; 0
+       * pairs coincident nodes only.
+       */
+      double search_distance = 0;
+    };
+
+    /** Gravity and the other loads common to all blocks: subsection "Loads". */
+    struct LoadParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
+
+      /** Unit vector of gravity. */
+      std::vector<double> gravity_direction = {0, -1};
+      /** Gravitational acceleration (length/time^2), used with densities. */
+      double gravitational_acceleration = 9.81;
+    };
+
+    /** Linear solvers: subsection "Solver". */
+    struct SolverParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Amesos direct solver that factorises each block stiffness once. */
+      std::string direct_solver = "Amesos_Klu";
+    };
+
+    /** What the run writes: subsection "Output". */
+    struct OutputParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Output folder; empty means "<case name>-output" in the working directory. */
+      std::string directory;
+      /** Write VTU/PVD files for ParaView (the CSV and JSON files are always written). */
+      bool write_vtu = true;
+    };
+
+    /** True if @p expression is a valid function of x, y (, z) in @p dim dimensions. */
+    bool
+    expression_parses(const std::string &expression, const unsigned int dim);
+
+    /** Parses "a, b, c" into exactly n_components numbers, or throws naming path. */
+    std::vector<double>
+    parse_vector(const std::string &text,
+                 const unsigned int n_components,
+                 const std::string &path);
+  } // namespace parameters
+} // namespace fdem

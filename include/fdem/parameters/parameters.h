@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/parameters/geometry_parameters.h>
+#include <fdem/parameters/model_parameters.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace parameters
+  {
+    /**
+     * Everything a .prm file says. The numbers of blocks, boundary parts and
+     * interfaces vary from case to case, so their subsections are declared
+     * from the name lists "Blocks/Names", "Boundaries/Names" and
+     * "Interfaces/Names": the file is read twice, first for the names, then
+     * strictly (an unknown entry or subsection is an error).
+     */
+    struct Parameters
+    {
+      /** Spatial dimension, 2 (plane strain) or 3. */
+      unsigned int dimension = 2;
+      /** Polynomial degree of the finite elements, 1 or 2. */
+      unsigned int fe_degree = 1;
+      /** Name of the case: the .prm file's name without extension. */
+      std::string case_name;
+      /** Folder of the .prm file; relative file names are taken from there. */
+      std::string prm_directory = ".";
+
+      GeometryParameters geometry;
+      LoadParameters     loads;
+      SolverParameters   solver;
+      OutputParameters   output;
+
+      std::vector<std::string>                   block_names;
+      std::map<std::string, MaterialParameters>  materials;
+      std::vector<std::string>                   boundary_names;
+      std::map<std::string, BoundaryParameters>  boundaries;
+      std::vector<std::string>                   interface_names;
+      std::map<std::string, InterfaceParameters> interfaces;
+
+      /** Declares every entry, with subsections for the given names. */
+      static void
+      declare_parameters(dealii::ParameterHandler &      prm,
+                         const std::vector<std::string> &block_names,
+                         const std::vector<std::string> &boundary_names,
+                         const std::vector<std::string> &interface_names);
+
+      /** Reads the values from a handler declared by declare_parameters(). */
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /** The output folder this run writes into. */
+      std::string
+      output_directory() const;
+    };
+
+    /**
+     * Reads and checks a .prm file. Throws an exception with a one-sentence
+     * message naming the file, line or parameter on any error.
+     * @p expanded receives the full parameter set used (for the output folder).
+     */
+    Parameters
+    read_parameters(const std::string &filename, std::string *expanded = nullptr);
+
+    /**
+     * Prints every parameter with its default, pattern and help text, for
+     * the given file or, if @p filename is empty, for the default case.
+     */
+    void
+    print_parameters(std::ostream &out, const std::string &filename);
+  } // namespace parameters
+} // namespace fdem

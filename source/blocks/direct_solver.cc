@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/blocks/direct_solver.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <Amesos.h>
+#include <Amesos_BaseSolver.h>
+#include <Epetra_LinearProblem.h>
+#include <Epetra_MultiVector.h>
+
+namespace fdem
+{
+  namespace blocks
+  {
+    DirectSolver::DirectSolver(const std::string &solver_type)
+      : solver_type(solver_type)
+    {}
+
+    DirectSolver::~DirectSolver() = default;
+
+    void
+    DirectSolver::factorize(const TrilinosWrappers::SparseMatrix &A)
+    {
+      matrix = &A;
+      problem =
+        std::make_unique<Epetra_LinearProblem>(const_cast<Epetra_CrsMatrix *>(
+                                                 &A.trilinos_matrix()),
+                                               nullptr,
+                                               nullptr);
+      Amesos factory;
+      AssertThrow(factory.Query(solver_type),
+                  ExcMessage("Solver/Direct solver: '" + solver_type +
+                             "' is not available in this Trilinos build."));
+      solver.reset(factory.Create(solver_type, *problem));
+      AssertThrow(solver->SymbolicFactorization() == 0,
+                  ExcMessage("The symbolic factorisation of a block "
+                             "stiffness matrix failed."));
+      AssertThrow(solver->NumericFactorization() == 0,
+                  ExcMessage("The factorisation of a block stiffness matrix "
+                             "failed: the block is not held (check its "
+                             "constraints)."));
+    }
+
+    void
+    DirectSolver::solve(Epetra_MultiVector &x, Epetra_MultiVector &b) const
+    {
+      Assert(solver != nullptr, ExcMessage("factorize() first."));
+      problem->SetLHS(&x);
+      problem->SetRHS(&b);
+      AssertThrow(solver->Solve() == 0,
+                  ExcMessage("A direct solve with a factorised block "
+                             "stiffness matrix failed."));
+    }
+
+    Vector<double>
+    DirectSolver::solve(const Vector<double> &b) const
+    {
+      const Epetra_Map  &map = matrix->trilinos_matrix().DomainMap();
+      Epetra_MultiVector rhs(map, 1), x(map, 1);
+      for (unsigned int i = 0; i < b.size(); ++i)
+        rhs[0][i] = b[i];
+      solve(x, rhs);
+      Vector<double> result(b.size());
+      for (unsigned int i = 0; i < b.size(); ++i)
+        result[i] = x[0][i];
+      return result;
+    }
+  } // namespace blocks
+} // namespace fdem

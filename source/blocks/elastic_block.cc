@@ -1,0 +1,453 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/blocks/elastic_block.h>
+#include <fdem/blocks/rigid_modes.h>
+#include <fdem/geometry/block_mesh.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <Epetra_MultiVector.h>
+
+#include <algorithm>
+#include <set>
+
+namespace fdem
+{
+  namespace blocks
+  {
+    template <int dim>
+    ElasticBlock<dim>::ElasticBlock(
+      const std::string &                                             name,
+      const geometry::MeshDescription<dim> &                          mesh,
+      const std::vector<unsigned int> &                               block_ids,
+      const std::map<unsigned int, parameters::MaterialParameters> &materials,
+      const unsigned int                                              fe_degree)
+      : name(name)
+      , fe(FE_Q<dim>(fe_degree), dim)
+      , mapping(1)
+      , materials(materials)
+    {
+      geometry::create_block_triangulation(mesh, block_ids, triangulation);
+      dof_handler.reinit(triangulation);
+      dof_handler.distribute_dofs(fe);
+
+      // Rigid modes are taken about the centroid, scaled by the block size.
+      double volume = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          centre += cell->measure() * cell->center();
+          volume += cell->measure();
+        }
+      centre /= volume;
+      length_scale = 0;
+      for (const Point<dim> &v : triangulation.get_vertices())
+        length_scale = std::max(length_scale, v.distance(centre));
+
+      dof_support_points.resize(dof_handler.n_dofs());
+      dof_components.resize(dof_handler.n_dofs());
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            {
+              dof_components[dofs[i]] = fe.system_to_component_index(i).first;
+              dof_support_points[dofs[i]] = mapping.transform_unit_to_real_cell(
+                cell, fe.get_unit_support_points()[i]);
+            }
+        }
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::setup_constraints(
+      const std::map<types::boundary_id, parameters::BoundaryParameters>
+        &                                    boundary_conditions,
+      const std::vector<types::boundary_id> &interface_group_ids)
+    {
+      interface_ids = interface_group_ids;
+      AffineConstraints<double> fixed, normal;
+      std::set<types::boundary_id> normal_ids;
+      for (const auto &[id, condition] : boundary_conditions)
+        {
+          if (condition.constraint == parameters::Constraint::fixed)
+            VectorTools::interpolate_boundary_values(
+              mapping, dof_handler, id, Functions::ZeroFunction<dim>(dim), fixed);
+          else if (condition.constraint == parameters::Constraint::normal)
+            normal_ids.insert(id);
+
+          if (condition.pressure != "0")
+            {
+              auto pressure = std::make_shared<FunctionParser<dim>>(1);
+              pressure->initialize(FunctionParser<dim>::default_variable_names(),
+                                   condition.pressure,
+                                   {{"pi", numbers::PI}});
+              pressures[id] = pressure;
+            }
+        }
+      if (!normal_ids.empty())
+        VectorTools::compute_no_normal_flux_constraints(
+          dof_handler, 0, normal_ids, normal, mapping);
+
+      // Where a fixed part meets a roller, the fixed condition wins.
+      dirichlet_constraints.clear();
+      dirichlet_constraints.merge(normal);
+      dirichlet_constraints.merge(
+        fixed, AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
+      dirichlet_constraints.close();
+      constraints.copy_from(dirichlet_constraints);
+    }
+
+    template <int dim>
+    FullMatrix<double>
+    ElasticBlock<dim>::rigid_modes_at_dofs() const
+    {
+      FullMatrix<double> modes(dof_handler.n_dofs(), n_rigid_modes<dim>);
+      for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
+        for (unsigned int m = 0; m < n_rigid_modes<dim>; ++m)
+          modes(i, m) = rigid_mode(m,
+                                   dof_support_points[i],
+                                   centre,
+                                   length_scale)[dof_components[i]];
+      return modes;
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::find_free_rigid_modes()
+    {
+      const FullMatrix<double> modes = rigid_modes_at_dofs();
+      free_modes = free_rigid_modes(dirichlet_constraints, modes);
+      support_dofs.clear();
+      constraints.clear();
+      constraints.copy_from(dirichlet_constraints);
+      if (free_modes.n() == 0)
+        return;
+
+      // Candidate support dofs: neither constrained nor on an interface,
+      // starting at the node nearest the centroid, then the farthest ones,
+      // which gives a well-conditioned pin-and-roller support.
+      const std::set<types::boundary_id> interfaces(interface_ids.begin(),
+                                                    interface_ids.end());
+      const IndexSet on_interface =
+        interfaces.empty() ?
+          IndexSet(dof_handler.n_dofs()) :
+          DoFTools::extract_boundary_dofs(dof_handler, ComponentMask(), interfaces);
+      std::vector<types::global_dof_index> candidates;
+      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+        if (!dirichlet_constraints.is_constrained(i) &&
+            !on_interface.is_element(i))
+          candidates.push_back(i);
+      AssertThrow(!candidates.empty(),
+                  ExcMessage("Block '" + name +
+                             "': no node is free to hold its rigid modes."));
+      const auto nearest =
+        *std::min_element(candidates.begin(),
+                          candidates.end(),
+                          [&](const auto a, const auto b) {
+                            return dof_support_points[a].distance(centre) <
+                                   dof_support_points[b].distance(centre);
+                          });
+      const Point<dim> pin = dof_support_points[nearest];
+      std::stable_sort(candidates.begin(),
+                       candidates.end(),
+                       [&](const auto a, const auto b) {
+                         const bool a_pin = dof_support_points[a] == pin;
+                         const bool b_pin = dof_support_points[b] == pin;
+                         if (a_pin != b_pin)
+                           return a_pin;
+                         return dof_support_points[a].distance(pin) >
+                                dof_support_points[b].distance(pin);
+                       });
+      support_dofs = minimal_support_dofs(free_modes, modes, candidates);
+      AssertThrow(support_dofs.size() == free_modes.n(),
+                  ExcMessage("Block '" + name +
+                             "': cannot find a support that holds its free "
+                             "rigid modes."));
+      for (const types::global_dof_index dof : support_dofs)
+        constraints.add_line(dof);
+      constraints.close();
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::assemble_cell(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      FEValues<dim> &                                       fe_values,
+      FEFaceValues<dim> &                                   fe_face_values,
+      FullMatrix<double> &                                  cell_matrix,
+      Vector<double> &                                      cell_rhs) const
+    {
+      const parameters::MaterialParameters &material =
+        materials.at(cell->material_id());
+      const double E = material.youngs_modulus, nu = material.poissons_ratio;
+      const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+      const double mu     = E / (2 * (1 + nu));
+      Tensor<1, dim> body_force;
+      for (unsigned int d = 0; d < dim; ++d)
+        body_force[d] = (material.unit_weight +
+                         material.density * loads.gravitational_acceleration) *
+                        loads.gravity_direction[d];
+
+      const FEValuesExtractors::Vector displacement(0);
+      fe_values.reinit(cell);
+      cell_matrix = 0;
+      cell_rhs    = 0;
+      const unsigned int n = fe.n_dofs_per_cell();
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const double JxW = fe_values.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto eps_i = fe_values[displacement].symmetric_gradient(i, q);
+              const double div_i = trace(eps_i);
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  const auto eps_j =
+                    fe_values[displacement].symmetric_gradient(j, q);
+                  cell_matrix(i, j) +=
+                    (lambda * div_i * trace(eps_j) + 2 * mu * (eps_i * eps_j)) *
+                    JxW;
+                }
+              cell_rhs(i) +=
+                fe_values[displacement].value(i, q) * body_force * JxW;
+            }
+        }
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const auto pressure = pressures.find(face->boundary_id());
+            if (pressure == pressures.end())
+              continue;
+            fe_face_values.reinit(cell, face);
+            for (const unsigned int q : fe_face_values.quadrature_point_indices())
+              {
+                // A pressure pushes against the outward normal.
+                const Tensor<1, dim> traction =
+                  -pressure->second->value(fe_face_values.quadrature_point(q)) *
+                  fe_face_values.normal_vector(q);
+                for (unsigned int i = 0; i < n; ++i)
+                  cell_rhs(i) += fe_face_values[displacement].value(i, q) *
+                                 traction * fe_face_values.JxW(q);
+              }
+          }
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::assemble_and_factorize(
+      const parameters::LoadParameters &load_parameters,
+      const std::string &               solver_type)
+    {
+      loads = load_parameters;
+      DynamicSparsityPattern dsp(dof_handler.n_dofs());
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      stiffness_matrix.reinit(dsp);
+      load_vector.reinit(dof_handler.n_dofs());
+
+      const unsigned int degree = fe.degree;
+      FEValues<dim>      fe_values(mapping,
+                              fe,
+                              QGauss<dim>(degree + 1),
+                              update_values | update_gradients |
+                                update_JxW_values);
+      FEFaceValues<dim>  fe_face_values(mapping,
+                                       fe,
+                                       QGauss<dim - 1>(degree + 2),
+                                       update_values | update_normal_vectors |
+                                         update_quadrature_points |
+                                         update_JxW_values);
+      FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+      Vector<double>     cell_rhs(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_rhs);
+          cell->get_dof_indices(dofs);
+          constraints.distribute_local_to_global(cell_matrix, dofs, stiffness_matrix);
+          load_vector.add(dofs, cell_rhs);
+        }
+      stiffness_matrix.compress(VectorOperation::add);
+
+      direct_solver = std::make_unique<DirectSolver>(solver_type);
+      direct_solver->factorize(stiffness_matrix);
+    }
+
+    template <int dim>
+    Vector<double>
+    ElasticBlock<dim>::solve(const Vector<double> &nodal_forces) const
+    {
+      Vector<double> rhs = nodal_forces;
+      constraints.condense(rhs);
+      Vector<double> u = direct_solver->solve(rhs);
+      constraints.distribute(u);
+      return u;
+    }
+
+    template <int dim>
+    FullMatrix<double>
+    ElasticBlock<dim>::flexibility(
+      const std::vector<types::global_dof_index> &dofs) const
+    {
+      const unsigned int n = dofs.size();
+      FullMatrix<double> C(n, n);
+      const Epetra_Map & map = stiffness_matrix.trilinos_matrix().DomainMap();
+      // Blocks of right-hand sides: one pass through the factors for many.
+      const unsigned int block_size = 64;
+      Vector<double>     column(dof_handler.n_dofs());
+      for (unsigned int first = 0; first < n; first += block_size)
+        {
+          const unsigned int n_columns = std::min(block_size, n - first);
+          Epetra_MultiVector rhs(map, n_columns), x(map, n_columns);
+          for (unsigned int c = 0; c < n_columns; ++c)
+            {
+              column             = 0;
+              column[dofs[first + c]] = 1;
+              constraints.condense(column);
+              for (unsigned int i = 0; i < column.size(); ++i)
+                rhs[c][i] = column[i];
+            }
+          direct_solver->solve(x, rhs);
+          for (unsigned int c = 0; c < n_columns; ++c)
+            {
+              for (unsigned int i = 0; i < column.size(); ++i)
+                column[i] = x[c][i];
+              constraints.distribute(column);
+              for (unsigned int r = 0; r < n; ++r)
+                C(r, first + c) = column[dofs[r]];
+            }
+        }
+      return C;
+    }
+
+    template <int dim>
+    std::vector<InterfaceNode<dim>>
+    ElasticBlock<dim>::interface_nodes(const types::boundary_id group) const
+    {
+      std::vector<InterfaceNode<dim>>               nodes;
+      std::map<types::global_dof_index, unsigned int> node_of_first_dof;
+      FEFaceValues<dim> fe_face_values(mapping,
+                                       fe,
+                                       QGauss<dim - 1>(fe.degree + 1),
+                                       update_values | update_normal_vectors |
+                                         update_JxW_values);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == group)
+            {
+              fe_face_values.reinit(cell, f);
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                {
+                  if (!fe.has_support_on_face(i, f))
+                    continue;
+                  const auto [component, base] = fe.system_to_component_index(i);
+                  const types::global_dof_index first =
+                    dofs[fe.component_to_system_index(0, base)];
+                  const auto [it, is_new] =
+                    node_of_first_dof.emplace(first, nodes.size());
+                  if (is_new)
+                    {
+                      nodes.emplace_back();
+                      nodes.back().position = dof_support_points[first];
+                    }
+                  InterfaceNode<dim> &node = nodes[it->second];
+                  node.dofs[component]     = dofs[i];
+                  if (component != 0)
+                    continue;
+                  // Consistent nodal weights: int phi dGamma, int phi n dGamma.
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    {
+                      const double phi_JxW =
+                        fe_face_values.shape_value_component(i, q, 0) *
+                        fe_face_values.JxW(q);
+                      node.area += phi_JxW;
+                      node.area_normal += phi_JxW * fe_face_values.normal_vector(q);
+                    }
+                }
+            }
+      return nodes;
+    }
+
+    template <int dim>
+    Vector<double>
+    ElasticBlock<dim>::nodal_residual(const Vector<double> &u,
+                                      const unsigned int    material_id) const
+    {
+      Vector<double>     residual(dof_handler.n_dofs());
+      const unsigned int degree = fe.degree;
+      FEValues<dim>      fe_values(mapping,
+                              fe,
+                              QGauss<dim>(degree + 1),
+                              update_values | update_gradients |
+                                update_JxW_values);
+      FEFaceValues<dim>  fe_face_values(mapping,
+                                       fe,
+                                       QGauss<dim - 1>(degree + 2),
+                                       update_values | update_normal_vectors |
+                                         update_quadrature_points |
+                                         update_JxW_values);
+      FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
+      Vector<double>     cell_rhs(fe.n_dofs_per_cell()), cell_u(fe.n_dofs_per_cell()),
+        cell_residual(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (material_id == numbers::invalid_unsigned_int ||
+            cell->material_id() == material_id)
+          {
+            assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_rhs);
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              cell_u[i] = u[dofs[i]];
+            cell_matrix.vmult(cell_residual, cell_u);
+            cell_residual -= cell_rhs;
+            residual.add(dofs, cell_residual);
+          }
+      return residual;
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    ElasticBlock<dim>::free_mode_displacement(const unsigned int k,
+                                              const Point<dim> & x) const
+    {
+      Tensor<1, dim> u;
+      for (unsigned int m = 0; m < n_rigid_modes<dim>; ++m)
+        u += free_modes(m, k) * rigid_mode(m, x, centre, length_scale);
+      return u;
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::add_rigid_motion(const Vector<double> &gamma,
+                                        Vector<double> &      u) const
+    {
+      for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
+        for (unsigned int k = 0; k < gamma.size(); ++k)
+          u[i] += gamma[k] *
+                  free_mode_displacement(k, dof_support_points[i])[dof_components[i]];
+    }
+
+    template <int dim>
+    double
+    ElasticBlock<dim>::free_mode_load(const unsigned int k) const
+    {
+      double work = 0;
+      for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
+        work += load_vector[i] *
+                free_mode_displacement(k, dof_support_points[i])[dof_components[i]];
+      return work;
+    }
+
+    template class ElasticBlock<2>;
+    template class ElasticBlock<3>;
+  } // namespace blocks
+} // namespace fdem

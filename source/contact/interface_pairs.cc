@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/contact/interface_pairs.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <cmath>
+
+namespace fdem
+{
+  namespace contact
+  {
+    namespace
+    {
+      /** Local frame with rows n, t (2D) or n, t1, t2 (3D). */
+      template <int dim>
+      Tensor<2, dim>
+      local_frame(const Tensor<1, dim> &n)
+      {
+        Tensor<2, dim> frame;
+        frame[0] = n;
+        if constexpr (dim == 2)
+          {
+            frame[1][0] = -n[1];
+            frame[1][1] = n[0];
+          }
+        else
+          {
+            // t1 lies in the plane of n and the axis least aligned with it.
+            unsigned int axis = 0;
+            for (unsigned int d = 1; d < 3; ++d)
+              if (std::abs(n[d]) < std::abs(n[axis]))
+                axis = d;
+            Tensor<1, 3> e;
+            e[axis]               = 1;
+            Tensor<1, 3> t1       = e - (e * n) * n;
+            t1 /= t1.norm();
+            frame[1] = t1;
+            frame[2] = cross_product_3d(n, t1);
+          }
+        return frame;
+      }
+
+      /** Typical node spacing around a node of tributary area @p area. */
+      template <int dim>
+      double
+      node_spacing(const double area)
+      {
+        return dim == 2 ? area : std::sqrt(area);
+      }
+    } // namespace
+
+    template <int dim>
+    Interface<dim>
+    make_interface(const std::string &               name,
+                   const types::boundary_id          face_group,
+                   const unsigned int                index_I,
+                   const blocks::ElasticBlock<dim> & block_I,
+                   const unsigned int                index_J,
+                   const blocks::ElasticBlock<dim> & block_J,
+                   const double                      search_distance)
+    {
+      Interface<dim> interface;
+      interface.name       = name;
+      interface.face_group = face_group;
+      interface.block_I    = index_I;
+      interface.block_J    = index_J;
+
+      const auto nodes_I = block_I.interface_nodes(face_group);
+      const auto nodes_J = block_J.interface_nodes(face_group);
+      std::vector<bool> used_J(nodes_J.size(), false);
+      for (const auto &a : nodes_I)
+        {
+          // The partner: the node of J along J's normal with the smallest
+          // gap, within the search distance. Matching tolerances scale with
+          // the local node spacing.
+          int    best     = -1;
+          double best_gap = 0;
+          for (unsigned int j = 0; j < nodes_J.size(); ++j)
+            {
+              if (used_J[j])
+                continue;
+              const auto &         b = nodes_J[j];
+              const Tensor<1, dim> n = b.area_normal / b.area_normal.norm();
+              const Tensor<1, dim> d = a.position - b.position;
+              const double         gap = d * n;
+              const double tolerance   = 1e-6 * node_spacing<dim>(b.area);
+              if ((d - gap * n).norm() > tolerance || gap < -tolerance ||
+                  gap > search_distance + tolerance)
+                continue;
+              if (best < 0 || gap < best_gap)
+                {
+                  best     = j;
+                  best_gap = gap;
+                }
+            }
+          if (best < 0)
+            {
+              ++interface.n_unpaired_I;
+              continue;
+            }
+          used_J[best]      = true;
+          const auto &b     = nodes_J[best];
+          NodePair<dim> pair;
+          pair.position_I   = a.position;
+          pair.position_J   = b.position;
+          pair.dofs_I       = a.dofs;
+          pair.dofs_J       = b.dofs;
+          pair.frame        = local_frame<dim>(b.area_normal / b.area_normal.norm());
+          pair.area         = b.area;
+          pair.initial_gap  = std::max(0.0, best_gap);
+          interface.pairs.push_back(pair);
+        }
+      for (const bool used : used_J)
+        interface.n_unpaired_J += used ? 0 : 1;
+
+      AssertThrow(!interface.pairs.empty(),
+                  ExcMessage("Interfaces/" + name +
+                             ": no node pairs found between blocks '" +
+                             block_I.name + "' and '" + block_J.name +
+                             "'; the sides must have coincident nodes, or "
+                             "nodes facing each other within 'Search "
+                             "distance'."));
+      return interface;
+    }
+
+    template Interface<2>
+    make_interface(const std::string &, const types::boundary_id, const unsigned int,
+                   const blocks::ElasticBlock<2> &, const unsigned int,
+                   const blocks::ElasticBlock<2> &, const double);
+    template Interface<3>
+    make_interface(const std::string &, const types::boundary_id, const unsigned int,
+                   const blocks::ElasticBlock<3> &, const unsigned int,
+                   const blocks::ElasticBlock<3> &, const double);
+  } // namespace contact
+} // namespace fdem

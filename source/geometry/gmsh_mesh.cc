@@ -1,0 +1,427 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+
+#include <fdem/geometry/gmsh_mesh.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <gmsh.h>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <unordered_map>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    bool GmshSession::active = false;
+
+    GmshSession::GmshSession()
+    {
+      AssertThrow(!active,
+                  ExcMessage("Only one GmshSession may exist at a time: Gmsh "
+                             "is a global singleton."));
+      gmsh::initialize(0, nullptr, false);
+      active = true;
+      gmsh::option::setNumber("General.Terminal", 0);
+      // 2 = throw the error message as a std::string; run() converts it.
+      gmsh::option::setNumber("General.AbortOnError", 2);
+    }
+
+
+
+    GmshSession::~GmshSession()
+    {
+      try
+        {
+          gmsh::finalize();
+        }
+      catch (...)
+        {
+          // A destructor must not throw; Gmsh has nothing left to report.
+        }
+      active = false;
+    }
+
+
+
+    void
+    GmshSession::throw_error(const std::string &context,
+                             const std::string &gmsh_error)
+    {
+      AssertThrow(false, ExcMessage(context + ": " + gmsh_error + "."));
+      std::abort(); // not reached
+    }
+
+
+
+    namespace
+    {
+      /**
+       * Index in Gmsh's corner order of deal.II's (lexicographic) corner i
+       * of a line, quadrilateral or hexahedron; the map is its own inverse.
+       */
+      unsigned int
+      gmsh_corner(const int structdim, const unsigned int i)
+      {
+        static constexpr std::array<unsigned int, 8> quad_or_hex = {
+          {0, 1, 3, 2, 4, 5, 7, 6}};
+        return (structdim == 1) ? i : quad_or_hex[i];
+      }
+
+      /** Corners of a line/quad/hex element type, 0 for other types. */
+      unsigned int
+      n_corners_if_tensor_product(const int element_type, const int structdim)
+      {
+        std::string         name;
+        int                 element_dim, order, n_nodes, n_primary_nodes;
+        std::vector<double> local_coordinates;
+        gmsh::model::mesh::getElementProperties(element_type,
+                                                name,
+                                                element_dim,
+                                                order,
+                                                n_nodes,
+                                                local_coordinates,
+                                                n_primary_nodes);
+        return (element_dim == structdim && n_primary_nodes == (1 << structdim)) ?
+                 n_primary_nodes :
+                 0;
+      }
+
+      /**
+       * Elements of a physical group as corner node tags in deal.II order,
+       * with their element tags. Higher-order elements give their corners,
+       * which Gmsh lists first.
+       */
+      template <int structdim>
+      void
+      get_group_elements(
+        const int                                                 group_tag,
+        const std::string                                        &error_prefix,
+        std::vector<std::size_t>                                 &element_tags,
+        std::vector<std::array<std::size_t, (1 << structdim)>> &corner_tags)
+      {
+        std::vector<int> entities;
+        gmsh::model::getEntitiesForPhysicalGroup(structdim, group_tag, entities);
+        for (const int entity : entities)
+          {
+            std::vector<int>                      types;
+            std::vector<std::vector<std::size_t>> tags, nodes;
+            gmsh::model::mesh::getElements(types, tags, nodes, structdim, entity);
+            for (unsigned int t = 0; t < types.size(); ++t)
+              {
+                AssertThrow(n_corners_if_tensor_product(types[t], structdim) > 0,
+                            ExcMessage(error_prefix));
+                const std::size_t n_nodes = nodes[t].size() / tags[t].size();
+                for (unsigned int e = 0; e < tags[t].size(); ++e)
+                  {
+                    element_tags.push_back(tags[t][e]);
+                    std::array<std::size_t, (1 << structdim)> corners;
+                    for (unsigned int i = 0; i < corners.size(); ++i)
+                      corners[i] = nodes[t][e * n_nodes + gmsh_corner(structdim, i)];
+                    corner_tags.push_back(corners);
+                  }
+              }
+          }
+      }
+
+      std::string
+      group_name(const int structdim, const int tag, const std::string &unnamed)
+      {
+        std::string name;
+        gmsh::model::getPhysicalName(structdim, tag, name);
+        return name.empty() ? unnamed + " " + std::to_string(tag) : name;
+      }
+
+      /**
+       * Smallest and largest sine of the corner angles of a cell, signed:
+       * all positive for a valid cell in deal.II's orientation, all negative
+       * for a valid cell of the opposite orientation, mixed for a twisted or
+       * non-convex cell, and zero for a degenerate one. In 3D it is the
+       * triple product of the unit edges at each corner.
+       */
+      template <int dim>
+      std::pair<double, double>
+      corner_sine_range(const std::vector<Point<dim>> &vertices,
+                        const CellData<dim>           &cell)
+      {
+        std::pair<double, double> range(1, -1);
+        for (unsigned int v = 0; v < cell.vertices.size(); ++v)
+          {
+            Tensor<2, dim> edges; // rows: unit edges along x, y (, z)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const unsigned int neighbor = v ^ (1u << d);
+                Tensor<1, dim>     edge     = vertices[cell.vertices[neighbor]] -
+                                      vertices[cell.vertices[v]];
+                if ((v >> d) & 1u)
+                  edge *= -1;
+                edges[d] = (edge.norm() > 0) ? edge / edge.norm() : edge;
+              }
+            const double sine = determinant(edges);
+            range.first       = std::min(range.first, sine);
+            range.second      = std::max(range.second, sine);
+          }
+        return range;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    MeshDescription<dim>
+    extract_current_gmsh_model(const std::string &source)
+    {
+      static_assert(dim == 2 || dim == 3, "Only 2D and 3D meshes.");
+      constexpr unsigned int n_cell_corners = 1 << dim;
+      const std::string      cell_kind = (dim == 2) ? "quadrilaterals" : "hexahedra";
+
+      MeshDescription<dim> mesh;
+      mesh.source = source;
+
+      const int model_dim = gmsh::model::getDimension();
+      AssertThrow(model_dim == dim,
+                  ExcMessage(source + ": the model is " +
+                             std::to_string(model_dim) + "-dimensional, but a " +
+                             std::to_string(dim) +
+                             "-dimensional mesh was asked for."));
+
+      gmsh::vectorpair block_groups;
+      gmsh::model::getPhysicalGroups(block_groups, dim);
+      AssertThrow(!block_groups.empty(),
+                  ExcMessage(source + ": there is no physical group of "
+                                      "dimension " +
+                             std::to_string(dim) +
+                             " (the blocks), e.g. Physical " +
+                             (dim == 2 ? "Surface" : "Volume") +
+                             "(\"rock\") = {...}."));
+
+      // Cells by block; an element may be listed in one block only.
+      std::map<std::size_t, unsigned int>                 block_of_element;
+      std::vector<std::array<std::size_t, n_cell_corners>> cell_corner_tags;
+      std::vector<unsigned int>                           cell_blocks;
+      for (const auto &group : block_groups)
+        {
+          const unsigned int block = mesh.block_names.size();
+          mesh.block_names.push_back(group_name(dim, group.second, "block"));
+          std::vector<std::size_t> element_tags;
+          get_group_elements<dim>(
+            group.second,
+            source + ": block '" + mesh.block_names.back() +
+              "' has elements that are not " + cell_kind +
+              "; mesh with Recombine (and Mesh.SubdivisionAlgorithm = " +
+              (dim == 2 ? "1" : "2") + " for an all-" + cell_kind + " mesh)",
+            element_tags,
+            cell_corner_tags);
+          for (const std::size_t tag : element_tags)
+            {
+              const auto inserted = block_of_element.emplace(tag, block);
+              AssertThrow(inserted.second,
+                          ExcMessage(source + ": element " + std::to_string(tag) +
+                                     " belongs to two blocks, '" +
+                                     mesh.block_names[inserted.first->second] +
+                                     "' and '" + mesh.block_names[block] + "'."));
+              cell_blocks.push_back(block);
+            }
+        }
+
+      // Keep only the vertices of cells, numbered in the order of their tags.
+      std::map<std::size_t, unsigned int> vertex_of_node;
+      for (const auto &corners : cell_corner_tags)
+        for (const std::size_t tag : corners)
+          vertex_of_node.emplace(tag, 0);
+      {
+        std::vector<std::size_t> node_tags;
+        std::vector<double>      coordinates, parametric_coordinates;
+        gmsh::model::mesh::getNodes(
+          node_tags, coordinates, parametric_coordinates, -1, -1, false, false);
+        std::unordered_map<std::size_t, std::size_t> position_of_node;
+        for (std::size_t i = 0; i < node_tags.size(); ++i)
+          position_of_node[node_tags[i]] = i;
+        for (auto &[tag, vertex] : vertex_of_node)
+          {
+            vertex = mesh.vertices.size();
+            const std::size_t i = position_of_node.at(tag);
+            Point<dim>        p;
+            for (unsigned int d = 0; d < dim; ++d)
+              p[d] = coordinates[3 * i + d];
+            mesh.vertices.push_back(p);
+          }
+      }
+
+      for (unsigned int c = 0; c < cell_corner_tags.size(); ++c)
+        {
+          CellData<dim> cell(n_cell_corners);
+          for (unsigned int i = 0; i < n_cell_corners; ++i)
+            cell.vertices[i] = vertex_of_node.at(cell_corner_tags[c][i]);
+          cell.material_id = cell_blocks[c];
+
+          // Gmsh's cells may have either orientation (it follows each
+          // surface's normal); a cell that is neither is unusable.
+          const auto   sines     = corner_sine_range(mesh.vertices, cell);
+          const double tolerance = 1e-10;
+          AssertThrow((sines.first > -tolerance && sines.second > tolerance) ||
+                        (sines.second < tolerance && sines.first < -tolerance),
+                      ExcMessage(source + ": a cell of block '" +
+                                 mesh.block_names[cell_blocks[c]] +
+                                 "' is degenerate or twisted (zero measure "
+                                 "or non-convex), near " +
+                                 Utilities::to_string(
+                                   mesh.vertices[cell.vertices[0]][0]) +
+                                 ", " +
+                                 Utilities::to_string(
+                                   mesh.vertices[cell.vertices[0]][1]) +
+                                 "."));
+          mesh.cells.push_back(cell);
+        }
+
+      // Face groups: faces are stored by vertex indices, so that the
+      // reordering of the cells below leaves them valid.
+      gmsh::vectorpair face_groups;
+      gmsh::model::getPhysicalGroups(face_groups, dim - 1);
+      for (const auto &group : face_groups)
+        {
+          const unsigned int face_group = mesh.face_group_names.size();
+          const std::string  name = group_name(dim - 1, group.second, "face group");
+          mesh.face_group_names.push_back(name);
+          std::vector<std::size_t>                                   element_tags;
+          std::vector<std::array<std::size_t, n_cell_corners / 2>> corner_tags;
+          get_group_elements<dim - 1>(group.second,
+                                      source + ": face group '" + name +
+                                        "' has elements that are not " +
+                                        (dim == 2 ? "lines" : "quadrilaterals"),
+                                      element_tags,
+                                      corner_tags);
+          for (const auto &corners : corner_tags)
+            {
+              CellData<dim - 1> face(corners.size());
+              for (unsigned int i = 0; i < corners.size(); ++i)
+                {
+                  const auto vertex = vertex_of_node.find(corners[i]);
+                  AssertThrow(vertex != vertex_of_node.end(),
+                              ExcMessage(source + ": face group '" + name +
+                                         "' has faces that are not on any cell."));
+                  face.vertices[i] = vertex->second;
+                }
+              face.boundary_id = face_group;
+              mesh.faces.push_back(face);
+            }
+        }
+
+      GridTools::invert_cells_with_negative_measure(mesh.vertices, mesh.cells);
+      GridTools::consistently_order_cells(mesh.cells);
+      return mesh;
+    }
+
+
+
+    template <int dim>
+    MeshDescription<dim>
+    read_gmsh_file(const std::string &file_name)
+    {
+      AssertThrow(std::ifstream(file_name).good() &&
+                    !std::filesystem::is_directory(file_name),
+                  ExcMessage("Gmsh file '" + file_name +
+                             "': is missing or cannot be read."));
+      GmshSession session;
+      GmshSession::run("Gmsh could not read '" + file_name + "'",
+                       [&]() { gmsh::open(file_name); });
+      // Anything but a mesh file (.geo, or a CAD file) is only geometry.
+      if (std::filesystem::path(file_name).extension() != ".msh" &&
+          gmsh::model::getDimension() == dim)
+        GmshSession::run("Gmsh could not mesh '" + file_name + "'",
+                         [&]() { gmsh::model::mesh::generate(dim); });
+      return extract_current_gmsh_model<dim>("Gmsh file '" + file_name + "'");
+    }
+
+
+
+    template <int dim>
+    void
+    write_gmsh_file(const MeshDescription<dim> &mesh, const std::string &file_name)
+    {
+      GmshSession session;
+      gmsh::model::add("fdem");
+
+      // Gmsh keeps elements by entity and physical groups are sets of
+      // entities: one discrete entity per block and per face group. All
+      // nodes go to the first block's entity; elements refer to node tags
+      // of any entity.
+      std::vector<int> block_entities, face_entities;
+      for (unsigned int b = 0; b < mesh.block_names.size(); ++b)
+        block_entities.push_back(gmsh::model::addDiscreteEntity(dim));
+      for (unsigned int g = 0; g < mesh.face_group_names.size(); ++g)
+        face_entities.push_back(gmsh::model::addDiscreteEntity(dim - 1));
+
+      std::vector<std::size_t> node_tags(mesh.vertices.size());
+      std::vector<double>      coordinates(3 * mesh.vertices.size(), 0.);
+      for (unsigned int v = 0; v < mesh.vertices.size(); ++v)
+        {
+          node_tags[v] = v + 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            coordinates[3 * v + d] = mesh.vertices[v][d];
+        }
+      if (!block_entities.empty())
+        gmsh::model::mesh::addNodes(dim, block_entities[0], node_tags, coordinates);
+
+      std::size_t element_tag = 0;
+      const auto  add_elements = [&](const auto &objects,
+                                    const std::vector<int> &entities,
+                                    const int               structdim,
+                                    const int               gmsh_type,
+                                    const auto             &entity_index) {
+        std::vector<std::vector<std::size_t>> tags(entities.size()),
+          nodes(entities.size());
+        for (const auto &object : objects)
+          {
+            const unsigned int e = entity_index(object);
+            tags[e].push_back(++element_tag);
+            for (unsigned int i = 0; i < object.vertices.size(); ++i)
+              nodes[e].push_back(object.vertices[gmsh_corner(structdim, i)] + 1);
+          }
+        for (unsigned int e = 0; e < entities.size(); ++e)
+          if (!tags[e].empty())
+            gmsh::model::mesh::addElementsByType(entities[e], gmsh_type, tags[e], nodes[e]);
+      };
+      // Gmsh element types: 1 line, 3 quadrilateral, 5 hexahedron.
+      add_elements(mesh.cells, block_entities, dim, (dim == 2) ? 3 : 5,
+                   [](const CellData<dim> &cell) { return cell.material_id; });
+      add_elements(mesh.faces, face_entities, dim - 1, (dim == 2) ? 1 : 3,
+                   [](const CellData<dim - 1> &face) { return face.boundary_id; });
+      gmsh::model::mesh::reclassifyNodes();
+
+      for (unsigned int b = 0; b < block_entities.size(); ++b)
+        gmsh::model::setPhysicalName(
+          dim, gmsh::model::addPhysicalGroup(dim, {block_entities[b]}, b + 1),
+          mesh.block_names[b]);
+      for (unsigned int g = 0; g < face_entities.size(); ++g)
+        gmsh::model::setPhysicalName(
+          dim - 1, gmsh::model::addPhysicalGroup(dim - 1, {face_entities[g]}, g + 1),
+          mesh.face_group_names[g]);
+
+      gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+      gmsh::option::setNumber("Mesh.Binary", 0);
+      GmshSession::run("Gmsh could not write '" + file_name + "'",
+                       [&]() { gmsh::write(file_name); });
+    }
+
+
+
+    template MeshDescription<2>
+    extract_current_gmsh_model<2>(const std::string &);
+    template MeshDescription<3>
+    extract_current_gmsh_model<3>(const std::string &);
+    template MeshDescription<2>
+    read_gmsh_file<2>(const std::string &);
+    template MeshDescription<3>
+    read_gmsh_file<3>(const std::string &);
+    template void
+    write_gmsh_file<2>(const MeshDescription<2> &, const std::string &);
+    template void
+    write_gmsh_file<3>(const MeshDescription<3> &, const std::string &);
+  } // namespace geometry
+} // namespace fdem

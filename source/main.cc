@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/model.h>
+#include <fdem/parameters/parameters.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <iostream>
+#include <regex>
+#include <string>
+
+namespace
+{
+  const char *usage =
+    "Usage: fdem-slope [--help] [--print-parameters] [--validate] case.prm\n"
+    "  Computes contact forces and the safety factor of a slope with a known\n"
+    "  sliding surface by the mixed FEM-DEM method (Liu et al. 2012).\n"
+    "  --print-parameters  print every parameter (for case.prm, or the\n"
+    "                      default case) with its default and help text\n"
+    "  --validate          read and check case.prm, then stop\n"
+    "  --help              this text\n";
+
+  /**
+   * The reason of an error on one line: deal.II's exception text has the
+   * file, line and condition of the check around the message; a user needs
+   * only the message.
+   */
+  std::string
+  one_line(const std::exception &error)
+  {
+    std::string text = error.what();
+    const std::string marker = "Additional information:";
+    const auto        start  = text.find(marker);
+    if (start != std::string::npos)
+      text = text.substr(start + marker.size());
+    const auto end = text.find("Stacktrace:");
+    if (end != std::string::npos)
+      text = text.substr(0, end);
+    text = std::regex_replace(text, std::regex("-{10,}"), " ");
+    text = std::regex_replace(text, std::regex("\\s+"), " ");
+    return std::regex_replace(text, std::regex("^ | $"), "");
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  try
+    {
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      dealii::deallog.depth_console(0);
+      bool        print = false, validate = false;
+      std::string prm_file;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string argument = argv[i];
+          if (argument == "--help" || argument == "-h")
+            {
+              std::cout << usage;
+              return 0;
+            }
+          if (argument == "--print-parameters")
+            print = true;
+          else if (argument == "--validate")
+            validate = true;
+          else if (!argument.empty() && argument[0] == '-')
+            {
+              std::cerr << "fdem-slope: error: unknown option '" << argument << "'.\n"
+                        << usage;
+              return 2;
+            }
+          else if (prm_file.empty())
+            prm_file = argument;
+          else
+            {
+              std::cerr << "fdem-slope: error: give one parameter file.\n" << usage;
+              return 2;
+            }
+        }
+      if (print)
+        {
+          fdem::parameters::print_parameters(std::cout, prm_file);
+          return 0;
+        }
+      if (prm_file.empty())
+        {
+          std::cerr << "fdem-slope: error: no parameter file given.\n" << usage;
+          return 2;
+        }
+      if (validate)
+        {
+          fdem::parameters::read_parameters(prm_file);
+          std::cout << prm_file << ": valid." << std::endl;
+          return 0;
+        }
+      fdem::run_case(prm_file, std::cout);
+    }
+  catch (const std::exception &error)
+    {
+      std::cerr << "fdem-slope: error: " << one_line(error) << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "fdem-slope: error: unknown exception." << std::endl;
+      return 1;
+    }
+  return 0;
+}

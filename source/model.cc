@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/geometry/make_mesh.h>
+#include <fdem/model.h>
+#include <fdem/postprocess/block_output.h>
+#include <fdem/postprocess/interface_output.h>
+#include <fdem/postprocess/output_files.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace fdem
+{
+  template <int dim>
+  Model<dim>::Model(const parameters::Parameters &parameters,
+                    const std::string &           expanded_parameters,
+                    std::ostream &                log)
+    : parameters(parameters)
+    , expanded_parameters(expanded_parameters)
+    , log(log)
+    , timer(log, TimerOutput::never, TimerOutput::wall_times)
+  {}
+
+  template <int dim>
+  void
+  Model<dim>::run()
+  {
+    const std::string directory = parameters.output_directory();
+    std::filesystem::create_directories(directory);
+    // A summary.json left from an earlier run must not pass for this one.
+    std::filesystem::remove(directory + "/summary.json");
+    {
+      std::ofstream out(directory + "/parameters.prm");
+      out << expanded_parameters;
+    }
+
+    make_geometry();
+    setup_blocks();
+    assemble_and_factorize();
+    build_interfaces();
+    compute_flexibility();
+    solve_contact();
+    recover_block_displacements();
+    output_results();
+  }
+
+  template <int dim>
+  types::boundary_id
+  Model<dim>::face_group(const std::string &name, const std::string &what) const
+  {
+    const auto it = std::find(mesh.face_group_names.begin(),
+                              mesh.face_group_names.end(),
+                              name);
+    AssertThrow(it != mesh.face_group_names.end(),
+                ExcMessage(what + ": '" + name + "' is not a face group " +
+                           "(physical group of dimension " +
+                           std::to_string(dim - 1) + ") in " + mesh.source + "."));
+    return it - mesh.face_group_names.begin();
+  }
+
+  template <int dim>
+  void
+  Model<dim>::make_geometry()
+  {
+    TimerOutput::Scope scope(timer, "geometry");
+    const std::string  msh = parameters.output_directory() + "/mesh.msh";
+    mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh);
+
+    // Every block of the mesh needs a material, and every name a block.
+    for (const std::string &name : mesh.block_names)
+      AssertThrow(parameters.materials.count(name) == 1,
+                  ExcMessage("Blocks/Names: the block '" + name + "' of " +
+                             mesh.source +
+                             " has no material; list it and give it a "
+                             "subsection with its Young's modulus."));
+    for (const std::string &name : parameters.block_names)
+      AssertThrow(std::count(mesh.block_names.begin(), mesh.block_names.end(), name) == 1,
+                  ExcMessage("Blocks/Names: '" + name + "' is not a block " +
+                             "(physical group of dimension " + std::to_string(dim) +
+                             ") in " + mesh.source + "."));
+    for (const std::string &name : parameters.boundary_names)
+      face_group(name, "Boundaries/Names");
+    for (const std::string &name : parameters.interface_names)
+      face_group(name, "Interfaces/Names");
+    log << "Geometry: " << mesh.source << ", " << mesh.cells.size() << " cells, "
+        << mesh.block_names.size() << " blocks" << std::endl;
+  }
+
+  template <int dim>
+  void
+  Model<dim>::setup_blocks()
+  {
+    TimerOutput::Scope scope(timer, "setup");
+    std::map<types::boundary_id, parameters::BoundaryParameters> conditions;
+    for (const std::string &name : parameters.boundary_names)
+      conditions[face_group(name, "Boundaries/Names")] = parameters.boundaries.at(name);
+    std::vector<types::boundary_id> interface_ids;
+    for (const std::string &name : parameters.interface_names)
+      interface_ids.push_back(face_group(name, "Interfaces/Names"));
+
+    blocks.clear();
+    for (unsigned int b = 0; b < mesh.block_names.size(); ++b)
+      {
+        const std::string &name = mesh.block_names[b];
+        blocks.push_back(std::make_unique<blocks::ElasticBlock<dim>>(
+          name, mesh, std::vector<unsigned int>{b},
+          std::map<unsigned int, parameters::MaterialParameters>{
+            {b, parameters.materials.at(name)}},
+          parameters.fe_degree));
+        blocks.back()->setup_constraints(conditions, interface_ids);
+        blocks.back()->find_free_rigid_modes();
+        log << "  block '" << name << "': " << blocks.back()->dof_handler.n_dofs()
+            << " dofs, " << blocks.back()->n_free_rigid_modes()
+            << " free rigid modes" << std::endl;
+      }
+  }
+
+  template <int dim>
+  void
+  Model<dim>::assemble_and_factorize()
+  {
+    TimerOutput::Scope scope(timer, "assembly and factorisation");
+    external_displacements.clear();
+    for (const auto &block : blocks)
+      {
+        block->assemble_and_factorize(parameters.loads, parameters.solver.direct_solver);
+        external_displacements.push_back(block->solve(block->load_vector));
+      }
+  }
+
+  template <int dim>
+  void
+  Model<dim>::build_interfaces()
+  {
+    TimerOutput::Scope scope(timer, "interfaces");
+    interfaces.clear();
+    for (const std::string &name : parameters.interface_names)
+      {
+        const types::boundary_id group = face_group(name, "Interfaces/Names");
+        std::vector<unsigned int> sides;
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          for (const auto &face : blocks[b]->triangulation.active_face_iterators())
+            if (face->at_boundary() && face->boundary_id() == group)
+              {
+                sides.push_back(b);
+                break;
+              }
+        AssertThrow(sides.size() == 2,
+                    ExcMessage("Interfaces/" + name + ": the face group lies on " +
+                               std::to_string(sides.size()) +
+                               " blocks; an interface separates exactly two."));
+        // Block I is the one that moves: the one with more free rigid modes.
+        if (blocks[sides[1]]->n_free_rigid_modes() > blocks[sides[0]]->n_free_rigid_modes())
+          std::swap(sides[0], sides[1]);
+        interfaces.push_back(contact::make_interface(name, group,
+                                                     sides[0], *blocks[sides[0]],
+                                                     sides[1], *blocks[sides[1]],
+                                                     parameters.interfaces.at(name).search_distance));
+        log << "  interface '" << name << "': " << interfaces.back().pairs.size()
+            << " node pairs between '" << blocks[sides[0]]->name << "' and '"
+            << blocks[sides[1]]->name << "'" << std::endl;
+      }
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      if (blocks[b]->n_free_rigid_modes() > 0)
+        AssertThrow(std::any_of(interfaces.begin(), interfaces.end(),
+                                [b](const auto &i) { return i.block_I == b || i.block_J == b; }),
+                    ExcMessage("Block '" + blocks[b]->name +
+                               "' is not held: its constraints leave rigid "
+                               "motions free and no interface touches it."));
+  }
+
+  template <int dim>
+  void
+  Model<dim>::compute_flexibility()
+  {
+    TimerOutput::Scope scope(timer, "flexibility");
+    mixed_system = std::make_unique<contact::MixedSystem<dim>>(blocks,
+                                                               external_displacements,
+                                                               interfaces);
+  }
+
+  template <int dim>
+  void
+  Model<dim>::solve_contact()
+  {
+    TimerOutput::Scope scope(timer, "contact");
+    statuses.assign(mixed_system->n_pairs(), contact::PairStatus::stick);
+    contact_solution = mixed_system->solve(statuses);
+    for (const double f : contact_solution.forces)
+      AssertThrow(std::isfinite(f),
+                  ExcMessage("The mixed system has no solution: the blocks "
+                             "are not in static equilibrium."));
+  }
+
+  template <int dim>
+  void
+  Model<dim>::recover_block_displacements()
+  {
+    TimerOutput::Scope scope(timer, "recovery");
+    displacements.clear();
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        Vector<double> u =
+          blocks[b]->solve(mixed_system->block_nodal_forces(b, contact_solution));
+        Vector<double> gamma(blocks[b]->n_free_rigid_modes());
+        for (unsigned int m = 0; m < gamma.size(); ++m)
+          gamma[m] = contact_solution.rigid_motions[mixed_system->first_rigid_unknown[b] + m];
+        blocks[b]->add_rigid_motion(gamma, u);
+        displacements.push_back(u);
+      }
+  }
+
+  template <int dim>
+  void
+  Model<dim>::output_results()
+  {
+    TimerOutput::Scope scope(timer, "output");
+    const std::string directory = parameters.output_directory();
+
+    std::vector<std::vector<postprocess::PairResult<dim>>> results;
+    unsigned int first_pair = 0;
+    for (const auto &interface : interfaces)
+      {
+        results.push_back(postprocess::pair_results(interface, first_pair,
+                                                    contact_solution, statuses));
+        first_pair += interface.pairs.size();
+      }
+    postprocess::write_interface_csv(directory + "/interfaces.csv", interfaces, results);
+
+    if (parameters.output.write_vtu)
+      {
+        std::vector<postprocess::PvdEntry> entries;
+        for (unsigned int b = 0; b < blocks.size(); ++b)
+          entries.push_back({0, static_cast<unsigned int>(entries.size()),
+                             postprocess::write_block_vtu(*blocks[b], b, displacements[b],
+                                                          directory, "")});
+        for (unsigned int i = 0; i < interfaces.size(); ++i)
+          entries.push_back({0, static_cast<unsigned int>(entries.size()),
+                             postprocess::write_interface_vtu(*blocks[interfaces[i].block_J],
+                                                              interfaces[i], results[i],
+                                                              directory, "")});
+        postprocess::write_pvd(directory + "/solution.pvd", entries);
+      }
+
+    summary                = nlohmann::json::object();
+    summary["case"]        = parameters.case_name;
+    summary["dimension"]   = dim;
+    summary["fe_degree"]   = parameters.fe_degree;
+    unsigned int n_dofs    = 0;
+    summary["blocks"]      = nlohmann::json::array();
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        const auto &block = *blocks[b];
+        n_dofs += block.dof_handler.n_dofs();
+        // Reactions at the minimal support: zero at equilibrium.
+        const Vector<double> residual = block.nodal_residual(displacements[b]);
+        double reaction = 0;
+        for (const auto dof : block.support_dofs)
+          reaction = std::max(reaction, std::abs(residual[dof]));
+        summary["blocks"].push_back({{"name", block.name},
+                                     {"n_cells", block.triangulation.n_active_cells()},
+                                     {"n_dofs", block.dof_handler.n_dofs()},
+                                     {"free_rigid_modes", block.n_free_rigid_modes()},
+                                     {"max_support_reaction", reaction},
+                                     {"max_load", block.load_vector.linfty_norm()}});
+      }
+    summary["n_dofs"]     = n_dofs;
+    summary["interfaces"] = nlohmann::json::array();
+    for (unsigned int i = 0; i < interfaces.size(); ++i)
+      {
+        unsigned int n_status[3] = {0, 0, 0};
+        double max_pressure = 0, extent = 0, normal_force = 0, tangential_force = 0;
+        for (const auto &r : results[i])
+          {
+            ++n_status[static_cast<int>(r.status)];
+            max_pressure = std::max(max_pressure, r.normal_pressure);
+            if (r.status != contact::PairStatus::open)
+              extent += r.area;
+            normal_force += r.normal_force;
+            tangential_force += r.tangential_force[0];
+          }
+        summary["interfaces"].push_back(
+          {{"name", interfaces[i].name},
+           {"block_I", blocks[interfaces[i].block_I]->name},
+           {"block_J", blocks[interfaces[i].block_J]->name},
+           {"n_pairs", interfaces[i].pairs.size()},
+           {"n_unpaired_nodes", interfaces[i].n_unpaired_I + interfaces[i].n_unpaired_J},
+           {"n_stick", n_status[0]},
+           {"n_slip", n_status[1]},
+           {"n_open", n_status[2]},
+           {"max_normal_pressure", max_pressure},
+           {"contact_extent", extent},
+           {"total_normal_force", normal_force},
+           {"total_tangential_force", tangential_force}});
+      }
+    summary["rigid_motions"] = std::vector<double>(contact_solution.rigid_motions.begin(),
+                                                   contact_solution.rigid_motions.end());
+    nlohmann::json timings = nlohmann::json::object();
+    for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
+      timings[section] = seconds;
+    summary["timings"] = timings;
+    summary["status"]  = "completed";
+    postprocess::write_json(directory + "/summary.json", summary);
+    log << "Results in " << directory << "/" << std::endl;
+  }
+
+  nlohmann::json
+  run_case(const std::string &prm_file, std::ostream &log)
+  {
+    std::string                        expanded;
+    const parameters::Parameters       parameters = parameters::read_parameters(prm_file, &expanded);
+    if (parameters.dimension == 2)
+      {
+        Model<2> model(parameters, expanded, log);
+        model.run();
+        return model.summary;
+      }
+    Model<3> model(parameters, expanded, log);
+    model.run();
+    return model.summary;
+  }
+
+  template class Model<2>;
+  template class Model<3>;
+} // namespace fdem

@@ -1,0 +1,408 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+
+#include <fdem/parameters/geometry_parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace fdem
+{
+  namespace parameters
+  {
+    namespace
+    {
+      /** Pattern of a list of points "x,y; x,y; ...". */
+      Patterns::List
+      point_list_pattern(const unsigned int min_n_points)
+      {
+        return Patterns::List(Patterns::List(Patterns::Double(), 2, 2, ","),
+                              min_n_points,
+                              Patterns::List::max_int_value,
+                              ";");
+      }
+
+      Point<2>
+      parse_point(const std::string &text)
+      {
+        const std::vector<double> xy = Utilities::string_to_double(
+          Utilities::split_string_list(text, ','));
+        return Point<2>(xy[0], xy[1]);
+      }
+
+      std::vector<Point<2>>
+      parse_points(const std::string &text)
+      {
+        std::vector<Point<2>> points;
+        for (const std::string &point : Utilities::split_string_list(text, ';'))
+          points.push_back(parse_point(point));
+        return points;
+      }
+
+      /** One-sentence errors that start with the parameter's path. */
+      void
+      require(const bool condition, const std::string &message)
+      {
+        AssertThrow(condition, ExcMessage(message));
+      }
+
+      bool
+      x_increases(const std::vector<Point<2>> &points, const bool strictly)
+      {
+        for (unsigned int i = 1; i < points.size(); ++i)
+          if (points[i][0] < points[i - 1][0] ||
+              (strictly && points[i][0] == points[i - 1][0]))
+            return false;
+        return true;
+      }
+
+      /** Elevation of the ground polyline at @p x (inside its x range). */
+      double
+      ground_elevation(const std::vector<Point<2>> &ground, const double x)
+      {
+        for (unsigned int i = 1; i < ground.size(); ++i)
+          if (x <= ground[i][0])
+            {
+              const double t =
+                (x - ground[i - 1][0]) / (ground[i][0] - ground[i - 1][0]);
+              return (1 - t) * ground[i - 1][1] + t * ground[i][1];
+            }
+        return ground.back()[1];
+      }
+
+      /** Whether @p p lies on or above the ground, or outside its x range. */
+      bool
+      on_or_above_ground(const std::vector<Point<2>> &ground, const Point<2> &p)
+      {
+        if (p[0] <= ground.front()[0] || p[0] >= ground.back()[0])
+          return true;
+        const double length = ground.back()[0] - ground.front()[0];
+        return p[1] >= ground_elevation(ground, p[0]) - 1e-10 * length;
+      }
+    } // namespace
+
+
+
+    void
+    GeometryParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      {
+        prm.declare_entry(
+          "Source",
+          "slope",
+          Patterns::Selection("mesh file|slope|hertz|inclined block"),
+          "Where the mesh comes from: a Gmsh file (see Mesh file) or one of "
+          "the built-in 2D generators, whose data are in the subsection of "
+          "the same name.");
+        prm.declare_entry(
+          "Mesh file",
+          "",
+          Patterns::FileName(),
+          "Gmsh file for Source = mesh file: a mesh (.msh, ASCII or binary, "
+          "format 2 or 4) or a geometry (.geo, meshed by Gmsh in the model's "
+          "dimension). Physical groups of the model's dimension are the "
+          "blocks, those one dimension lower the face groups. A relative path "
+          "is relative to the directory of the .prm file.");
+        prm.declare_entry(
+          "Scale factor",
+          "1",
+          Patterns::Double(0),
+          "Factor s of the transformation x -> R (s x) + t applied to every "
+          "mesh after it is made (dimensionless, positive).");
+        prm.declare_entry(
+          "Rotation angle",
+          "0",
+          Patterns::Double(-360, 360),
+          "Angle of the rotation R of that transformation (degrees, "
+          "counter-clockwise about the z axis in 2D, right-handed about "
+          "Rotation axis in 3D).");
+        prm.declare_entry("Rotation axis",
+                          "0,0,1",
+                          Patterns::List(Patterns::Double(), 3, 3, ","),
+                          "Axis of the rotation in 3D (any non-zero length, "
+                          "dimensionless; ignored in 2D).");
+        prm.declare_entry(
+          "Translation",
+          "0,0",
+          Patterns::List(Patterns::Double(), 2, 3, ","),
+          "Translation t of that transformation (model length unit), 2 or 3 "
+          "components; in 2D a third component must be 0.");
+
+        prm.enter_subsection("Slope");
+        {
+          prm.declare_entry("Ground surface",
+                            "0,25; 10,25; 30,35; 50,35",
+                            point_list_pattern(2),
+                            "Ground surface as points 'x,y; x,y; ...' from "
+                            "left to right (m). The model is this polyline "
+                            "closed down to Base elevation.");
+          prm.declare_entry("Base elevation",
+                            "20",
+                            Patterns::Double(),
+                            "Elevation y of the bottom of the model (m).");
+          prm.declare_entry(
+            "Sliding surface",
+            "circular",
+            Patterns::Selection("circular|polyline"),
+            "Shape of the sliding surface. The sliding mass is the part of "
+            "the model inside the circle, or above the polyline.");
+          prm.declare_entry("Circle centre",
+                            "19.61, 46.32",
+                            Patterns::List(Patterns::Double(), 2, 2, ","),
+                            "Centre 'x,y' of the circular sliding surface (m).");
+          prm.declare_entry("Circle radius",
+                            "21.32",
+                            Patterns::Double(0),
+                            "Radius of the circular sliding surface (m).");
+          prm.declare_entry(
+            "Sliding surface polyline",
+            "",
+            point_list_pattern(0),
+            "Polyline sliding surface as points 'x,y; x,y; ...' with "
+            "non-decreasing x (m). Its first and last points lie on or above "
+            "the ground surface; the parts above the ground are cut off.");
+          prm.declare_entry("Mesh size",
+                            "1.0",
+                            Patterns::Double(0),
+                            "Element size away from the sliding surface (m).");
+          prm.declare_entry("Mesh size on sliding surface",
+                            "0",
+                            Patterns::Double(0),
+                            "Element size on the sliding surface (m); 0 means "
+                            "equal to Mesh size.");
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Hertz");
+        {
+          prm.declare_entry("Radius",
+                            "100",
+                            Patterns::Double(0),
+                            "Radius of the cylinder (model length unit, "
+                            "e.g. mm). The half model holds the lower quarter.");
+          prm.declare_entry("Foundation width",
+                            "500",
+                            Patterns::Double(0),
+                            "Width of the foundation from the symmetry axis "
+                            "(model length unit).");
+          prm.declare_entry("Foundation depth",
+                            "500",
+                            Patterns::Double(0),
+                            "Depth of the foundation (model length unit).");
+          prm.declare_entry(
+            "Contact zone width",
+            "15",
+            Patterns::Double(0),
+            "Length from the symmetry axis over which the cylinder and the "
+            "foundation get nodes at the same x positions (model length "
+            "unit); smaller than Radius and Foundation width.");
+          prm.declare_entry(
+            "Elements in contact zone",
+            "60",
+            Patterns::Integer(2),
+            "Number of equal elements along x in the contact zone on each "
+            "side; even, since an all-quadrilateral mesh needs an even number "
+            "of edges around each region.");
+          prm.declare_entry("Mesh size",
+                            "20",
+                            Patterns::Double(0),
+                            "Element size far from the contact zone (model "
+                            "length unit).");
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Inclined block");
+        {
+          prm.declare_entry("Inclination",
+                            "30",
+                            Patterns::Double(0, 89),
+                            "Angle of the plane with the x axis, rising to "
+                            "the right (degrees).");
+          prm.declare_entry("Block length",
+                            "10",
+                            Patterns::Double(0),
+                            "Length of the block along the plane (m).");
+          prm.declare_entry("Block height",
+                            "5",
+                            Patterns::Double(0),
+                            "Height of the block normal to the plane (m).");
+          prm.declare_entry("Foundation thickness",
+                            "5",
+                            Patterns::Double(0),
+                            "Thickness of the foundation slab normal to the "
+                            "plane (m).");
+          prm.declare_entry("Foundation overhang",
+                            "5",
+                            Patterns::Double(0),
+                            "Length the foundation extends beyond each end "
+                            "of the block (m).");
+          prm.declare_entry("Elements along length",
+                            "10",
+                            Patterns::Integer(1),
+                            "Number of elements of the block along the "
+                            "plane; the foundation gets elements of that size.");
+          prm.declare_entry("Elements across height",
+                            "5",
+                            Patterns::Integer(1),
+                            "Number of elements of the block normal to the "
+                            "plane; the foundation gets elements of that size.");
+        }
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    GeometryParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      {
+        const std::string source_name = prm.get("Source");
+        source = (source_name == "mesh file") ? Source::mesh_file :
+                 (source_name == "slope")     ? Source::slope :
+                 (source_name == "hertz")     ? Source::hertz :
+                                                Source::inclined_block;
+        mesh_file      = prm.get("Mesh file");
+        scale_factor   = prm.get_double("Scale factor");
+        rotation_angle = prm.get_double("Rotation angle");
+        const std::vector<double> axis = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Rotation axis"), ','));
+        rotation_axis = Tensor<1, 3>({axis[0], axis[1], axis[2]});
+        translation   = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Translation"), ','));
+
+        require(source != Source::mesh_file || !mesh_file.empty(),
+                "Geometry/Mesh file: must be given when Source is 'mesh file'.");
+        require(scale_factor > 0,
+                "Geometry/Scale factor: must be positive.");
+        require(rotation_axis.norm() > 0,
+                "Geometry/Rotation axis: must not be the zero vector.");
+        rotation_axis /= rotation_axis.norm();
+
+        prm.enter_subsection("Slope");
+        {
+          slope.ground_surface  = parse_points(prm.get("Ground surface"));
+          slope.base_elevation  = prm.get_double("Base elevation");
+          slope.sliding_surface = (prm.get("Sliding surface") == "circular") ?
+                                    SlidingSurface::circular :
+                                    SlidingSurface::polyline;
+          slope.circle_centre   = parse_point(prm.get("Circle centre"));
+          slope.circle_radius   = prm.get_double("Circle radius");
+          slope.sliding_surface_polyline =
+            parse_points(prm.get("Sliding surface polyline"));
+          slope.mesh_size = prm.get_double("Mesh size");
+          slope.mesh_size_on_sliding_surface =
+            prm.get_double("Mesh size on sliding surface");
+          if (slope.mesh_size_on_sliding_surface == 0)
+            slope.mesh_size_on_sliding_surface = slope.mesh_size;
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Hertz");
+        {
+          hertz.radius                  = prm.get_double("Radius");
+          hertz.foundation_width        = prm.get_double("Foundation width");
+          hertz.foundation_depth        = prm.get_double("Foundation depth");
+          hertz.contact_zone_width      = prm.get_double("Contact zone width");
+          hertz.n_contact_zone_elements = prm.get_integer("Elements in contact zone");
+          hertz.mesh_size               = prm.get_double("Mesh size");
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Inclined block");
+        {
+          inclined_block.inclination          = prm.get_double("Inclination");
+          inclined_block.block_length         = prm.get_double("Block length");
+          inclined_block.block_height         = prm.get_double("Block height");
+          inclined_block.foundation_thickness = prm.get_double("Foundation thickness");
+          inclined_block.foundation_overhang  = prm.get_double("Foundation overhang");
+          inclined_block.n_elements_along_length =
+            prm.get_integer("Elements along length");
+          inclined_block.n_elements_across_height =
+            prm.get_integer("Elements across height");
+        }
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+
+      if (source == Source::slope)
+        {
+          const std::string path = "Geometry/Slope/";
+          const auto &ground = slope.ground_surface;
+          require(x_increases(ground, true),
+                  path + "Ground surface: the x coordinates must increase "
+                         "from left to right.");
+          require(std::all_of(ground.begin(),
+                              ground.end(),
+                              [&](const Point<2> &p) {
+                                return slope.base_elevation < p[1];
+                              }),
+                  path + "Base elevation: must lie below every point of the "
+                         "ground surface.");
+          require(slope.mesh_size > 0, path + "Mesh size: must be positive.");
+          if (slope.sliding_surface == SlidingSurface::circular)
+            require(slope.circle_radius > 0,
+                    path + "Circle radius: must be positive.");
+          else
+            {
+              const auto &line = slope.sliding_surface_polyline;
+              const std::string name = path + "Sliding surface polyline: ";
+              require(line.size() >= 2,
+                      name + "needs at least two points when Sliding "
+                             "surface is 'polyline'.");
+              require(x_increases(line, false) &&
+                        line.back()[0] > line.front()[0],
+                      name + "the x coordinates must not decrease from left "
+                             "to right.");
+              require(on_or_above_ground(ground, line.front()) &&
+                        on_or_above_ground(ground, line.back()),
+                      name + "its first and last points must lie on or "
+                             "above the ground surface.");
+            }
+        }
+      else if (source == Source::hertz)
+        {
+          const std::string path = "Geometry/Hertz/";
+          require(hertz.radius > 0, path + "Radius: must be positive.");
+          require(hertz.foundation_width > 0 && hertz.foundation_depth > 0,
+                  path + "Foundation width and depth: must be positive.");
+          require(hertz.contact_zone_width > 0 &&
+                    hertz.contact_zone_width < hertz.radius &&
+                    hertz.contact_zone_width < hertz.foundation_width,
+                  path + "Contact zone width: must be positive and smaller "
+                         "than Radius and Foundation width.");
+          require(hertz.n_contact_zone_elements % 2 == 0,
+                  path + "Elements in contact zone: must be even (an "
+                         "all-quadrilateral mesh needs an even number of "
+                         "edges around each region).");
+          require(hertz.mesh_size > 0, path + "Mesh size: must be positive.");
+        }
+      else if (source == Source::inclined_block)
+        {
+          const auto &block = inclined_block;
+          require(block.block_length > 0 && block.block_height > 0,
+                  "Geometry/Inclined block/Block length and height: must be "
+                  "positive.");
+          require(block.foundation_thickness > 0 &&
+                    block.foundation_overhang > 0,
+                  "Geometry/Inclined block/Foundation thickness and overhang: "
+                  "must be positive.");
+        }
+    }
+
+
+
+    std::string
+    GeometryParameters::mesh_file_path(const std::string &prm_directory) const
+    {
+      // operator/ keeps an absolute mesh_file as it is.
+      return (std::filesystem::path(prm_directory) / mesh_file).string();
+    }
+  } // namespace parameters
+} // namespace fdem

@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/parameters/model_parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+
+namespace fdem
+{
+  namespace parameters
+  {
+    using namespace dealii;
+
+    bool
+    expression_parses(const std::string &expression, const unsigned int dim)
+    {
+      try
+        {
+          // Evaluating once makes the parser report unknown names now.
+          if (dim == 2)
+            {
+              FunctionParser<2> f(1);
+              f.initialize("x,y", expression, {{"pi", numbers::PI}});
+              f.value(Point<2>());
+              return true;
+            }
+          FunctionParser<3> f(1);
+          f.initialize("x,y,z", expression, {{"pi", numbers::PI}});
+          f.value(Point<3>());
+          return true;
+        }
+      catch (...)
+        {
+          return false;
+        }
+    }
+
+    std::vector<double>
+    parse_vector(const std::string &text,
+                 const unsigned int n_components,
+                 const std::string &path)
+    {
+      std::vector<double> values;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          try
+            {
+              values.push_back(Utilities::string_to_double(item));
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcMessage(path + ": '" + item +
+                                     "' is not a number."));
+            }
+        }
+      AssertThrow(values.size() == n_components,
+                  ExcMessage(path + ": expected " +
+                             std::to_string(n_components) +
+                             " comma-separated numbers, got '" + text + "'."));
+      return values;
+    }
+
+    void
+    MaterialParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Young's modulus",
+                        "0",
+                        Patterns::Double(0),
+                        "Young's modulus E of the block (force/length^2, e.g. "
+                        "kPa with kN and m). Must be given (> 0).");
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        Patterns::Double(0, 0.5),
+                        "Poisson's ratio of the block (dimensionless, 0 <= nu "
+                        "< 0.5). 2D models are in plane strain.");
+      prm.declare_entry("Unit weight",
+                        "0",
+                        Patterns::Double(0),
+                        "Unit weight of the block (force/length^3, e.g. "
+                        "kN/m^3); acts along Loads/Gravity direction.");
+      prm.declare_entry("Density",
+                        "0",
+                        Patterns::Double(0),
+                        "Density of the block (mass/length^3); its weight is "
+                        "density times Loads/Gravitational acceleration. Give "
+                        "either a unit weight or a density, not both.");
+    }
+
+    void
+    MaterialParameters::parse_parameters(ParameterHandler & prm,
+                                         const std::string &path)
+    {
+      youngs_modulus = prm.get_double("Young's modulus");
+      poissons_ratio = prm.get_double("Poisson's ratio");
+      unit_weight    = prm.get_double("Unit weight");
+      density        = prm.get_double("Density");
+      AssertThrow(youngs_modulus > 0,
+                  ExcMessage(path +
+                             "/Young's modulus: the block has no material; "
+                             "give a Young's modulus > 0."));
+      AssertThrow(poissons_ratio < 0.5,
+                  ExcMessage(path + "/Poisson's ratio: must be below 0.5."));
+      AssertThrow(unit_weight == 0 || density == 0,
+                  ExcMessage(path +
+                             ": give either 'Unit weight' or 'Density', not "
+                             "both."));
+    }
+
+    void
+    BoundaryParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Constraint",
+                        "none",
+                        Patterns::Selection("none|fixed|normal"),
+                        "Displacement constraint on this boundary part: none, "
+                        "fixed (all components zero) or normal (zero "
+                        "displacement along the boundary normal, a roller).");
+      prm.declare_entry("Pressure",
+                        "0",
+                        Patterns::Anything(),
+                        "Pressure on this boundary part (force/length^2), "
+                        "positive when it pushes into the body, as a function "
+                        "of the coordinates x, y (and z in 3D), e.g. "
+                        "'9.81*max(0, 30-y)'.");
+    }
+
+    void
+    BoundaryParameters::parse_parameters(ParameterHandler & prm,
+                                         const std::string &path,
+                                         const unsigned int dim)
+    {
+      const std::string type = prm.get("Constraint");
+      constraint             = (type == "fixed"  ? Constraint::fixed :
+                                type == "normal" ? Constraint::normal :
+                                                   Constraint::none);
+      pressure               = prm.get("Pressure");
+      AssertThrow(!Utilities::trim(pressure).empty(),
+                  ExcMessage(path + "/Pressure: give an expression, '0' for "
+                                    "none."));
+      AssertThrow(expression_parses(pressure, dim),
+                  ExcMessage(path + "/Pressure: cannot parse '" + pressure +
+                             "' as a function of " +
+                             (dim == 2 ? "x, y." : "x, y, z.")));
+    }
+
+    void
+    InterfaceParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Search distance",
+        "0",
+        Patterns::Double(0),
+        "Largest initial gap (length) between a node of one side and the node "
+        "of the other side found along the interface normal; 0 pairs only "
+        "coincident nodes.");
+    }
+
+    void
+    InterfaceParameters::parse_parameters(ParameterHandler &prm,
+                                          const std::string & /*path*/)
+    {
+      search_distance = prm.get_double("Search distance");
+    }
+
+    void
+    LoadParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loads");
+      prm.declare_entry("Gravity direction",
+                        "0, -1",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Direction of gravity (any length; it is normalised), "
+                        "2 or 3 comma-separated numbers as the dimension.");
+      prm.declare_entry("Gravitational acceleration",
+                        "9.81",
+                        Patterns::Double(0),
+                        "Gravitational acceleration (length/time^2), used for "
+                        "blocks given a density.");
+      prm.leave_subsection();
+    }
+
+    void
+    LoadParameters::parse_parameters(ParameterHandler &prm,
+                                     const unsigned int dim)
+    {
+      prm.enter_subsection("Loads");
+      gravity_direction = parse_vector(prm.get("Gravity direction"),
+                                       dim,
+                                       "Loads/Gravity direction");
+      double norm       = 0;
+      for (const double g : gravity_direction)
+        norm += g * g;
+      AssertThrow(norm > 0,
+                  ExcMessage("Loads/Gravity direction: must not be zero."));
+      for (double &g : gravity_direction)
+        g /= std::sqrt(norm);
+      gravitational_acceleration = prm.get_double("Gravitational acceleration");
+      prm.leave_subsection();
+    }
+
+    void
+    SolverParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      prm.declare_entry("Direct solver",
+                        "Amesos_Klu",
+                        Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
+                        "Trilinos Amesos direct solver that factorises each "
+                        "block's stiffness matrix once.");
+      prm.leave_subsection();
+    }
+
+    void
+    SolverParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      direct_solver = prm.get("Direct solver");
+      prm.leave_subsection();
+    }
+
+    void
+    OutputParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "",
+                        Patterns::Anything(),
+                        "Folder for the results (created if missing). Empty: "
+                        "'<case name>-output' in the working directory.");
+      prm.declare_entry("Write VTU",
+                        "true",
+                        Patterns::Bool(),
+                        "Write VTU/PVD files for ParaView. The CSV tables and "
+                        "summary.json are always written.");
+      prm.leave_subsection();
+    }
+
+    void
+    OutputParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory = prm.get("Directory");
+      write_vtu = prm.get_bool("Write VTU");
+      prm.leave_subsection();
+    }
+  } // namespace parameters
+} // namespace fdem

@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/parameters/parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fdem
+{
+  namespace parameters
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      // The defaults describe the paper's slope (prm/paper_slope.prm).
+      const std::string default_blocks     = "sliding mass, foundation";
+      const std::string default_boundaries = "left, right, bottom, ground";
+      const std::string default_interfaces = "sliding surface";
+
+      void
+      declare_name_lists(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Blocks");
+        prm.declare_entry("Names",
+                          default_blocks,
+                          Patterns::List(Patterns::Anything()),
+                          "Names of the blocks: the physical groups of "
+                          "dimension 'Dimension' in the mesh. Each gets a "
+                          "subsection of this name with its material.");
+        prm.leave_subsection();
+        prm.enter_subsection("Boundaries");
+        prm.declare_entry("Names",
+                          default_boundaries,
+                          Patterns::List(Patterns::Anything(), 0),
+                          "Names of the boundary parts that carry conditions: "
+                          "physical groups of dimension 'Dimension'-1. Each "
+                          "gets a subsection of this name. Unlisted boundary "
+                          "is free.");
+        prm.leave_subsection();
+        prm.enter_subsection("Interfaces");
+        prm.declare_entry("Names",
+                          default_interfaces,
+                          Patterns::List(Patterns::Anything(), 0),
+                          "Names of the interfaces between blocks (possible "
+                          "sliding surfaces): physical groups of dimension "
+                          "'Dimension'-1. Each gets a subsection of this name.");
+        prm.leave_subsection();
+      }
+
+      template <typename SubsectionParameters>
+      void
+      declare_named_subsections(ParameterHandler &              prm,
+                                const std::string &             section,
+                                const std::vector<std::string> &names)
+      {
+        prm.enter_subsection(section);
+        for (const std::string &name : names)
+          {
+            prm.enter_subsection(name);
+            SubsectionParameters::declare_parameters(prm);
+            prm.leave_subsection();
+          }
+        prm.leave_subsection();
+      }
+
+      std::vector<std::string>
+      names_in(ParameterHandler &prm, const std::string &section)
+      {
+        prm.enter_subsection(section);
+        std::vector<std::string> names =
+          Utilities::split_string_list(prm.get("Names"), ',');
+        prm.leave_subsection();
+        for (unsigned int i = 0; i < names.size(); ++i)
+          {
+            AssertThrow(!names[i].empty(),
+                        ExcMessage(section + "/Names: empty name in the list."));
+            for (unsigned int j = 0; j < i; ++j)
+              AssertThrow(names[i] != names[j],
+                          ExcMessage(section + "/Names: '" + names[i] +
+                                     "' is listed twice."));
+          }
+        return names;
+      }
+
+      /// Reads @p filename into @p prm; ParameterHandler's own errors say the
+      /// line and file, which is what a user needs.
+      void
+      parse_file(ParameterHandler & prm,
+                 const std::string &filename,
+                 const bool         skip_undefined)
+      {
+        std::ifstream file(filename);
+        AssertThrow(file.good(),
+                    ExcMessage("Cannot open the parameter file '" + filename +
+                               "'."));
+        prm.parse_input(filename, "", skip_undefined, false);
+      }
+    } // namespace
+
+    void
+    Parameters::declare_parameters(ParameterHandler &              prm,
+                                   const std::vector<std::string> &blocks,
+                                   const std::vector<std::string> &boundaries,
+                                   const std::vector<std::string> &interfaces)
+    {
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "Spatial dimension: 2 (plane strain, per unit "
+                        "thickness) or 3.");
+      prm.declare_entry("Finite element degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree of the block elements: 1 (Q1) or 2 "
+                        "(Q2). Interface node pairs sit on every support point.");
+      GeometryParameters::declare_parameters(prm);
+      LoadParameters::declare_parameters(prm);
+      declare_name_lists(prm);
+      declare_named_subsections<MaterialParameters>(prm, "Blocks", blocks);
+      declare_named_subsections<BoundaryParameters>(prm,
+                                                    "Boundaries",
+                                                    boundaries);
+      declare_named_subsections<InterfaceParameters>(prm,
+                                                     "Interfaces",
+                                                     interfaces);
+      SolverParameters::declare_parameters(prm);
+      OutputParameters::declare_parameters(prm);
+    }
+
+    void
+    Parameters::parse_parameters(ParameterHandler &prm)
+    {
+      dimension = prm.get_integer("Dimension");
+      fe_degree = prm.get_integer("Finite element degree");
+      geometry.parse_parameters(prm);
+      loads.parse_parameters(prm, dimension);
+      solver.parse_parameters(prm);
+      output.parse_parameters(prm);
+
+      block_names     = names_in(prm, "Blocks");
+      boundary_names  = names_in(prm, "Boundaries");
+      interface_names = names_in(prm, "Interfaces");
+      for (const std::string &name : boundary_names)
+        for (const std::string &other : interface_names)
+          AssertThrow(name != other,
+                      ExcMessage("Boundaries/Names and Interfaces/Names: '" +
+                                 name + "' cannot be both."));
+
+      prm.enter_subsection("Blocks");
+      for (const std::string &name : block_names)
+        {
+          prm.enter_subsection(name);
+          materials[name].parse_parameters(prm, "Blocks/" + name);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+      prm.enter_subsection("Boundaries");
+      for (const std::string &name : boundary_names)
+        {
+          prm.enter_subsection(name);
+          boundaries[name].parse_parameters(prm,
+                                            "Boundaries/" + name,
+                                            dimension);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+      prm.enter_subsection("Interfaces");
+      for (const std::string &name : interface_names)
+        {
+          prm.enter_subsection(name);
+          interfaces[name].parse_parameters(prm, "Interfaces/" + name);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+    std::string
+    Parameters::output_directory() const
+    {
+      return output.directory.empty() ? case_name + "-output" :
+                                        output.directory;
+    }
+
+    Parameters
+    read_parameters(const std::string &filename, std::string *expanded)
+    {
+      // First pass: only the name lists, to know which subsections exist.
+      ParameterHandler names_prm;
+      Parameters::declare_parameters(names_prm, {}, {}, {});
+      parse_file(names_prm, filename, true);
+
+      Parameters parameters;
+      parameters.block_names     = names_in(names_prm, "Blocks");
+      parameters.boundary_names  = names_in(names_prm, "Boundaries");
+      parameters.interface_names = names_in(names_prm, "Interfaces");
+
+      // Second pass: strict, every entry must be declared.
+      ParameterHandler prm;
+      Parameters::declare_parameters(prm,
+                                     parameters.block_names,
+                                     parameters.boundary_names,
+                                     parameters.interface_names);
+      parse_file(prm, filename, false);
+      parameters.parse_parameters(prm);
+
+      const std::filesystem::path path(filename);
+      parameters.case_name = path.stem().string();
+      parameters.prm_directory =
+        path.has_parent_path() ? path.parent_path().string() : ".";
+      if (expanded != nullptr)
+        {
+          std::ostringstream out;
+          prm.print_parameters(out, ParameterHandler::PRM);
+          *expanded = out.str();
+        }
+      return parameters;
+    }
+
+    void
+    print_parameters(std::ostream &out, const std::string &filename)
+    {
+      std::vector<std::string> blocks, boundaries, interfaces;
+      ParameterHandler         names_prm;
+      Parameters::declare_parameters(names_prm, {}, {}, {});
+      if (!filename.empty())
+        parse_file(names_prm, filename, true);
+      blocks     = names_in(names_prm, "Blocks");
+      boundaries = names_in(names_prm, "Boundaries");
+      interfaces = names_in(names_prm, "Interfaces");
+
+      ParameterHandler prm;
+      Parameters::declare_parameters(prm, blocks, boundaries, interfaces);
+      if (!filename.empty())
+        parse_file(prm, filename, false);
+      prm.print_parameters(out, ParameterHandler::Text);
+    }
+  } // namespace parameters
+} // namespace fdem

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/postprocess/output_files.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+
+namespace fdem
+{
+  namespace postprocess
+  {
+    void
+    write_pvd(const std::string &filename, const std::vector<PvdEntry> &entries)
+    {
+      std::ofstream out(filename);
+      AssertThrow(out.good(),
+                  dealii::ExcMessage("Cannot write '" + filename + "'."));
+      out << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"Collection\" version=\"0.1\" "
+             "byte_order=\"LittleEndian\">\n  <Collection>\n";
+      for (const PvdEntry &entry : entries)
+        out << "    <DataSet timestep=\"" << entry.time << "\" group=\"\" part=\""
+            << entry.part << "\" file=\"" << entry.file << "\"/>\n";
+      out << "  </Collection>\n</VTKFile>\n";
+    }
+
+    void
+    write_json(const std::string &filename, const nlohmann::json &summary)
+    {
+      const std::string temporary = filename + ".part";
+      {
+        std::ofstream out(temporary);
+        AssertThrow(out.good(),
+                    dealii::ExcMessage("Cannot write '" + filename + "'."));
+        out << std::setw(2) << summary << '\n';
+        AssertThrow(out.good(),
+                    dealii::ExcMessage("Cannot write '" + filename + "'."));
+      }
+      AssertThrow(std::rename(temporary.c_str(), filename.c_str()) == 0,
+                  dealii::ExcMessage("Cannot write '" + filename + "'."));
+    }
+
+    std::string
+    file_stem(const std::string &name)
+    {
+      std::string stem = name;
+      for (char &c : stem)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_')
+          c = '_';
+      return stem;
+    }
+  } // namespace postprocess
+} // namespace fdem

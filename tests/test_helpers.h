@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/model.h>
+
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace fdem
+{
+  namespace test_support
+  {
+    /** Parameters of prm/<name>, writing into a fresh folder of the test's. */
+    inline parameters::Parameters
+    case_parameters(const std::string &name)
+    {
+      parameters::Parameters parameters =
+        parameters::read_parameters(std::string(FDEM_SOURCE_DIR) + "/prm/" + name);
+      parameters.output.directory =
+        (std::filesystem::temp_directory_path() / ("fdem-test-" + name)).string();
+      parameters.output.write_vtu = false;
+      std::filesystem::create_directories(parameters.output.directory);
+      return parameters;
+    }
+
+    /** A model taken through every step of run() up to the contact solve. */
+    template <int dim>
+    std::unique_ptr<Model<dim>>
+    solved_model(const parameters::Parameters &parameters, std::ostream &log)
+    {
+      auto model = std::make_unique<Model<dim>>(parameters, "", log);
+      model->make_geometry();
+      model->setup_blocks();
+      model->assemble_and_factorize();
+      model->build_interfaces();
+      model->compute_flexibility();
+      model->solve_contact();
+      model->recover_block_displacements();
+      return model;
+    }
+  } // namespace test_support
+} // namespace fdem
