@@ -216,8 +216,8 @@ namespace fdem
   void
   Model<dim>::output_results()
   {
-    TimerOutput::Scope scope(timer, "output");
     const std::string directory = parameters.output_directory();
+    TimerOutput::Scope scope(timer, "output");
 
     std::vector<std::vector<postprocess::PairResult<dim>>> results;
     unsigned int first_pair = 0;
@@ -243,6 +243,8 @@ namespace fdem
                                                               directory, "")});
         postprocess::write_pvd(directory + "/solution.pvd", entries);
       }
+
+    scope.stop();
 
     summary                = nlohmann::json::object();
     summary["case"]        = parameters.case_name;

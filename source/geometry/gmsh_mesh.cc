@@ -9,9 +9,11 @@
 #include <gmsh.h>
 
 #include <array>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <unordered_map>
 
 namespace fdem
@@ -261,21 +263,21 @@ namespace fdem
           cell.material_id = cell_blocks[c];
 
           // Gmsh's cells may have either orientation (it follows each
-          // surface's normal); a cell that is neither is unusable.
+          // surface's normal); a cell that has neither is unusable.
           const auto   sines     = corner_sine_range(mesh.vertices, cell);
           const double tolerance = 1e-10;
-          AssertThrow((sines.first > -tolerance && sines.second > tolerance) ||
-                        (sines.second < tolerance && sines.first < -tolerance),
-                      ExcMessage(source + ": a cell of block '" +
-                                 mesh.block_names[cell_blocks[c]] +
-                                 "' is degenerate or twisted (zero measure "
-                                 "or non-convex), near " +
-                                 Utilities::to_string(
-                                   mesh.vertices[cell.vertices[0]][0]) +
-                                 ", " +
-                                 Utilities::to_string(
-                                   mesh.vertices[cell.vertices[0]][1]) +
-                                 "."));
+          if (!(sines.first > -tolerance && sines.second > tolerance) &&
+              !(sines.second < tolerance && sines.first < -tolerance))
+            {
+              std::ostringstream where;
+              where << mesh.vertices[cell.vertices[0]];
+              AssertThrow(false,
+                          ExcMessage(source + ": a cell of block '" +
+                                     mesh.block_names[cell_blocks[c]] +
+                                     "' near (" + where.str() +
+                                     ") is degenerate or twisted (zero "
+                                     "measure or a non-convex corner)."));
+            }
           mesh.cells.push_back(cell);
         }
 

@@ -7,6 +7,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <iostream>
+#include <sstream>
 
 namespace fdem
 {
@@ -17,6 +19,11 @@ namespace fdem
     bool
     expression_parses(const std::string &expression, const unsigned int dim)
     {
+      // muparser writes its own diagnostics to std::cerr; the caller reports
+      // the error in one line instead.
+      std::ostringstream quiet;
+      std::streambuf    *cerr_buffer = std::cerr.rdbuf(quiet.rdbuf());
+      const auto restore = [&]() { std::cerr.rdbuf(cerr_buffer); };
       try
         {
           // Evaluating once makes the parser report unknown names now.
@@ -25,15 +32,18 @@ namespace fdem
               FunctionParser<2> f(1);
               f.initialize("x,y", expression, {{"pi", numbers::PI}});
               f.value(Point<2>());
+              restore();
               return true;
             }
           FunctionParser<3> f(1);
           f.initialize("x,y,z", expression, {{"pi", numbers::PI}});
           f.value(Point<3>());
+          restore();
           return true;
         }
       catch (...)
         {
+          restore();
           return false;
         }
     }

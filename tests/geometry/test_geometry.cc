@@ -1,3 +1,794 @@
-// placeholder
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+//
+// Unit tests of the geometry module: the built-in generators, Gmsh files,
+// the transforms and the error messages.
+
+#include <fdem/geometry/generators.h>
+#include <fdem/geometry/gmsh_mesh.h>
+#include <fdem/geometry/make_mesh.h>
+#include <fdem/parameters/geometry_parameters.h>
+
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+
+#include <gmsh.h>
 #include <gtest/gtest.h>
-TEST(Geometry, Placeholder) {}
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <regex>
+#include <set>
+
+namespace
+{
+  using namespace dealii;
+  using namespace fdem;
+  using fdem::geometry::MeshDescription;
+  using Parameters = parameters::GeometryParameters;
+  using Edge       = std::pair<unsigned int, unsigned int>;
+
+  const std::string data_directory = FDEM_GEOMETRY_TEST_DATA;
+
+  /** Geometry parameters from the entries of the subsection "Geometry". */
+  Parameters
+  parse(const std::string &entries)
+  {
+    ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    prm.parse_input_from_string("subsection Geometry\n" + entries + "\nend\n");
+    Parameters geometry;
+    geometry.parse_parameters(prm);
+    return geometry;
+  }
+
+  /** A file name in the temporary directory, unique to the running test. */
+  std::string
+  temporary_file(const std::string &extension)
+  {
+    const auto *test = ::testing::UnitTest::GetInstance()->current_test_info();
+    return (std::filesystem::temp_directory_path() /
+            ("fdem_" + std::string(test->test_suite_name()) + "_" + test->name() +
+             "_" + std::to_string(getpid()) + extension))
+      .string();
+  }
+
+  /**
+   * Expect @p function to throw a message that contains @p text. deal.II
+   * wraps its messages, so whitespace is compared as single spaces.
+   */
+  template <typename Function>
+  void
+  expect_error(const Function &function, const std::string &text)
+  {
+    try
+      {
+        function();
+        ADD_FAILURE() << "no exception; expected one saying: " << text;
+      }
+    catch (const std::exception &error)
+      {
+        const std::string message =
+          std::regex_replace(error.what(), std::regex("\\s+"), " ");
+        EXPECT_NE(message.find(text), std::string::npos) << message;
+      }
+  }
+
+  template <int dim>
+  double
+  measure(const MeshDescription<dim> &mesh, const CellData<dim> &cell)
+  {
+    const std::vector<unsigned int> vertices(cell.vertices.begin(),
+                                             cell.vertices.end());
+    return GridTools::cell_measure<dim>(mesh.vertices, vertices);
+  }
+
+  template <int dim>
+  double
+  block_area(const MeshDescription<dim> &mesh, const unsigned int block)
+  {
+    double area = 0;
+    for (const auto &cell : mesh.cells)
+      if (cell.material_id == block)
+        area += measure(mesh, cell);
+    return area;
+  }
+
+  unsigned int
+  index_of(const std::vector<std::string> &names, const std::string &name)
+  {
+    const auto found = std::find(names.begin(), names.end(), name);
+    EXPECT_NE(found, names.end()) << "no group '" << name << "'";
+    return found - names.begin();
+  }
+
+  std::vector<CellData<1>>
+  faces_of(const MeshDescription<2> &mesh, const std::string &group)
+  {
+    const unsigned int       id = index_of(mesh.face_group_names, group);
+    std::vector<CellData<1>> faces;
+    for (const auto &face : mesh.faces)
+      if (face.boundary_id == id)
+        faces.push_back(face);
+    return faces;
+  }
+
+  Edge
+  edge(const unsigned int a, const unsigned int b)
+  {
+    return {std::min(a, b), std::max(a, b)};
+  }
+
+  /** Edges of the cells of @p block (all blocks if it is invalid). */
+  std::set<Edge>
+  cell_edges(const MeshDescription<2> &mesh,
+             const unsigned int        block = numbers::invalid_unsigned_int)
+  {
+    std::set<Edge> edges;
+    for (const auto &cell : mesh.cells)
+      if (block == numbers::invalid_unsigned_int || cell.material_id == block)
+        for (const auto &[a, b] : {Edge{0, 1}, Edge{2, 3}, Edge{0, 2}, Edge{1, 3}})
+          edges.insert(edge(cell.vertices[a], cell.vertices[b]));
+    return edges;
+  }
+
+  double
+  length(const MeshDescription<2> &mesh, const CellData<1> &face)
+  {
+    return mesh.vertices[face.vertices[0]].distance(mesh.vertices[face.vertices[1]]);
+  }
+
+  /**
+   * What every generated 2D mesh must satisfy: the given names in order,
+   * quadrilaterals of positive measure, every block and face group
+   * non-empty, every face an edge of a cell, every vertex used, and
+   * deal.II accepts it as a triangulation.
+   */
+  void
+  check_mesh(const MeshDescription<2>       &mesh,
+             const std::vector<std::string> &blocks,
+             const std::vector<std::string> &face_groups)
+  {
+    EXPECT_EQ(mesh.block_names, blocks);
+    EXPECT_EQ(mesh.face_group_names, face_groups);
+    std::vector<unsigned int> n_cells(blocks.size()), n_faces(face_groups.size());
+    std::vector<bool>         used(mesh.vertices.size());
+    for (const auto &cell : mesh.cells)
+      {
+        ASSERT_EQ(cell.vertices.size(), 4u);
+        ASSERT_LT(cell.material_id, blocks.size());
+        EXPECT_GT(measure(mesh, cell), 0);
+        ++n_cells[cell.material_id];
+        for (const unsigned int v : cell.vertices)
+          used[v] = true;
+      }
+    const std::set<Edge> edges = cell_edges(mesh);
+    for (const auto &face : mesh.faces)
+      {
+        ASSERT_LT(face.boundary_id, face_groups.size());
+        ++n_faces[face.boundary_id];
+        EXPECT_TRUE(edges.count(edge(face.vertices[0], face.vertices[1])));
+      }
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      EXPECT_GT(n_cells[b], 0u) << blocks[b];
+    for (unsigned int g = 0; g < face_groups.size(); ++g)
+      EXPECT_GT(n_faces[g], 0u) << face_groups[g];
+    EXPECT_EQ(std::count(used.begin(), used.end(), false), 0);
+
+    Triangulation<2> triangulation;
+    EXPECT_NO_THROW(
+      triangulation.create_triangulation(mesh.vertices, mesh.cells, SubCellData()));
+  }
+
+  /**
+   * Signed area of the intersection of the polygon @p corners with the disk
+   * of centre @p centre and radius @p radius: the sum over the edges of the
+   * intersection of the disk with the triangle (centre, edge), where each
+   * piece of an edge contributes a triangle inside the circle and a sector
+   * outside it.
+   */
+  double
+  polygon_disk_area(const std::vector<Point<2>> &corners,
+                    const Point<2>              &centre,
+                    const double                 radius)
+  {
+    const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
+      return a[0] * b[1] - a[1] * b[0];
+    };
+    double area = 0;
+    for (unsigned int i = 0; i < corners.size(); ++i)
+      {
+        const Tensor<1, 2> a = corners[i] - centre;
+        const Tensor<1, 2> d = corners[(i + 1) % corners.size()] - corners[i];
+        std::vector<double> t = {0, 1};
+        const double        qa = d * d, qb = 2 * (a * d), qc = a * a - radius * radius;
+        const double        discriminant = qb * qb - 4 * qa * qc;
+        if (discriminant > 0)
+          for (const double sign : {-1., 1.})
+            {
+              const double root = (-qb + sign * std::sqrt(discriminant)) / (2 * qa);
+              if (root > 0 && root < 1)
+                t.push_back(root);
+            }
+        std::sort(t.begin(), t.end());
+        for (unsigned int k = 0; k + 1 < t.size(); ++k)
+          {
+            const Tensor<1, 2> p = a + t[k] * d, q = a + t[k + 1] * d;
+            if ((0.5 * (p + q)).norm() < radius)
+              area += 0.5 * cross(p, q);
+            else
+              area += 0.5 * radius * radius * std::atan2(cross(p, q), p * q);
+          }
+      }
+    return area;
+  }
+
+  /** Piecewise linear interpolation in a polyline with increasing x. */
+  double
+  polyline_y(const std::vector<Point<2>> &line, const double x)
+  {
+    for (unsigned int i = 1; i < line.size(); ++i)
+      if (x <= line[i][0])
+        return line[i - 1][1] + (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]) *
+                                  (line[i][1] - line[i - 1][1]);
+    return line.back()[1];
+  }
+
+  /** Exact area between @p upper and @p lower where upper lies above. */
+  double
+  area_between(const std::vector<Point<2>> &upper, const std::vector<Point<2>> &lower)
+  {
+    std::vector<double> x;
+    const double        x_begin = std::max(upper.front()[0], lower.front()[0]);
+    const double        x_end   = std::min(upper.back()[0], lower.back()[0]);
+    for (const auto *line : {&upper, &lower})
+      for (const Point<2> &p : *line)
+        if (p[0] > x_begin && p[0] < x_end)
+          x.push_back(p[0]);
+    x.push_back(x_begin);
+    x.push_back(x_end);
+    std::sort(x.begin(), x.end());
+    double area = 0;
+    for (unsigned int i = 0; i + 1 < x.size(); ++i)
+      {
+        // The difference is linear on each interval: integrate its positive part.
+        const double da = polyline_y(upper, x[i]) - polyline_y(lower, x[i]);
+        const double db = polyline_y(upper, x[i + 1]) - polyline_y(lower, x[i + 1]);
+        const double dx = x[i + 1] - x[i];
+        if (da >= 0 && db >= 0)
+          area += 0.5 * (da + db) * dx;
+        else if (da > 0 || db > 0)
+          area += 0.5 * std::max(da, db) * dx * std::max(da, db) / std::abs(da - db);
+      }
+    return area;
+  }
+
+  const std::vector<std::string> slope_blocks = {"sliding mass", "foundation"};
+  const std::vector<std::string> slope_groups = {
+    "sliding surface", "ground", "left", "right", "bottom"};
+} // namespace
+
+
+
+TEST(Slope, DefaultMeshHasTheNamedBlocksAndFaceGroups)
+{
+  const auto mesh = geometry::make_slope_mesh(parse("").slope);
+  check_mesh(mesh, slope_blocks, slope_groups);
+  for (const auto &face : faces_of(mesh, "left"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][0], 0, 1e-12);
+  for (const auto &face : faces_of(mesh, "right"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][0], 50, 1e-12);
+  for (const auto &face : faces_of(mesh, "bottom"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][1], 20, 1e-12);
+  // The ground is the top of both blocks.
+  const std::set<Edge> mass = cell_edges(mesh, 0), foundation = cell_edges(mesh, 1);
+  unsigned int         n_on_mass = 0, n_on_foundation = 0;
+  for (const auto &face : faces_of(mesh, "ground"))
+    {
+      n_on_mass += mass.count(edge(face.vertices[0], face.vertices[1]));
+      n_on_foundation += foundation.count(edge(face.vertices[0], face.vertices[1]));
+    }
+  EXPECT_GT(n_on_mass, 0u);
+  EXPECT_GT(n_on_foundation, 0u);
+}
+
+
+
+TEST(Slope, SlidingSurfaceIsConforming)
+{
+  const auto mesh = geometry::make_slope_mesh(parse("").slope);
+  const std::set<Edge> mass = cell_edges(mesh, 0), foundation = cell_edges(mesh, 1);
+  std::vector<std::set<unsigned int>> blocks_of_vertex(mesh.vertices.size());
+  for (const auto &cell : mesh.cells)
+    for (const unsigned int v : cell.vertices)
+      blocks_of_vertex[v].insert(cell.material_id);
+  const auto sliding = faces_of(mesh, "sliding surface");
+  ASSERT_FALSE(sliding.empty());
+  for (const auto &face : sliding)
+    {
+      // The same two vertices bound a cell edge on each side.
+      EXPECT_TRUE(mass.count(edge(face.vertices[0], face.vertices[1])));
+      EXPECT_TRUE(foundation.count(edge(face.vertices[0], face.vertices[1])));
+      for (const unsigned int v : face.vertices)
+        EXPECT_EQ(blocks_of_vertex[v].size(), 2u);
+    }
+}
+
+
+
+// The sliding mass is the polygon of the ground closed to the base, cut by
+// the disk. Its mesh replaces the arc by chords, all with their ends on the
+// circle, so the mesh area plus the circular segments cut off by the chords,
+// (r^2/2)(theta - sin theta) each, equals the exact area to round-off (1e-9
+// relative leaves ample room). The segments themselves bound the difference
+// a priori: c^3/(12 r) for a chord c to leading order (the next term is
+// smaller by theta^2/10 < 1e-3 here), so at most L h_max^2 / (12 r) with L
+// the arc length, plus 1% for that term: 0.08% of the area for h = 1 m.
+TEST(Slope, SlidingMassAreaMatchesDomainInsideDisk)
+{
+  const Parameters geometry = parse("");
+  const auto      &slope    = geometry.slope;
+  const auto       mesh     = geometry::make_slope_mesh(slope);
+
+  std::vector<Point<2>> domain = slope.ground_surface;
+  domain.emplace_back(50, slope.base_elevation);
+  domain.emplace_back(0, slope.base_elevation);
+  const double r = slope.circle_radius;
+  const double exact =
+    std::abs(polygon_disk_area(domain, slope.circle_centre, r));
+  const double meshed = block_area(mesh, 0);
+
+  double segments = 0, arc_length = 0, h_max = 0;
+  for (const auto &face : faces_of(mesh, "sliding surface"))
+    {
+      const double chord = length(mesh, face);
+      const double theta = 2 * std::asin(chord / (2 * r));
+      segments += 0.5 * r * r * (theta - std::sin(theta));
+      arc_length += r * theta;
+      h_max = std::max(h_max, chord);
+    }
+  EXPECT_NEAR(meshed + segments, exact, 1e-9 * exact);
+  EXPECT_GT(exact - meshed, 0);
+  EXPECT_LT(exact - meshed, 1.01 * arc_length * h_max * h_max / (12 * r));
+  EXPECT_LT(exact - meshed, 1e-3 * exact);
+  // The whole slope: the integral of the ground elevation above the base.
+  EXPECT_NEAR(meshed + block_area(mesh, 1), 550, 1e-9 * 550);
+}
+
+
+
+TEST(Slope, MeshIsFinerOnTheSlidingSurface)
+{
+  const auto mesh = geometry::make_slope_mesh(
+    parse("subsection Slope\n set Mesh size = 2\n"
+          " set Mesh size on sliding surface = 0.5\nend")
+      .slope);
+  check_mesh(mesh, slope_blocks, slope_groups);
+  // The right side is more than 9 m from the circle: there the size is 2 m.
+  double sliding_max = 0, right_min = 1e10, right_max = 0;
+  for (const auto &face : faces_of(mesh, "sliding surface"))
+    sliding_max = std::max(sliding_max, length(mesh, face));
+  for (const auto &face : faces_of(mesh, "right"))
+    {
+      right_min = std::min(right_min, length(mesh, face));
+      right_max = std::max(right_max, length(mesh, face));
+    }
+  EXPECT_LT(sliding_max, 1.3 * 0.5);
+  EXPECT_GT(right_min, 0.7 * 2);
+  EXPECT_LT(right_max, 1.3 * 2);
+}
+
+
+
+TEST(Slope, PolylineSlidingSurface)
+{
+  const Parameters geometry =
+    parse("subsection Slope\n set Sliding surface = polyline\n"
+          " set Sliding surface polyline = 5,26; 15,22; 35,30; 45,36\nend");
+  const auto mesh = geometry::make_slope_mesh(geometry.slope);
+  check_mesh(mesh, slope_blocks, slope_groups);
+  // Everything is straight, so the areas are exact up to round-off.
+  const double exact = area_between(geometry.slope.ground_surface,
+                                    geometry.slope.sliding_surface_polyline);
+  EXPECT_NEAR(block_area(mesh, 0), exact, 1e-9 * exact);
+  for (const auto &face : faces_of(mesh, "sliding surface"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][1],
+                  polyline_y(geometry.slope.sliding_surface_polyline,
+                             mesh.vertices[v][0]),
+                  1e-9);
+}
+
+
+
+TEST(Slope, SurfaceThatDoesNotSeparateIsRejected)
+{
+  const std::string message = "Geometry/Slope: the sliding surface does not "
+                              "separate a sliding mass from the foundation.";
+  // A circle inside the slope, and one that cuts through the base.
+  expect_error([] { geometry::make_slope_mesh(
+                      parse("subsection Slope\n set Circle centre = 25, 25\n"
+                            " set Circle radius = 3\nend").slope); },
+               message);
+  expect_error([] { geometry::make_slope_mesh(
+                      parse("subsection Slope\n set Circle centre = 25, 45\n"
+                            " set Circle radius = 30\nend").slope); },
+               message);
+  expect_error([] { geometry::make_slope_mesh(
+                      parse("subsection Slope\n set Circle centre = 100, 100\n"
+                            " set Circle radius = 3\nend").slope); },
+               message);
+}
+
+
+
+TEST(Hertz, MeshHasTheNamedBlocksAndFaceGroups)
+{
+  const auto mesh = geometry::make_hertz_mesh(parse("").hertz);
+  check_mesh(mesh,
+             {"cylinder", "foundation"},
+             {"contact surface", "load", "symmetry", "bottom", "cylinder surface",
+              "foundation surface", "foundation side"});
+  for (const auto &face : faces_of(mesh, "load"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][1], 100, 1e-12);
+  for (const auto &face : faces_of(mesh, "symmetry"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][0], 0, 1e-12);
+  for (const auto &face : faces_of(mesh, "bottom"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][1], -500, 1e-12);
+  for (const auto &face : faces_of(mesh, "foundation side"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][0], 500, 1e-12);
+  for (const auto &face : faces_of(mesh, "cylinder surface"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v].distance(Point<2>(0, 100)), 100, 1e-9);
+}
+
+
+
+// Pairs are found along the vertical, so both sides of the contact zone
+// must have vertices at the same x_i = i Lc / N.
+TEST(Hertz, ContactZoneVerticesMatchInX)
+{
+  const Parameters::Hertz hertz = parse("").hertz;
+  const auto              mesh  = geometry::make_hertz_mesh(hertz);
+  const unsigned int      n     = hertz.n_contact_zone_elements;
+  const double            lc    = hertz.contact_zone_width;
+  const std::set<Edge>    cylinder = cell_edges(mesh, 0);
+
+  std::set<unsigned int> arc_vertices, top_vertices;
+  unsigned int           n_arc_faces = 0;
+  for (const auto &face : faces_of(mesh, "contact surface"))
+    {
+      const bool on_arc = cylinder.count(edge(face.vertices[0], face.vertices[1]));
+      n_arc_faces += on_arc;
+      for (const unsigned int v : face.vertices)
+        (on_arc ? arc_vertices : top_vertices).insert(v);
+    }
+  EXPECT_EQ(n_arc_faces, n);
+  ASSERT_EQ(arc_vertices.size(), n + 1);
+  ASSERT_EQ(top_vertices.size(), n + 1);
+
+  const auto sorted_x = [&](const std::set<unsigned int> &vertices) {
+    std::vector<double> x;
+    for (const unsigned int v : vertices)
+      x.push_back(mesh.vertices[v][0]);
+    std::sort(x.begin(), x.end());
+    return x;
+  };
+  const std::vector<double> arc_x = sorted_x(arc_vertices), top_x = sorted_x(top_vertices);
+  for (unsigned int i = 0; i <= n; ++i)
+    {
+      EXPECT_NEAR(arc_x[i], top_x[i], 1e-12 * lc);
+      EXPECT_NEAR(arc_x[i], lc * i / n, 1e-12 * lc);
+    }
+  for (const unsigned int v : arc_vertices)
+    EXPECT_NEAR(mesh.vertices[v].distance(Point<2>(0, hertz.radius)),
+                hertz.radius, 1e-12 * hertz.radius);
+  for (const unsigned int v : top_vertices)
+    EXPECT_EQ(mesh.vertices[v][1], 0);
+  // The two blocks touch at the origin only, where they share the vertex.
+  EXPECT_EQ(*arc_vertices.begin(), *top_vertices.begin());
+}
+
+
+
+TEST(InclinedBlock, StructuredMeshOnThePlane)
+{
+  const Parameters::InclinedBlock block = parse("").inclined_block;
+  const auto                      mesh  = geometry::make_inclined_block_mesh(block);
+  check_mesh(mesh,
+             {"block", "foundation"},
+             {"sliding surface", "block surface", "foundation surface",
+              "foundation base", "foundation ends"});
+  // Element size 1 m x 1 m: 10 x 5 in the block, 20 x 5 in the foundation.
+  unsigned int n_block_cells = 0;
+  for (const auto &cell : mesh.cells)
+    {
+      n_block_cells += (cell.material_id == 0);
+      EXPECT_NEAR(measure(mesh, cell), 1, 1e-10);
+    }
+  EXPECT_EQ(n_block_cells, 50u);
+  EXPECT_EQ(mesh.cells.size(), 150u);
+
+  const double         angle = block.inclination * numbers::PI / 180;
+  const std::set<Edge> foundation = cell_edges(mesh, 1);
+  const auto           sliding    = faces_of(mesh, "sliding surface");
+  EXPECT_EQ(sliding.size(), 10u);
+  for (const auto &face : sliding)
+    {
+      EXPECT_TRUE(foundation.count(edge(face.vertices[0], face.vertices[1])));
+      for (const unsigned int v : face.vertices)
+        {
+          const Point<2> &p = mesh.vertices[v];
+          const double    s = p[0] * std::cos(angle) + p[1] * std::sin(angle);
+          EXPECT_NEAR(-p[0] * std::sin(angle) + p[1] * std::cos(angle), 0, 1e-10);
+          EXPECT_GT(s, -1e-10);
+          EXPECT_LT(s, block.block_length + 1e-10);
+        }
+    }
+}
+
+
+
+TEST(GmshFile, WrittenMeshReadsBack)
+{
+  const auto        mesh = geometry::make_slope_mesh(parse("").slope);
+  const std::string file = temporary_file(".msh");
+  geometry::write_gmsh_file(mesh, file);
+  const auto read = geometry::read_gmsh_file<2>(file);
+  std::filesystem::remove(file);
+  EXPECT_EQ(read.cells.size(), mesh.cells.size());
+  EXPECT_EQ(read.vertices.size(), mesh.vertices.size());
+  EXPECT_EQ(read.faces.size(), mesh.faces.size());
+  EXPECT_EQ(read.block_names, mesh.block_names);
+  EXPECT_EQ(read.face_group_names, mesh.face_group_names);
+  EXPECT_NEAR(block_area(read, 0), block_area(mesh, 0), 1e-12 * block_area(mesh, 0));
+}
+
+
+
+TEST(GmshFile, GeoFileIsMeshed)
+{
+  const auto mesh = geometry::read_gmsh_file<2>(data_directory + "/two_blocks.geo");
+  std::vector<std::string> groups = mesh.face_group_names;
+  std::sort(groups.begin(), groups.end());
+  EXPECT_EQ(mesh.block_names, (std::vector<std::string>{"left block", "block 7"}));
+  EXPECT_EQ(groups, (std::vector<std::string>{"bottom", "interface"}));
+  EXPECT_EQ(mesh.cells.size(), 32u);
+  EXPECT_EQ(mesh.vertices.size(), 45u);
+  EXPECT_EQ(faces_of(mesh, "interface").size(), 4u);
+  EXPECT_EQ(faces_of(mesh, "bottom").size(), 8u);
+  check_mesh(mesh, mesh.block_names, mesh.face_group_names);
+  EXPECT_NEAR(block_area(mesh, 0), 1, 1e-12);
+}
+
+
+
+TEST(GmshFile, Version2WithAClockwiseCell)
+{
+  const auto mesh = geometry::read_gmsh_file<2>(data_directory + "/two_quads_v2.msh");
+  check_mesh(mesh, {"rock"}, {"base"});
+  EXPECT_EQ(mesh.cells.size(), 2u);
+  EXPECT_EQ(mesh.vertices.size(), 6u);
+}
+
+
+
+TEST(GmshFile, BinaryFilesOfBothVersions)
+{
+  for (const double version : {2.2, 4.1})
+    {
+      const std::string file = temporary_file(".msh");
+      {
+        geometry::GmshSession session;
+        gmsh::open(data_directory + "/two_blocks.geo");
+        gmsh::model::mesh::generate(2);
+        gmsh::option::setNumber("Mesh.Binary", 1);
+        gmsh::option::setNumber("Mesh.MshFileVersion", version);
+        gmsh::write(file);
+      }
+      const auto mesh = geometry::read_gmsh_file<2>(file);
+      std::filesystem::remove(file);
+      EXPECT_EQ(mesh.cells.size(), 32u) << "version " << version;
+      EXPECT_EQ(mesh.faces.size(), 12u) << "version " << version;
+    }
+}
+
+
+
+TEST(GmshFile, HexahedraIn3D)
+{
+  const auto mesh = geometry::read_gmsh_file<3>(data_directory + "/box.geo");
+  EXPECT_EQ(mesh.block_names, std::vector<std::string>{"box"});
+  EXPECT_EQ(mesh.cells.size(), 8u);
+  EXPECT_EQ(mesh.vertices.size(), 27u);
+  EXPECT_EQ(mesh.faces.size(), 8u);
+  double volume = 0;
+  for (const auto &cell : mesh.cells)
+    {
+      EXPECT_GT(measure(mesh, cell), 0);
+      volume += measure(mesh, cell);
+    }
+  EXPECT_NEAR(volume, 1, 1e-12);
+  for (const auto &face : mesh.faces)
+    {
+      const double z = (mesh.face_group_names[face.boundary_id] == "base") ? 0 : 1;
+      for (const unsigned int v : face.vertices)
+        EXPECT_EQ(mesh.vertices[v][2], z);
+    }
+  Triangulation<3> triangulation;
+  EXPECT_NO_THROW(
+    triangulation.create_triangulation(mesh.vertices, mesh.cells, SubCellData()));
+}
+
+
+
+TEST(GmshFile, HigherOrderElementsGiveTheirCorners)
+{
+  geometry::GmshSession session;
+  gmsh::open(data_directory + "/two_blocks.geo");
+  gmsh::model::mesh::generate(2);
+  gmsh::model::mesh::setOrder(2);
+  const auto mesh = geometry::extract_current_gmsh_model<2>("quadratic");
+  EXPECT_EQ(mesh.cells.size(), 32u);
+  EXPECT_EQ(mesh.vertices.size(), 45u);
+  EXPECT_EQ(mesh.faces.size(), 12u);
+  EXPECT_NEAR(block_area(mesh, 0) + block_area(mesh, 1), 2, 1e-12);
+}
+
+
+
+TEST(GmshFile, CellInTwoBlocksIsRejected)
+{
+  geometry::GmshSession session;
+  gmsh::model::add("overlap");
+  const int surface = gmsh::model::addDiscreteEntity(2);
+  gmsh::model::mesh::addNodes(
+    2, surface, {1, 2, 3, 4}, {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+  gmsh::model::mesh::addElementsByType(surface, 3, {1}, {1, 2, 3, 4});
+  gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}), "a");
+  gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}), "b");
+  expect_error([] { geometry::extract_current_gmsh_model<2>("overlap"); },
+               "overlap: element 1 belongs to two blocks, 'a' and 'b'.");
+}
+
+
+
+TEST(GmshFile, Errors)
+{
+  const std::string missing = data_directory + "/does_not_exist.msh";
+  expect_error([&] { geometry::read_gmsh_file<2>(missing); },
+               "Gmsh file '" + missing + "': is missing or cannot be read.");
+  expect_error([] { geometry::read_gmsh_file<2>(data_directory + "/triangles.geo"); },
+               "has elements that are not quadrilaterals; mesh with Recombine");
+  expect_error([] { geometry::read_gmsh_file<2>(data_directory + "/no_groups.geo"); },
+               "no_groups.geo': there is no physical group of dimension 2");
+  expect_error([] { geometry::read_gmsh_file<3>(data_directory + "/two_blocks.geo"); },
+               "the model is 2-dimensional, but a 3-dimensional mesh was asked for");
+  expect_error([] { geometry::read_gmsh_file<2>(data_directory + "/box.geo"); },
+               "the model is 3-dimensional, but a 2-dimensional mesh was asked for");
+  expect_error([] { geometry::read_gmsh_file<2>(data_directory + "/twisted_quad_v2.msh"); },
+               "of block 'rock' near (0 0) is degenerate or twisted");
+  expect_error([] { geometry::read_gmsh_file<2>(data_directory + "/syntax_error.geo"); },
+               "Gmsh could not read '" + data_directory + "/syntax_error.geo': Unknown");
+  // Gmsh stays locked after an error inside a file; a new session recovers.
+  EXPECT_EQ(geometry::read_gmsh_file<2>(data_directory + "/two_blocks.geo").cells.size(),
+            32u);
+  expect_error([] { geometry::GmshSession first, second; },
+               "Only one GmshSession may exist at a time");
+}
+
+
+
+TEST(Transform, RotationScaleAndTranslationIn2D)
+{
+  const auto reference = geometry::make_mesh<2>(parse("set Source = inclined block"), "", "");
+  const auto moved     = geometry::make_mesh<2>(
+    parse("set Source = inclined block\nset Scale factor = 2\n"
+          "set Rotation angle = 30\nset Translation = 1, -2"),
+    "",
+    "");
+  ASSERT_EQ(moved.vertices.size(), reference.vertices.size());
+  const double c = std::cos(numbers::PI / 6), s = std::sin(numbers::PI / 6);
+  for (unsigned int v = 0; v < reference.vertices.size(); ++v)
+    {
+      const Point<2> &x = reference.vertices[v];
+      const Point<2>  expected(2 * (c * x[0] - s * x[1]) + 1,
+                              2 * (s * x[0] + c * x[1]) - 2);
+      EXPECT_LT(moved.vertices[v].distance(expected), 1e-12 * 30);
+    }
+  for (unsigned int i = 0; i < moved.cells.size(); ++i)
+    EXPECT_NEAR(measure(moved, moved.cells[i]), 4 * measure(reference, reference.cells[i]),
+                1e-12);
+}
+
+
+
+TEST(Transform, RotationAboutAnAxisIn3D)
+{
+  // 120 degrees about (1, 1, 1) maps x to y, y to z, z to x.
+  MeshDescription<3> mesh;
+  mesh.vertices = {Point<3>(1, 2, 3), Point<3>(-4, 0.5, 7)};
+  geometry::apply_transformation(
+    parse("set Rotation axis = 1, 1, 1\nset Rotation angle = 120\n"
+          "set Translation = 0, 0, 10"),
+    mesh);
+  EXPECT_LT(mesh.vertices[0].distance(Point<3>(3, 1, 12)), 1e-14 * 20);
+  EXPECT_LT(mesh.vertices[1].distance(Point<3>(7, -4, 10.5)), 1e-14 * 20);
+}
+
+
+
+TEST(MakeMesh, MeshFileRelativeToThePrmDirectoryAndOutput)
+{
+  const std::string output = temporary_file(".msh");
+  const auto        mesh   = geometry::make_mesh<2>(
+    parse("set Source = mesh file\nset Mesh file = two_blocks.geo"),
+    data_directory,
+    output);
+  EXPECT_EQ(mesh.cells.size(), 32u);
+  EXPECT_EQ(geometry::read_gmsh_file<2>(output).cells.size(), 32u);
+  std::filesystem::remove(output);
+}
+
+
+
+TEST(MakeMesh, Errors)
+{
+  expect_error([] { geometry::make_mesh<3>(parse(""), "", ""); },
+               "Geometry/Source: the built-in generators (slope, hertz, inclined "
+               "block) are 2D only for now");
+  expect_error([] { geometry::make_mesh<2>(parse("set Source = inclined block\n"
+                                                 "set Translation = 0, 0, 1"),
+                                           "",
+                                           ""); },
+               "Geometry/Translation: a 2D model has no z component");
+}
+
+
+
+TEST(Parameters, ValidationMessages)
+{
+  expect_error([] { parse("subsection Slope\n set Base elevation = 30\nend"); },
+               "Geometry/Slope/Base elevation: must lie below every point of the "
+               "ground surface.");
+  expect_error([] { parse("subsection Slope\n set Ground surface = 0,25; 0,30\nend"); },
+               "Geometry/Slope/Ground surface: the x coordinates must increase");
+  expect_error([] { parse("subsection Slope\n set Sliding surface = polyline\nend"); },
+               "Geometry/Slope/Sliding surface polyline: needs at least two points");
+  expect_error([] { parse("subsection Slope\n set Sliding surface = polyline\n"
+                          " set Sliding surface polyline = 5,20; 45,40\nend"); },
+               "Geometry/Slope/Sliding surface polyline: its first and last points");
+  expect_error([] { parse("set Source = hertz\nsubsection Hertz\n"
+                          " set Contact zone width = 150\nend"); },
+               "Geometry/Hertz/Contact zone width: must be positive and smaller");
+  expect_error([] { parse("set Source = hertz\nsubsection Hertz\n"
+                          " set Elements in contact zone = 61\nend"); },
+               "Geometry/Hertz/Elements in contact zone: must be even");
+  expect_error([] { parse("set Source = mesh file"); },
+               "Geometry/Mesh file: must be given");
+  expect_error([] { parse("set Scale factor = 0"); }, "Geometry/Scale factor: must be positive.");
+  // Only the selected source is validated.
+  EXPECT_NO_THROW(parse("set Source = hertz\nsubsection Slope\n set Base elevation = 30\nend"));
+}
+
+
+
+TEST(Parameters, MeshFilePath)
+{
+  Parameters geometry = parse("set Source = mesh file\nset Mesh file = meshes/a.msh");
+  EXPECT_EQ(geometry.mesh_file_path("/work/case"), "/work/case/meshes/a.msh");
+  EXPECT_EQ(geometry.mesh_file_path(""), "meshes/a.msh");
+  geometry.mesh_file = "/data/b.msh";
+  EXPECT_EQ(geometry.mesh_file_path("/work/case"), "/data/b.msh");
+}

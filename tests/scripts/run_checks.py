@@ -1,0 +1,131 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Checks that run the fdem-slope executable as a user would.
+
+  run_checks.py vtu EXE CASE.prm         run the case; read every VTU file of
+                                         its PVD back with VTK and check fields
+  run_checks.py parameters-doc EXE DOC.md [--write]
+                                         doc/parameters.md must be what
+                                         --print-parameters prints (--write
+                                         regenerates it)
+  run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
+                                         stderr containing the text of the
+                                         file's '# expect:' line, a non-zero
+                                         exit, and no summary.json
+
+Placeholders in a .prm: @PRM_DIR@ (the project's prm/ folder) and @DATA_DIR@
+(the .prm file's own data/ folder) become absolute paths; the case runs in a
+fresh temporary folder.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+PRM_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "prm")
+
+
+def prepare(prm, workdir):
+    """Copies prm into workdir with placeholders filled; returns the copy."""
+    text = open(prm).read()
+    text = text.replace("@PRM_DIR@", os.path.abspath(PRM_DIR))
+    text = text.replace("@DATA_DIR@", os.path.join(os.path.dirname(os.path.abspath(prm)), "data"))
+    copy = os.path.join(workdir, os.path.basename(prm))
+    with open(copy, "w") as f:
+        f.write(text)
+    return copy
+
+
+def run(exe, prm, workdir):
+    return subprocess.run([exe, prepare(prm, workdir)], cwd=workdir,
+                          capture_output=True, text=True, timeout=600)
+
+
+def check_vtu(exe, prm):
+    import vtk  # Debian's python3-vtk9
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    with tempfile.TemporaryDirectory() as workdir:
+        result = run(exe, prm, workdir)
+        assert result.returncode == 0, result.stderr
+        case = os.path.splitext(os.path.basename(prm))[0]
+        out = os.path.join(workdir, case + "-output")
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        assert summary["status"] == "completed"
+
+        reader = vtk.vtkPVDReader() if hasattr(vtk, "vtkPVDReader") else None
+        pvd = open(os.path.join(out, "solution.pvd")).read()
+        files = [part.split('"')[0] for part in pvd.split('file="')[1:]]
+        expected_blocks = {b["name"] for b in summary["blocks"]}
+        expected_interfaces = {i["name"] for i in summary["interfaces"]}
+        assert len(files) == len(expected_blocks) + len(expected_interfaces), files
+        block_fields = ["displacement", "stress", "stress_zz", "block_id"]
+        interface_fields = ["normal_force", "tangential_force", "normal_pressure",
+                            "shear_stress", "gap", "slip", "status"]
+        for name in files:
+            r = vtk.vtkXMLUnstructuredGridReader()
+            r.SetFileName(os.path.join(out, name))
+            r.Update()
+            grid = r.GetOutput()
+            assert grid.GetNumberOfPoints() > 0 and grid.GetNumberOfCells() > 0, name
+            fields = block_fields if name.startswith("block-") else interface_fields
+            data = grid.GetPointData()
+            for field in fields:
+                array = data.GetArray(field)
+                assert array is not None, f"{name}: no field '{field}'"
+                values = vtk_to_numpy(array)
+                assert values.size > 0 and all(math.isfinite(v) for v in values.ravel()), \
+                    f"{name}: '{field}' is empty or not finite"
+            print(f"{name}: {grid.GetNumberOfPoints()} points, fields {', '.join(fields)}")
+        # The interface VTU carries the same normal forces as the CSV table.
+        rows = open(os.path.join(out, "interfaces.csv")).read().splitlines()
+        csv_total = sum(float(r.split(",")[4]) for r in rows[1:])
+        json_total = sum(i["total_normal_force"] for i in summary["interfaces"])
+        assert abs(csv_total - json_total) <= 1e-9 * abs(json_total), (csv_total, json_total)
+        del reader
+
+
+def check_bad_input(exe, prm):
+    expect = None
+    for line in open(prm):
+        if line.startswith("# expect:"):
+            expect = line[len("# expect:"):].strip()
+    assert expect, f"{prm} has no '# expect:' line"
+    with tempfile.TemporaryDirectory() as workdir:
+        result = run(exe, prm, workdir)
+        lines = result.stderr.strip().splitlines()
+        print("stderr:", result.stderr.strip())
+        assert result.returncode != 0, "the run did not fail"
+        assert result.returncode < 128, f"the run crashed (exit {result.returncode})"
+        assert len(lines) == 1, f"expected one line on stderr, got {len(lines)}"
+        assert lines[0].startswith("fdem-slope: error: "), lines[0]
+        assert expect in lines[0], f"'{expect}' not in the message"
+        for root, _, files in os.walk(workdir):
+            assert "summary.json" not in files, "a summary.json was written"
+
+
+def parameters_doc(exe, doc, write=False):
+    listing = subprocess.run([exe, "--print-parameters"], capture_output=True,
+                             text=True, check=True).stdout
+    text = ("# Parameters\n\n"
+            "Generated by `fdem-slope --print-parameters` (the default case, "
+            "prm/paper_slope.prm's block, boundary and interface names); do not "
+            "edit by hand: run `tests/scripts/run_checks.py parameters-doc "
+            "build/fdem-slope doc/parameters.md --write`.\n\n"
+            "Blocks, boundaries and interfaces get one subsection per name listed "
+            "in their `Names` entry. Units are the model's own (e.g. kN, m, kPa).\n\n"
+            "```\n" + listing + "```\n")
+    if write:
+        open(doc, "w").write(text)
+    assert open(doc).read() == text, f"{doc} is out of date: regenerate it (--write)"
+
+
+if __name__ == "__main__":
+    command, exe, path = sys.argv[1:4]
+    if command == "parameters-doc":
+        parameters_doc(exe, path, "--write" in sys.argv)
+    else:
+        {"vtu": check_vtu, "bad-input": check_bad_input}[command](exe, path)
+    print("passed")
