@@ -175,14 +175,32 @@ namespace fdem
     }
 
     template <int dim>
+    ElasticBlock<dim>::CellScratch::CellScratch(const Mapping<dim> &       mapping,
+                                                const FiniteElement<dim> &fe)
+      : fe_values(mapping,
+                  fe,
+                  QGauss<dim>(fe.degree + 1),
+                  update_values | update_gradients | update_JxW_values)
+      , fe_face_values(mapping,
+                       fe,
+                       QGauss<dim - 1>(fe.degree + 2),
+                       update_values | update_normal_vectors |
+                         update_quadrature_points | update_JxW_values)
+      , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+      , rhs(fe.n_dofs_per_cell())
+      , dofs(fe.n_dofs_per_cell())
+    {}
+
+    template <int dim>
     void
     ElasticBlock<dim>::assemble_cell(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
-      FEValues<dim> &                                       fe_values,
-      FEFaceValues<dim> &                                   fe_face_values,
-      FullMatrix<double> &                                  cell_matrix,
-      Vector<double> &                                      cell_rhs) const
+      CellScratch &                                         scratch) const
     {
+      FEValues<dim> &     fe_values      = scratch.fe_values;
+      FEFaceValues<dim> & fe_face_values = scratch.fe_face_values;
+      FullMatrix<double> &cell_matrix    = scratch.matrix;
+      Vector<double> &    cell_rhs       = scratch.rhs;
       const parameters::MaterialParameters &material =
         materials.at(cell->material_id());
       const double E = material.youngs_modulus, nu = material.poissons_ratio;
@@ -250,27 +268,15 @@ namespace fdem
       stiffness_matrix.reinit(dsp);
       load_vector.reinit(dof_handler.n_dofs());
 
-      const unsigned int degree = fe.degree;
-      FEValues<dim>      fe_values(mapping,
-                              fe,
-                              QGauss<dim>(degree + 1),
-                              update_values | update_gradients |
-                                update_JxW_values);
-      FEFaceValues<dim>  fe_face_values(mapping,
-                                       fe,
-                                       QGauss<dim - 1>(degree + 2),
-                                       update_values | update_normal_vectors |
-                                         update_quadrature_points |
-                                         update_JxW_values);
-      FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
-      Vector<double>     cell_rhs(fe.n_dofs_per_cell());
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      CellScratch scratch(mapping, fe);
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
-          assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_rhs);
-          cell->get_dof_indices(dofs);
-          constraints.distribute_local_to_global(cell_matrix, dofs, stiffness_matrix);
-          load_vector.add(dofs, cell_rhs);
+          assemble_cell(cell, scratch);
+          cell->get_dof_indices(scratch.dofs);
+          constraints.distribute_local_to_global(scratch.matrix,
+                                                 scratch.dofs,
+                                                 stiffness_matrix);
+          load_vector.add(scratch.dofs, scratch.rhs);
         }
       stiffness_matrix.compress(VectorOperation::add);
 
@@ -382,34 +388,20 @@ namespace fdem
     ElasticBlock<dim>::nodal_residual(const Vector<double> &u,
                                       const unsigned int    material_id) const
     {
-      Vector<double>     residual(dof_handler.n_dofs());
-      const unsigned int degree = fe.degree;
-      FEValues<dim>      fe_values(mapping,
-                              fe,
-                              QGauss<dim>(degree + 1),
-                              update_values | update_gradients |
-                                update_JxW_values);
-      FEFaceValues<dim>  fe_face_values(mapping,
-                                       fe,
-                                       QGauss<dim - 1>(degree + 2),
-                                       update_values | update_normal_vectors |
-                                         update_quadrature_points |
-                                         update_JxW_values);
-      FullMatrix<double> cell_matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell());
-      Vector<double>     cell_rhs(fe.n_dofs_per_cell()), cell_u(fe.n_dofs_per_cell()),
-        cell_residual(fe.n_dofs_per_cell());
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      Vector<double> residual(dof_handler.n_dofs());
+      CellScratch    scratch(mapping, fe);
+      Vector<double> cell_u(fe.n_dofs_per_cell()), cell_residual(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (material_id == numbers::invalid_unsigned_int ||
             cell->material_id() == material_id)
           {
-            assemble_cell(cell, fe_values, fe_face_values, cell_matrix, cell_rhs);
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              cell_u[i] = u[dofs[i]];
-            cell_matrix.vmult(cell_residual, cell_u);
-            cell_residual -= cell_rhs;
-            residual.add(dofs, cell_residual);
+            assemble_cell(cell, scratch);
+            cell->get_dof_indices(scratch.dofs);
+            for (unsigned int i = 0; i < scratch.dofs.size(); ++i)
+              cell_u[i] = u[scratch.dofs[i]];
+            scratch.matrix.vmult(cell_residual, cell_u);
+            cell_residual -= scratch.rhs;
+            residual.add(scratch.dofs, cell_residual);
           }
       return residual;
     }

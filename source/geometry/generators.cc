@@ -57,7 +57,9 @@ namespace fdem
         field::setNumber(threshold, "SizeMin", near);
         field::setNumber(threshold, "SizeMax", far);
         field::setNumber(threshold, "DistMin", 0.5 * near);
-        field::setNumber(threshold, "DistMax", 0.5 * near + std::abs(far - near) / growth);
+        field::setNumber(threshold,
+                         "DistMax",
+                         0.5 * near + std::abs(far - near) / growth);
         field::setAsBackgroundMesh(threshold);
         // Only the field decides, not the points or the curvature.
         gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -90,8 +92,9 @@ namespace fdem
         for (const Point<2> &corner : corners)
           points.push_back(gmsh::model::occ::addPoint(corner[0], corner[1], 0));
         for (unsigned int i = 0; i < points.size(); ++i)
-          lines.push_back(gmsh::model::occ::addLine(points[i],
-                                                    points[(i + 1) % points.size()]));
+          lines.push_back(
+            gmsh::model::occ::addLine(points[i],
+                                      points[(i + 1) % points.size()]));
         return gmsh::model::occ::addPlaneSurface(
           {gmsh::model::occ::addCurveLoop(lines)});
       }
@@ -114,7 +117,7 @@ namespace fdem
     MeshDescription<2>
     make_slope_mesh(const parameters::GeometryParameters::Slope &slope)
     {
-      using Parameters = parameters::GeometryParameters;
+      using Parameters       = parameters::GeometryParameters;
       const std::string name = "Geometry/Slope";
       const std::string not_separated =
         name + ": the sliding surface does not separate a sliding mass from "
@@ -166,8 +169,9 @@ namespace fdem
         gmsh::model::occ::synchronize();
         AssertThrow(pieces.size() == 2 && origin[1].size() == 1,
                     ExcMessage(not_separated));
-        mass       = origin[1][0].second;
-        foundation = (pieces[0].second == mass) ? pieces[1].second : pieces[0].second;
+        mass = origin[1][0].second;
+        foundation =
+          (pieces[0].second == mass) ? pieces[1].second : pieces[0].second;
       });
 
       // Curves on both parts form the sliding surface; the outer boundary is
@@ -175,14 +179,19 @@ namespace fdem
       const std::vector<int> mass_curves       = boundary_curves(mass);
       const std::vector<int> foundation_curves = boundary_curves(foundation);
       std::vector<int>       sliding, outer, ground_curves, left, right, bottom;
-      std::set_intersection(mass_curves.begin(), mass_curves.end(),
-                            foundation_curves.begin(), foundation_curves.end(),
+      std::set_intersection(mass_curves.begin(),
+                            mass_curves.end(),
+                            foundation_curves.begin(),
+                            foundation_curves.end(),
                             std::back_inserter(sliding));
-      std::set_symmetric_difference(mass_curves.begin(), mass_curves.end(),
-                                    foundation_curves.begin(), foundation_curves.end(),
+      std::set_symmetric_difference(mass_curves.begin(),
+                                    mass_curves.end(),
+                                    foundation_curves.begin(),
+                                    foundation_curves.end(),
                                     std::back_inserter(outer));
-      const double tolerance = 1e-6 * (x_max - x_min + y_max - slope.base_elevation);
-      bool         mass_on_ground = false;
+      const double tolerance =
+        1e-6 * (x_max - x_min + y_max - slope.base_elevation);
+      bool mass_on_ground = false;
       for (const int curve : outer)
         {
           double x0, y0, z0, x1, y1, z1;
@@ -197,10 +206,12 @@ namespace fdem
             {
               ground_curves.push_back(curve);
               mass_on_ground |= std::binary_search(mass_curves.begin(),
-                                                   mass_curves.end(), curve);
+                                                   mass_curves.end(),
+                                                   curve);
             }
         }
-      AssertThrow(!sliding.empty() && mass_on_ground, ExcMessage(not_separated));
+      AssertThrow(!sliding.empty() && mass_on_ground,
+                  ExcMessage(not_separated));
 
       add_group(2, {mass}, "sliding mass");
       add_group(2, {foundation}, "foundation");
@@ -211,7 +222,9 @@ namespace fdem
       add_group(1, bottom, "bottom");
 
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
-        set_size_field(sliding, slope.mesh_size_on_sliding_surface, slope.mesh_size);
+        set_size_field(sliding,
+                       slope.mesh_size_on_sliding_surface,
+                       slope.mesh_size);
         set_unstructured_quad_options();
         gmsh::model::mesh::generate(2);
       });
@@ -224,98 +237,121 @@ namespace fdem
     make_hertz_mesh(const parameters::GeometryParameters::Hertz &hertz)
     {
       namespace geo           = gmsh::model::geo;
-      const std::string name  = "Geometry/Hertz";
-      const double      r     = hertz.radius;
+      const std::string  name = "Geometry/Hertz";
+      const double       r    = hertz.radius;
       const unsigned int n    = hertz.n_contact_zone_elements;
-      GmshSession       session;
+      GmshSession        session;
       gmsh::model::add("hertz");
 
       std::vector<int> contact_curves;
-      GmshSession::run(name + ": Gmsh could not build or mesh the model", [&]() {
-        const auto point = [](const double x, const double y) {
-          return geo::addPoint(x, y, 0);
-        };
-        // The contact zone: x_i = i Lc / N on both sides. Gmsh meshes with
-        // one segment between geometry points at the even x_i and subdivides
-        // it at its parametric middle (on the arc not at x_{2k+1}), so all
-        // nodes of the zone are put at x_i afterwards. The origin is shared.
-        const auto contact_x = [&](const long i) {
-          return hertz.contact_zone_width * i / n;
-        };
-        const auto arc_y = [&](const double x) { return r - std::sqrt(r * r - x * x); };
-        const int        origin = point(0, 0);
-        const int        centre = point(0, r);
-        std::vector<int> arc_points = {origin}, top_points = {origin};
-        for (unsigned int i = 2; i <= n; i += 2)
-          {
-            arc_points.push_back(point(contact_x(i), arc_y(contact_x(i))));
-            top_points.push_back(point(contact_x(i), 0));
-          }
-        std::vector<int> arc_loop, top_loop;
-        for (unsigned int k = 0; k < n / 2; ++k)
-          {
-            arc_loop.push_back(
-              geo::addCircleArc(arc_points[k], centre, arc_points[k + 1]));
-            top_loop.push_back(geo::addLine(top_points[k], top_points[k + 1]));
-          }
-        const std::vector<int> contact_arcs = arc_loop, contact_lines = top_loop;
-        contact_curves = contact_arcs;
-        contact_curves.insert(contact_curves.end(), top_loop.begin(), top_loop.end());
+      GmshSession::run(
+        name + ": Gmsh could not build or mesh the model", [&]() {
+          const auto point = [](const double x, const double y) {
+            return geo::addPoint(x, y, 0);
+          };
+          // The contact zone: x_i = i Lc / N on both sides. Gmsh meshes with
+          // one segment between geometry points at the even x_i and subdivides
+          // it at its parametric middle (on the arc not at x_{2k+1}), so all
+          // nodes of the zone are put at x_i afterwards. The origin is shared.
+          const auto contact_x = [&](const long i) {
+            return hertz.contact_zone_width * i / n;
+          };
+          const auto arc_y = [&](const double x) {
+            return r - std::sqrt(r * r - x * x);
+          };
+          const int        origin     = point(0, 0);
+          const int        centre     = point(0, r);
+          std::vector<int> arc_points = {origin}, top_points = {origin};
+          for (unsigned int i = 2; i <= n; i += 2)
+            {
+              arc_points.push_back(point(contact_x(i), arc_y(contact_x(i))));
+              top_points.push_back(point(contact_x(i), 0));
+            }
+          std::vector<int> arc_loop, top_loop;
+          for (unsigned int k = 0; k < n / 2; ++k)
+            {
+              arc_loop.push_back(
+                geo::addCircleArc(arc_points[k], centre, arc_points[k + 1]));
+              top_loop.push_back(
+                geo::addLine(top_points[k], top_points[k + 1]));
+            }
+          const std::vector<int> contact_arcs  = arc_loop,
+                                 contact_lines = top_loop;
+          contact_curves                       = contact_arcs;
+          contact_curves.insert(contact_curves.end(),
+                                top_loop.begin(),
+                                top_loop.end());
 
-        // Cylinder: arc up to (r, r), top back to the centre, axis down.
-        const int arc_end          = point(r, r);
-        const int cylinder_surface =
-          geo::addCircleArc(arc_points.back(), centre, arc_end);
-        const int load             = geo::addLine(arc_end, centre);
-        const int cylinder_axis    = geo::addLine(centre, origin);
-        arc_loop.insert(arc_loop.end(), {cylinder_surface, load, cylinder_axis});
-        const int cylinder = geo::addPlaneSurface({geo::addCurveLoop(arc_loop)});
+          // Cylinder: arc up to (r, r), top back to the centre, axis down.
+          const int arc_end = point(r, r);
+          const int cylinder_surface =
+            geo::addCircleArc(arc_points.back(), centre, arc_end);
+          const int load          = geo::addLine(arc_end, centre);
+          const int cylinder_axis = geo::addLine(centre, origin);
+          arc_loop.insert(arc_loop.end(),
+                          {cylinder_surface, load, cylinder_axis});
+          const int cylinder =
+            geo::addPlaneSurface({geo::addCurveLoop(arc_loop)});
 
-        // Foundation: top to the right, side, bottom, axis up.
-        const int top_end            = point(hertz.foundation_width, 0);
-        const int bottom_end         = point(hertz.foundation_width, -hertz.foundation_depth);
-        const int bottom_start       = point(0, -hertz.foundation_depth);
-        const int foundation_surface = geo::addLine(top_points.back(), top_end);
-        const int foundation_side    = geo::addLine(top_end, bottom_end);
-        const int bottom             = geo::addLine(bottom_end, bottom_start);
-        const int foundation_axis    = geo::addLine(bottom_start, origin);
-        top_loop.insert(top_loop.end(),
-                        {foundation_surface, foundation_side, bottom, foundation_axis});
-        const int foundation = geo::addPlaneSurface({geo::addCurveLoop(top_loop)});
-        geo::synchronize();
+          // Foundation: top to the right, side, bottom, axis up.
+          const int top_end = point(hertz.foundation_width, 0);
+          const int bottom_end =
+            point(hertz.foundation_width, -hertz.foundation_depth);
+          const int bottom_start = point(0, -hertz.foundation_depth);
+          const int foundation_surface =
+            geo::addLine(top_points.back(), top_end);
+          const int foundation_side = geo::addLine(top_end, bottom_end);
+          const int bottom          = geo::addLine(bottom_end, bottom_start);
+          const int foundation_axis = geo::addLine(bottom_start, origin);
+          top_loop.insert(
+            top_loop.end(),
+            {foundation_surface, foundation_side, bottom, foundation_axis});
+          const int foundation =
+            geo::addPlaneSurface({geo::addCurveLoop(top_loop)});
+          geo::synchronize();
 
-        for (const int curve : contact_curves)
-          gmsh::model::mesh::setTransfiniteCurve(curve, 2);
+          for (const int curve : contact_curves)
+            gmsh::model::mesh::setTransfiniteCurve(curve, 2);
 
-        add_group(2, {cylinder}, "cylinder");
-        add_group(2, {foundation}, "foundation");
-        add_group(1, contact_curves, "contact surface");
-        add_group(1, {load}, "load");
-        add_group(1, {cylinder_axis, foundation_axis}, "symmetry");
-        add_group(1, {bottom}, "bottom");
-        add_group(1, {cylinder_surface}, "cylinder surface");
-        add_group(1, {foundation_surface}, "foundation surface");
-        add_group(1, {foundation_side}, "foundation side");
+          add_group(2, {cylinder}, "cylinder");
+          add_group(2, {foundation}, "foundation");
+          add_group(1, contact_curves, "contact surface");
+          add_group(1, {load}, "load");
+          add_group(1, {cylinder_axis, foundation_axis}, "symmetry");
+          add_group(1, {bottom}, "bottom");
+          add_group(1, {cylinder_surface}, "cylinder surface");
+          add_group(1, {foundation_surface}, "foundation surface");
+          add_group(1, {foundation_side}, "foundation side");
 
-        set_size_field(contact_curves, hertz.contact_zone_width / n, hertz.mesh_size);
-        set_unstructured_quad_options();
-        gmsh::model::mesh::generate(2);
+          set_size_field(contact_curves,
+                         hertz.contact_zone_width / n,
+                         hertz.mesh_size);
+          set_unstructured_quad_options();
+          gmsh::model::mesh::generate(2);
 
-        for (const int curve : contact_curves)
-          {
-            const bool on_arc = std::count(contact_arcs.begin(), contact_arcs.end(), curve);
-            std::vector<std::size_t> nodes;
-            std::vector<double>      coordinates, parametric_coordinates;
-            gmsh::model::mesh::getNodes(
-              nodes, coordinates, parametric_coordinates, 1, curve, true, false);
-            for (unsigned int j = 0; j < nodes.size(); ++j)
-              {
-                const double x = contact_x(
-                  std::lround(coordinates[3 * j] / hertz.contact_zone_width * n));
-                gmsh::model::mesh::setNode(nodes[j], {x, on_arc ? arc_y(x) : 0, 0}, {});
-              }
-          }
-      });
+          for (const int curve : contact_curves)
+            {
+              const bool on_arc =
+                std::count(contact_arcs.begin(), contact_arcs.end(), curve);
+              std::vector<std::size_t> nodes;
+              std::vector<double>      coordinates, parametric_coordinates;
+              gmsh::model::mesh::getNodes(nodes,
+                                          coordinates,
+                                          parametric_coordinates,
+                                          1,
+                                          curve,
+                                          true,
+                                          false);
+              for (unsigned int j = 0; j < nodes.size(); ++j)
+                {
+                  const double x = contact_x(std::lround(
+                    coordinates[3 * j] / hertz.contact_zone_width * n));
+                  gmsh::model::mesh::setNode(nodes[j],
+                                             {x, on_arc ? arc_y(x) : 0, 0},
+                                             {});
+                }
+            }
+        });
       return extract_current_gmsh_model<2>(name);
     }
 
@@ -325,79 +361,91 @@ namespace fdem
     make_inclined_block_mesh(
       const parameters::GeometryParameters::InclinedBlock &inclined_block)
     {
-      namespace geo          = gmsh::model::geo;
-      const std::string name = "Geometry/Inclined block";
-      const double      angle = inclined_block.inclination * numbers::PI / 180;
-      const double      length   = inclined_block.block_length;
-      const double      height   = inclined_block.block_height;
-      const double      overhang = inclined_block.foundation_overhang;
+      namespace geo            = gmsh::model::geo;
+      const std::string name   = "Geometry/Inclined block";
+      const double      angle  = inclined_block.inclination * numbers::PI / 180;
+      const double      length = inclined_block.block_length;
+      const double      height = inclined_block.block_height;
+      const double      overhang  = inclined_block.foundation_overhang;
       const double      thickness = inclined_block.foundation_thickness;
       // The foundation gets elements of the block's size.
       const unsigned int n_along  = inclined_block.n_elements_along_length;
       const unsigned int n_across = inclined_block.n_elements_across_height;
-      const unsigned int n_overhang = std::max<long>(
-        1, std::lround(overhang / (length / n_along)));
-      const unsigned int n_thickness = std::max<long>(
-        1, std::lround(thickness / (height / n_across)));
+      const unsigned int n_overhang =
+        std::max<long>(1, std::lround(overhang / (length / n_along)));
+      const unsigned int n_thickness =
+        std::max<long>(1, std::lround(thickness / (height / n_across)));
 
       GmshSession session;
       gmsh::model::add("inclined block");
-      GmshSession::run(name + ": Gmsh could not build or mesh the model", [&]() {
-        // (s, n): coordinates along and normal to the plane.
-        const auto point = [&](const double s, const double n) {
-          return geo::addPoint(s * std::cos(angle) - n * std::sin(angle),
-                               s * std::sin(angle) + n * std::cos(angle),
-                               0);
-        };
-        const auto line = [](const int from, const int to, const unsigned int n_elements) {
-          const int tag = geo::addLine(from, to);
-          geo::mesh::setTransfiniteCurve(tag, n_elements + 1);
-          return tag;
-        };
-        const auto quadrilateral = [](const std::vector<int> &curves) {
-          const int tag = geo::addPlaneSurface({geo::addCurveLoop(curves)});
-          geo::mesh::setTransfiniteSurface(tag);
-          geo::mesh::setRecombine(2, tag);
-          return tag;
-        };
+      GmshSession::run(
+        name + ": Gmsh could not build or mesh the model", [&]() {
+          // (s, n): coordinates along and normal to the plane.
+          const auto point = [&](const double s, const double n) {
+            return geo::addPoint(s * std::cos(angle) - n * std::sin(angle),
+                                 s * std::sin(angle) + n * std::cos(angle),
+                                 0);
+          };
+          const auto line =
+            [](const int from, const int to, const unsigned int n_elements) {
+              const int tag = geo::addLine(from, to);
+              geo::mesh::setTransfiniteCurve(tag, n_elements + 1);
+              return tag;
+            };
+          const auto quadrilateral = [](const std::vector<int> &curves) {
+            const int tag = geo::addPlaneSurface({geo::addCurveLoop(curves)});
+            geo::mesh::setTransfiniteSurface(tag);
+            geo::mesh::setRecombine(2, tag);
+            return tag;
+          };
 
-        // Foundation top and base, split at the ends of the block.
-        const std::vector<double>       s = {-overhang, 0, length, length + overhang};
-        const std::vector<unsigned int> n_segments = {n_overhang, n_along, n_overhang};
-        std::vector<int> top_points, base_points, top, base, across;
-        for (const double s_i : s)
-          {
-            top_points.push_back(point(s_i, 0));
-            base_points.push_back(point(s_i, -thickness));
-            across.push_back(line(base_points.back(), top_points.back(), n_thickness));
-          }
-        std::vector<int> foundation;
-        for (unsigned int i = 0; i < 3; ++i)
-          {
-            top.push_back(line(top_points[i], top_points[i + 1], n_segments[i]));
-            base.push_back(line(base_points[i], base_points[i + 1], n_segments[i]));
-            foundation.push_back(
-              quadrilateral({base[i], across[i + 1], -top[i], -across[i]}));
-          }
+          // Foundation top and base, split at the ends of the block.
+          const std::vector<double>       s          = {-overhang,
+                                                        0,
+                                                        length,
+                                                        length + overhang};
+          const std::vector<unsigned int> n_segments = {n_overhang,
+                                                        n_along,
+                                                        n_overhang};
+          std::vector<int> top_points, base_points, top, base, across;
+          for (const double s_i : s)
+            {
+              top_points.push_back(point(s_i, 0));
+              base_points.push_back(point(s_i, -thickness));
+              across.push_back(
+                line(base_points.back(), top_points.back(), n_thickness));
+            }
+          std::vector<int> foundation;
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              top.push_back(
+                line(top_points[i], top_points[i + 1], n_segments[i]));
+              base.push_back(
+                line(base_points[i], base_points[i + 1], n_segments[i]));
+              foundation.push_back(
+                quadrilateral({base[i], across[i + 1], -top[i], -across[i]}));
+            }
 
-        // The block stands on the middle part of the foundation top.
-        const int block_top_right = point(length, height);
-        const int block_top_left  = point(0, height);
-        const int block_right     = line(top_points[2], block_top_right, n_across);
-        const int block_top       = line(block_top_right, block_top_left, n_along);
-        const int block_left      = line(block_top_left, top_points[1], n_across);
-        const int block = quadrilateral({top[1], block_right, block_top, block_left});
-        geo::synchronize();
+          // The block stands on the middle part of the foundation top.
+          const int block_top_right = point(length, height);
+          const int block_top_left  = point(0, height);
+          const int block_right =
+            line(top_points[2], block_top_right, n_across);
+          const int block_top  = line(block_top_right, block_top_left, n_along);
+          const int block_left = line(block_top_left, top_points[1], n_across);
+          const int block =
+            quadrilateral({top[1], block_right, block_top, block_left});
+          geo::synchronize();
 
-        add_group(2, {block}, "block");
-        add_group(2, foundation, "foundation");
-        add_group(1, {top[1]}, "sliding surface");
-        add_group(1, {block_right, block_top, block_left}, "block surface");
-        add_group(1, {top[0], top[2]}, "foundation surface");
-        add_group(1, base, "foundation base");
-        add_group(1, {across[0], across[3]}, "foundation ends");
-        gmsh::model::mesh::generate(2);
-      });
+          add_group(2, {block}, "block");
+          add_group(2, foundation, "foundation");
+          add_group(1, {top[1]}, "sliding surface");
+          add_group(1, {block_right, block_top, block_left}, "block surface");
+          add_group(1, {top[0], top[2]}, "foundation surface");
+          add_group(1, base, "foundation base");
+          add_group(1, {across[0], across[3]}, "foundation ends");
+          gmsh::model::mesh::generate(2);
+        });
       return extract_current_gmsh_model<2>(name);
     }
   } // namespace geometry

@@ -89,7 +89,8 @@ namespace fdem
                                                 n_nodes,
                                                 local_coordinates,
                                                 n_primary_nodes);
-        return (element_dim == structdim && n_primary_nodes == (1 << structdim)) ?
+        return (element_dim == structdim &&
+                n_primary_nodes == (1 << structdim)) ?
                  n_primary_nodes :
                  0;
       }
@@ -102,21 +103,25 @@ namespace fdem
       template <int structdim>
       void
       get_group_elements(
-        const int                                                 group_tag,
-        const std::string                                        &error_prefix,
-        std::vector<std::size_t>                                 &element_tags,
+        const int                                               group_tag,
+        const std::string                                      &error_prefix,
+        std::vector<std::size_t>                               &element_tags,
         std::vector<std::array<std::size_t, (1 << structdim)>> &corner_tags)
       {
         std::vector<int> entities;
-        gmsh::model::getEntitiesForPhysicalGroup(structdim, group_tag, entities);
+        gmsh::model::getEntitiesForPhysicalGroup(structdim,
+                                                 group_tag,
+                                                 entities);
         for (const int entity : entities)
           {
             std::vector<int>                      types;
             std::vector<std::vector<std::size_t>> tags, nodes;
-            gmsh::model::mesh::getElements(types, tags, nodes, structdim, entity);
+            gmsh::model::mesh::getElements(
+              types, tags, nodes, structdim, entity);
             for (unsigned int t = 0; t < types.size(); ++t)
               {
-                AssertThrow(n_corners_if_tensor_product(types[t], structdim) > 0,
+                AssertThrow(n_corners_if_tensor_product(types[t], structdim) >
+                              0,
                             ExcMessage(error_prefix));
                 const std::size_t n_nodes = nodes[t].size() / tags[t].size();
                 for (unsigned int e = 0; e < tags[t].size(); ++e)
@@ -124,7 +129,8 @@ namespace fdem
                     element_tags.push_back(tags[t][e]);
                     std::array<std::size_t, (1 << structdim)> corners;
                     for (unsigned int i = 0; i < corners.size(); ++i)
-                      corners[i] = nodes[t][e * n_nodes + gmsh_corner(structdim, i)];
+                      corners[i] =
+                        nodes[t][e * n_nodes + gmsh_corner(structdim, i)];
                     corner_tags.push_back(corners);
                   }
               }
@@ -158,7 +164,7 @@ namespace fdem
             for (unsigned int d = 0; d < dim; ++d)
               {
                 const unsigned int neighbor = v ^ (1u << d);
-                Tensor<1, dim>     edge     = vertices[cell.vertices[neighbor]] -
+                Tensor<1, dim>     edge = vertices[cell.vertices[neighbor]] -
                                       vertices[cell.vertices[v]];
                 if ((v >> d) & 1u)
                   edge *= -1;
@@ -180,7 +186,7 @@ namespace fdem
     {
       static_assert(dim == 2 || dim == 3, "Only 2D and 3D meshes.");
       constexpr unsigned int n_cell_corners = 1 << dim;
-      const std::string      cell_kind = (dim == 2) ? "quadrilaterals" : "hexahedra";
+      const std::string cell_kind = (dim == 2) ? "quadrilaterals" : "hexahedra";
 
       MeshDescription<dim> mesh;
       mesh.source = source;
@@ -188,24 +194,23 @@ namespace fdem
       const int model_dim = gmsh::model::getDimension();
       AssertThrow(model_dim == dim,
                   ExcMessage(source + ": the model is " +
-                             std::to_string(model_dim) + "-dimensional, but a " +
-                             std::to_string(dim) +
+                             std::to_string(model_dim) +
+                             "-dimensional, but a " + std::to_string(dim) +
                              "-dimensional mesh was asked for."));
 
       gmsh::vectorpair block_groups;
       gmsh::model::getPhysicalGroups(block_groups, dim);
+      const std::string kind_of_group = (dim == 2) ? "Surface" : "Volume";
       AssertThrow(!block_groups.empty(),
-                  ExcMessage(source + ": there is no physical group of "
-                                      "dimension " +
-                             std::to_string(dim) +
-                             " (the blocks), e.g. Physical " +
-                             (dim == 2 ? "Surface" : "Volume") +
+                  ExcMessage(source + ": there is no physical group of " +
+                             "dimension " + std::to_string(dim) +
+                             " (the blocks), e.g. Physical " + kind_of_group +
                              "(\"rock\") = {...}."));
 
       // Cells by block; an element may be listed in one block only.
-      std::map<std::size_t, unsigned int>                 block_of_element;
+      std::map<std::size_t, unsigned int>                  block_of_element;
       std::vector<std::array<std::size_t, n_cell_corners>> cell_corner_tags;
-      std::vector<unsigned int>                           cell_blocks;
+      std::vector<unsigned int>                            cell_blocks;
       for (const auto &group : block_groups)
         {
           const unsigned int block = mesh.block_names.size();
@@ -216,17 +221,18 @@ namespace fdem
             source + ": block '" + mesh.block_names.back() +
               "' has elements that are not " + cell_kind +
               "; mesh with Recombine (and Mesh.SubdivisionAlgorithm = " +
-              (dim == 2 ? "1" : "2") + " for an all-" + cell_kind + " mesh)",
+              (dim == 2 ? "1" : "2") + " for an all-" + cell_kind + " mesh).",
             element_tags,
             cell_corner_tags);
           for (const std::size_t tag : element_tags)
             {
               const auto inserted = block_of_element.emplace(tag, block);
               AssertThrow(inserted.second,
-                          ExcMessage(source + ": element " + std::to_string(tag) +
-                                     " belongs to two blocks, '" +
-                                     mesh.block_names[inserted.first->second] +
-                                     "' and '" + mesh.block_names[block] + "'."));
+                          ExcMessage(
+                            source + ": element " + std::to_string(tag) +
+                            " belongs to two blocks, '" +
+                            mesh.block_names[inserted.first->second] +
+                            "' and '" + mesh.block_names[block] + "'."));
               cell_blocks.push_back(block);
             }
         }
@@ -246,7 +252,7 @@ namespace fdem
           position_of_node[node_tags[i]] = i;
         for (auto &[tag, vertex] : vertex_of_node)
           {
-            vertex = mesh.vertices.size();
+            vertex              = mesh.vertices.size();
             const std::size_t i = position_of_node.at(tag);
             Point<dim>        p;
             for (unsigned int d = 0; d < dim; ++d)
@@ -288,14 +294,16 @@ namespace fdem
       for (const auto &group : face_groups)
         {
           const unsigned int face_group = mesh.face_group_names.size();
-          const std::string  name = group_name(dim - 1, group.second, "face group");
+          const std::string  name =
+            group_name(dim - 1, group.second, "face group");
           mesh.face_group_names.push_back(name);
-          std::vector<std::size_t>                                   element_tags;
+          std::vector<std::size_t>                                 element_tags;
           std::vector<std::array<std::size_t, n_cell_corners / 2>> corner_tags;
           get_group_elements<dim - 1>(group.second,
                                       source + ": face group '" + name +
                                         "' has elements that are not " +
-                                        (dim == 2 ? "lines" : "quadrilaterals"),
+                                        (dim == 2 ? "lines." :
+                                                    "quadrilaterals."),
                                       element_tags,
                                       corner_tags);
           for (const auto &corners : corner_tags)
@@ -305,8 +313,9 @@ namespace fdem
                 {
                   const auto vertex = vertex_of_node.find(corners[i]);
                   AssertThrow(vertex != vertex_of_node.end(),
-                              ExcMessage(source + ": face group '" + name +
-                                         "' has faces that are not on any cell."));
+                              ExcMessage(
+                                source + ": face group '" + name +
+                                "' has faces that are not on any cell."));
                   face.vertices[i] = vertex->second;
                 }
               face.boundary_id = face_group;
@@ -335,8 +344,18 @@ namespace fdem
       // Anything but a mesh file (.geo, or a CAD file) is only geometry.
       if (std::filesystem::path(file_name).extension() != ".msh" &&
           gmsh::model::getDimension() == dim)
-        GmshSession::run("Gmsh could not mesh '" + file_name + "'",
-                         [&]() { gmsh::model::mesh::generate(dim); });
+        {
+          // Rather an error than the segmentation fault of Debian's Gmsh.
+          double algorithm = 0;
+          gmsh::option::getNumber("Mesh.Algorithm", algorithm);
+          AssertThrow(algorithm != 8,
+                      ExcMessage("Gmsh file '" + file_name +
+                                 "': Mesh.Algorithm = 8 (Frontal-Delaunay for "
+                                 "quads) crashes Gmsh 4.8.4; use 6 with "
+                                 "Recombine instead."));
+          GmshSession::run("Gmsh could not mesh '" + file_name + "'",
+                           [&]() { gmsh::model::mesh::generate(dim); });
+        }
       return extract_current_gmsh_model<dim>("Gmsh file '" + file_name + "'");
     }
 
@@ -344,7 +363,8 @@ namespace fdem
 
     template <int dim>
     void
-    write_gmsh_file(const MeshDescription<dim> &mesh, const std::string &file_name)
+    write_gmsh_file(const MeshDescription<dim> &mesh,
+                    const std::string          &file_name)
     {
       GmshSession session;
       gmsh::model::add("fdem");
@@ -368,10 +388,13 @@ namespace fdem
             coordinates[3 * v + d] = mesh.vertices[v][d];
         }
       if (!block_entities.empty())
-        gmsh::model::mesh::addNodes(dim, block_entities[0], node_tags, coordinates);
+        gmsh::model::mesh::addNodes(dim,
+                                    block_entities[0],
+                                    node_tags,
+                                    coordinates);
 
-      std::size_t element_tag = 0;
-      const auto  add_elements = [&](const auto &objects,
+      std::size_t element_tag  = 0;
+      const auto  add_elements = [&](const auto             &objects,
                                     const std::vector<int> &entities,
                                     const int               structdim,
                                     const int               gmsh_type,
@@ -383,26 +406,40 @@ namespace fdem
             const unsigned int e = entity_index(object);
             tags[e].push_back(++element_tag);
             for (unsigned int i = 0; i < object.vertices.size(); ++i)
-              nodes[e].push_back(object.vertices[gmsh_corner(structdim, i)] + 1);
+              nodes[e].push_back(object.vertices[gmsh_corner(structdim, i)] +
+                                 1);
           }
         for (unsigned int e = 0; e < entities.size(); ++e)
           if (!tags[e].empty())
-            gmsh::model::mesh::addElementsByType(entities[e], gmsh_type, tags[e], nodes[e]);
+            gmsh::model::mesh::addElementsByType(entities[e],
+                                                 gmsh_type,
+                                                 tags[e],
+                                                 nodes[e]);
       };
       // Gmsh element types: 1 line, 3 quadrilateral, 5 hexahedron.
-      add_elements(mesh.cells, block_entities, dim, (dim == 2) ? 3 : 5,
+      add_elements(mesh.cells,
+                   block_entities,
+                   dim,
+                   (dim == 2) ? 3 : 5,
                    [](const CellData<dim> &cell) { return cell.material_id; });
-      add_elements(mesh.faces, face_entities, dim - 1, (dim == 2) ? 1 : 3,
-                   [](const CellData<dim - 1> &face) { return face.boundary_id; });
+      add_elements(mesh.faces,
+                   face_entities,
+                   dim - 1,
+                   (dim == 2) ? 1 : 3,
+                   [](const CellData<dim - 1> &face) {
+                     return face.boundary_id;
+                   });
       gmsh::model::mesh::reclassifyNodes();
 
       for (unsigned int b = 0; b < block_entities.size(); ++b)
         gmsh::model::setPhysicalName(
-          dim, gmsh::model::addPhysicalGroup(dim, {block_entities[b]}, b + 1),
+          dim,
+          gmsh::model::addPhysicalGroup(dim, {block_entities[b]}, b + 1),
           mesh.block_names[b]);
       for (unsigned int g = 0; g < face_entities.size(); ++g)
         gmsh::model::setPhysicalName(
-          dim - 1, gmsh::model::addPhysicalGroup(dim - 1, {face_entities[g]}, g + 1),
+          dim - 1,
+          gmsh::model::addPhysicalGroup(dim - 1, {face_entities[g]}, g + 1),
           mesh.face_group_names[g]);
 
       gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);

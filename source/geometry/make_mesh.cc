@@ -34,8 +34,8 @@ namespace fdem
 
       // Rodrigues' formula R = cos a I + sin a [k]x + (1 - cos a) k k^T,
       // with k = e_z in 2D (the upper left 2x2 block).
-      const double   angle = geometry.rotation_angle * numbers::PI / 180;
-      Tensor<1, 3>   axis;
+      const double angle = geometry.rotation_angle * numbers::PI / 180;
+      Tensor<1, 3> axis;
       if (dim == 2)
         axis[2] = 1;
       else
@@ -57,7 +57,8 @@ namespace fdem
           rotation[i][j] = rotation_3d[i][j];
 
       for (Point<dim> &vertex : mesh.vertices)
-        vertex = Point<dim>(rotation * (geometry.scale_factor * vertex) + translation);
+        vertex =
+          Point<dim>(rotation * (geometry.scale_factor * vertex) + translation);
     }
 
 

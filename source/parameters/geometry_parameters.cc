@@ -28,8 +28,8 @@ namespace fdem
       Point<2>
       parse_point(const std::string &text)
       {
-        const std::vector<double> xy = Utilities::string_to_double(
-          Utilities::split_string_list(text, ','));
+        const std::vector<double> xy =
+          Utilities::string_to_double(Utilities::split_string_list(text, ','));
         return Point<2>(xy[0], xy[1]);
       }
 
@@ -150,10 +150,11 @@ namespace fdem
             Patterns::Selection("circular|polyline"),
             "Shape of the sliding surface. The sliding mass is the part of "
             "the model inside the circle, or above the polyline.");
-          prm.declare_entry("Circle centre",
-                            "19.61, 46.32",
-                            Patterns::List(Patterns::Double(), 2, 2, ","),
-                            "Centre 'x,y' of the circular sliding surface (m).");
+          prm.declare_entry(
+            "Circle centre",
+            "19.61, 46.32",
+            Patterns::List(Patterns::Double(), 2, 2, ","),
+            "Centre 'x,y' of the circular sliding surface (m).");
           prm.declare_entry("Circle radius",
                             "21.32",
                             Patterns::Double(0),
@@ -179,11 +180,12 @@ namespace fdem
 
         prm.enter_subsection("Hertz");
         {
-          prm.declare_entry("Radius",
-                            "100",
-                            Patterns::Double(0),
-                            "Radius of the cylinder (model length unit, "
-                            "e.g. mm). The half model holds the lower quarter.");
+          prm.declare_entry(
+            "Radius",
+            "100",
+            Patterns::Double(0),
+            "Radius of the cylinder (model length unit, "
+            "e.g. mm). The half model holds the lower quarter.");
           prm.declare_entry("Foundation width",
                             "500",
                             Patterns::Double(0),
@@ -240,16 +242,18 @@ namespace fdem
                             Patterns::Double(0),
                             "Length the foundation extends beyond each end "
                             "of the block (m).");
-          prm.declare_entry("Elements along length",
-                            "10",
-                            Patterns::Integer(1),
-                            "Number of elements of the block along the "
-                            "plane; the foundation gets elements of that size.");
-          prm.declare_entry("Elements across height",
-                            "5",
-                            Patterns::Integer(1),
-                            "Number of elements of the block normal to the "
-                            "plane; the foundation gets elements of that size.");
+          prm.declare_entry(
+            "Elements along length",
+            "10",
+            Patterns::Integer(1),
+            "Number of elements of the block along the "
+            "plane; the foundation gets elements of that size.");
+          prm.declare_entry(
+            "Elements across height",
+            "5",
+            Patterns::Integer(1),
+            "Number of elements of the block normal to the "
+            "plane; the foundation gets elements of that size.");
         }
         prm.leave_subsection();
       }
@@ -264,10 +268,10 @@ namespace fdem
       prm.enter_subsection("Geometry");
       {
         const std::string source_name = prm.get("Source");
-        source = (source_name == "mesh file") ? Source::mesh_file :
-                 (source_name == "slope")     ? Source::slope :
-                 (source_name == "hertz")     ? Source::hertz :
-                                                Source::inclined_block;
+        source         = (source_name == "mesh file") ? Source::mesh_file :
+                         (source_name == "slope")     ? Source::slope :
+                         (source_name == "hertz")     ? Source::hertz :
+                                                        Source::inclined_block;
         mesh_file      = prm.get("Mesh file");
         scale_factor   = prm.get_double("Scale factor");
         rotation_angle = prm.get_double("Rotation angle");
@@ -277,10 +281,10 @@ namespace fdem
         translation   = Utilities::string_to_double(
           Utilities::split_string_list(prm.get("Translation"), ','));
 
-        require(source != Source::mesh_file || !mesh_file.empty(),
-                "Geometry/Mesh file: must be given when Source is 'mesh file'.");
-        require(scale_factor > 0,
-                "Geometry/Scale factor: must be positive.");
+        require(
+          source != Source::mesh_file || !mesh_file.empty(),
+          "Geometry/Mesh file: must be given when Source is 'mesh file'.");
+        require(scale_factor > 0, "Geometry/Scale factor: must be positive.");
         require(rotation_axis.norm() > 0,
                 "Geometry/Rotation axis: must not be the zero vector.");
         rotation_axis /= rotation_axis.norm();
@@ -306,22 +310,25 @@ namespace fdem
 
         prm.enter_subsection("Hertz");
         {
-          hertz.radius                  = prm.get_double("Radius");
-          hertz.foundation_width        = prm.get_double("Foundation width");
-          hertz.foundation_depth        = prm.get_double("Foundation depth");
-          hertz.contact_zone_width      = prm.get_double("Contact zone width");
-          hertz.n_contact_zone_elements = prm.get_integer("Elements in contact zone");
-          hertz.mesh_size               = prm.get_double("Mesh size");
+          hertz.radius             = prm.get_double("Radius");
+          hertz.foundation_width   = prm.get_double("Foundation width");
+          hertz.foundation_depth   = prm.get_double("Foundation depth");
+          hertz.contact_zone_width = prm.get_double("Contact zone width");
+          hertz.n_contact_zone_elements =
+            prm.get_integer("Elements in contact zone");
+          hertz.mesh_size = prm.get_double("Mesh size");
         }
         prm.leave_subsection();
 
         prm.enter_subsection("Inclined block");
         {
-          inclined_block.inclination          = prm.get_double("Inclination");
-          inclined_block.block_length         = prm.get_double("Block length");
-          inclined_block.block_height         = prm.get_double("Block height");
-          inclined_block.foundation_thickness = prm.get_double("Foundation thickness");
-          inclined_block.foundation_overhang  = prm.get_double("Foundation overhang");
+          inclined_block.inclination  = prm.get_double("Inclination");
+          inclined_block.block_length = prm.get_double("Block length");
+          inclined_block.block_height = prm.get_double("Block height");
+          inclined_block.foundation_thickness =
+            prm.get_double("Foundation thickness");
+          inclined_block.foundation_overhang =
+            prm.get_double("Foundation overhang");
           inclined_block.n_elements_along_length =
             prm.get_integer("Elements along length");
           inclined_block.n_elements_across_height =
@@ -333,8 +340,8 @@ namespace fdem
 
       if (source == Source::slope)
         {
-          const std::string path = "Geometry/Slope/";
-          const auto &ground = slope.ground_surface;
+          const std::string path   = "Geometry/Slope/";
+          const auto       &ground = slope.ground_surface;
           require(x_increases(ground, true),
                   path + "Ground surface: the x coordinates must increase "
                          "from left to right.");
@@ -351,7 +358,7 @@ namespace fdem
                     path + "Circle radius: must be positive.");
           else
             {
-              const auto &line = slope.sliding_surface_polyline;
+              const auto       &line = slope.sliding_surface_polyline;
               const std::string name = path + "Sliding surface polyline: ";
               require(line.size() >= 2,
                       name + "needs at least two points when Sliding "

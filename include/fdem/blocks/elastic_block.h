@@ -179,13 +179,21 @@ namespace fdem
       FullMatrix<double>
       rigid_modes_at_dofs() const;
 
-      /** Element stiffness K_e and load F_e (gravity and pressures). */
+      /** FE evaluators and cell arrays for one pass over the cells. */
+      struct CellScratch
+      {
+        CellScratch(const Mapping<dim> &mapping, const FiniteElement<dim> &fe);
+        FEValues<dim>                        fe_values;
+        FEFaceValues<dim>                    fe_face_values;
+        FullMatrix<double>                   matrix;
+        Vector<double>                       rhs;
+        std::vector<types::global_dof_index> dofs;
+      };
+
+      /** Element stiffness K_e and load F_e (gravity and pressures) into @p scratch. */
       void
       assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    FEValues<dim> &                                       fe_values,
-                    FEFaceValues<dim> &  fe_face_values,
-                    FullMatrix<double> & cell_matrix,
-                    Vector<double> &     cell_rhs) const;
+                    CellScratch &scratch) const;
     };
   } // namespace blocks
 } // namespace fdem

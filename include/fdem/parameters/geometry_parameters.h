@@ -48,7 +48,7 @@ namespace fdem
         /** Ground surface from left to right (m). */
         std::vector<Point<2>> ground_surface;
         /** Elevation of the bottom of the model (m). */
-        double base_elevation;
+        double         base_elevation;
         SlidingSurface sliding_surface;
         /** Centre of the circular sliding surface (m). */
         Point<2> circle_centre;
@@ -58,7 +58,8 @@ namespace fdem
         std::vector<Point<2>> sliding_surface_polyline;
         /** Element size away from the sliding surface (m). */
         double mesh_size;
-        /** Element size on the sliding surface (m); equals mesh_size if 0 was given. */
+        /** Element size on the sliding surface (m); equals mesh_size if 0 was
+         * given. */
         double mesh_size_on_sliding_surface;
       };
 
@@ -71,8 +72,9 @@ namespace fdem
         double radius;
         double foundation_width;
         double foundation_depth;
-        /** Length from the symmetry axis over which both sides get nodes at equal x. */
-        double contact_zone_width;
+        /** Length from the symmetry axis over which both sides get nodes at
+         * equal x. */
+        double       contact_zone_width;
         unsigned int n_contact_zone_elements;
         /** Element size far from the contact zone. */
         double mesh_size;
@@ -87,18 +89,20 @@ namespace fdem
         double block_height;
         double foundation_thickness;
         /** Length the foundation extends beyond each end of the block. */
-        double foundation_overhang;
+        double       foundation_overhang;
         unsigned int n_elements_along_length;
         unsigned int n_elements_across_height;
       };
 
       Source source;
-      /** The mesh file name as written in the .prm file; see mesh_file_path(). */
+      /** The mesh file name as written in the .prm file; see mesh_file_path().
+       */
       std::string mesh_file;
 
       /** Transformation x -> R (s x) + t applied to every mesh. */
       double scale_factor;
-      /** Rotation angle (degrees), about z in 2D and about rotation_axis in 3D. */
+      /** Rotation angle (degrees), about z in 2D and about rotation_axis in 3D.
+       */
       double rotation_angle;
       /** Rotation axis in 3D (normalised on parsing). */
       Tensor<1, 3> rotation_axis;
@@ -110,16 +114,20 @@ namespace fdem
       InclinedBlock inclined_block;
 
       /** Declare the entries of the subsection "Geometry". */
-      static void declare_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
 
-      /** Read and validate the subsection "Geometry"; throws on invalid data. */
-      void parse_parameters(ParameterHandler &prm);
+      /** Read and validate the subsection "Geometry"; throws on invalid data.
+       */
+      void
+      parse_parameters(ParameterHandler &prm);
 
       /**
        * The mesh file to open: a relative name is taken relative to the
        * directory of the .prm file, @p prm_directory.
        */
-      std::string mesh_file_path(const std::string &prm_directory) const;
+      std::string
+      mesh_file_path(const std::string &prm_directory) const;
     };
   } // namespace parameters
 } // namespace fdem
