@@ -93,7 +93,13 @@ main(int argc, char *argv[])
           std::cout << prm_file << ": valid." << std::endl;
           return 0;
         }
-      fdem::run_case(prm_file, std::cout);
+      const nlohmann::json summary = fdem::run_case(prm_file, std::cout);
+      if (summary["status"] != "completed")
+        {
+          std::cerr << "fdem-slope: " << summary["status"].get<std::string>()
+                    << " (see summary.json)." << std::endl;
+          return 3;
+        }
     }
   catch (const std::exception &error)
     {

@@ -42,7 +42,8 @@ namespace fdem
     build_interfaces();
     compute_flexibility();
     solve_contact();
-    recover_block_displacements();
+    if (contact_outcome.converged())
+      recover_block_displacements();
     output_results();
   }
 
@@ -182,16 +183,48 @@ namespace fdem
   }
 
   template <int dim>
+  std::vector<contact::PairStrength>
+  Model<dim>::pair_strengths(const double K) const
+  {
+    std::vector<contact::PairStrength> strengths;
+    for (const auto &interface : interfaces)
+      {
+        const parameters::InterfaceParameters &p = parameters.interfaces.at(interface.name);
+        for (const auto &pair : interface.pairs)
+          {
+            contact::PairStrength strength;
+            if (!p.frictionless)
+              {
+                strength.friction_coefficient = std::tan(p.friction_angle * numbers::PI / 180) / K;
+                strength.cohesion_force       = p.cohesion * pair.area / K;
+              }
+            strength.tensile_force = p.tensile_strength * pair.area;
+            strengths.push_back(strength);
+          }
+      }
+    return strengths;
+  }
+
+  template <int dim>
   void
-  Model<dim>::solve_contact()
+  Model<dim>::solve_contact(const double strength_reduction)
   {
     TimerOutput::Scope scope(timer, "contact");
-    statuses.assign(mixed_system->n_pairs(), contact::PairStatus::stick);
-    contact_solution = mixed_system->solve(statuses);
-    for (const double f : contact_solution.forces)
-      AssertThrow(std::isfinite(f),
-                  ExcMessage("The mixed system has no solution: the blocks "
-                             "are not in static equilibrium."));
+    const auto strengths = pair_strengths(strength_reduction);
+    // Warm start from the last states when there are any (Sec. 6).
+    auto states = contact_outcome.states.size() == mixed_system->n_pairs() ?
+                    contact_outcome.states :
+                    contact::initial_states(*mixed_system, strengths);
+    contact::StatusIterationControl control;
+    control.max_iterations = parameters.contact.max_status_iterations;
+    control.runaway_factor = parameters.contact.runaway_factor;
+    log << "  contact problem:" << std::endl;
+    contact_outcome = contact::solve_contact_problem(*mixed_system, strengths, states, control, log);
+    log << "  contact problem " << contact::result_description(contact_outcome.result)
+        << " after " << contact_outcome.iterations.size() << " solves";
+    if (contact_outcome.n_cycles_broken > 0)
+      log << " (" << contact_outcome.n_cycles_broken << " status cycles broken)";
+    log << std::endl;
   }
 
   template <int dim>
@@ -203,10 +236,10 @@ namespace fdem
     for (unsigned int b = 0; b < blocks.size(); ++b)
       {
         Vector<double> u =
-          blocks[b]->solve(mixed_system->block_nodal_forces(b, contact_solution));
+          blocks[b]->solve(mixed_system->block_nodal_forces(b, contact_outcome.solution));
         Vector<double> gamma(blocks[b]->n_free_rigid_modes());
         for (unsigned int m = 0; m < gamma.size(); ++m)
-          gamma[m] = contact_solution.rigid_motions[mixed_system->first_rigid_unknown[b] + m];
+          gamma[m] = contact_outcome.solution.rigid_motions[mixed_system->first_rigid_unknown[b] + m];
         blocks[b]->add_rigid_motion(gamma, u);
         displacements.push_back(u);
       }
@@ -224,12 +257,16 @@ namespace fdem
     for (const auto &interface : interfaces)
       {
         results.push_back(postprocess::pair_results(interface, first_pair,
-                                                    contact_solution, statuses));
+                                                    contact_outcome.solution,
+                                                    contact_outcome.states));
         first_pair += interface.pairs.size();
       }
-    postprocess::write_interface_csv(directory + "/interfaces.csv", interfaces, results);
+    // Without equilibrium there is no field to show: only the summary says why.
+    const bool converged = contact_outcome.converged();
+    if (converged)
+      postprocess::write_interface_csv(directory + "/interfaces.csv", interfaces, results);
 
-    if (parameters.output.write_vtu)
+    if (converged && parameters.output.write_vtu)
       {
         std::vector<postprocess::PvdEntry> entries;
         for (unsigned int b = 0; b < blocks.size(); ++b)
@@ -257,10 +294,13 @@ namespace fdem
         const auto &block = *blocks[b];
         n_dofs += block.dof_handler.n_dofs();
         // Reactions at the minimal support: zero at equilibrium.
-        const Vector<double> residual = block.nodal_residual(displacements[b]);
         double reaction = 0;
-        for (const auto dof : block.support_dofs)
-          reaction = std::max(reaction, std::abs(residual[dof]));
+        if (converged)
+          {
+            const Vector<double> residual = block.nodal_residual(displacements[b]);
+            for (const auto dof : block.support_dofs)
+              reaction = std::max(reaction, std::abs(residual[dof]));
+          }
         summary["blocks"].push_back({{"name", block.name},
                                      {"n_cells", block.triangulation.n_active_cells()},
                                      {"n_dofs", block.dof_handler.n_dofs()},
@@ -297,13 +337,29 @@ namespace fdem
            {"total_normal_force", normal_force},
            {"total_tangential_force", tangential_force}});
       }
-    summary["rigid_motions"] = std::vector<double>(contact_solution.rigid_motions.begin(),
-                                                   contact_solution.rigid_motions.end());
+    summary["rigid_motions"] = std::vector<double>(contact_outcome.solution.rigid_motions.begin(),
+                                                   contact_outcome.solution.rigid_motions.end());
+    nlohmann::json iterations = nlohmann::json::array();
+    for (const auto &record : contact_outcome.iterations)
+      iterations.push_back({{"n_stick", record.n_stick},
+                            {"n_slip", record.n_slip},
+                            {"n_open", record.n_open},
+                            {"n_at_cutoff", record.n_at_cutoff},
+                            {"n_changes", record.n_changes},
+                            {"reciprocal_condition", record.reciprocal_condition}});
+    summary["contact"] = {{"result", contact::result_description(contact_outcome.result)},
+                          {"converged", contact_outcome.converged()},
+                          {"n_solves", contact_outcome.iterations.size()},
+                          {"n_cycles_broken", contact_outcome.n_cycles_broken},
+                          {"iterations", iterations}};
     nlohmann::json timings = nlohmann::json::object();
     for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
       timings[section] = seconds;
     summary["timings"] = timings;
-    summary["status"]  = "completed";
+    summary["status"]  = contact_outcome.converged() ?
+                           "completed" :
+                           "no static equilibrium: " +
+                             contact::result_description(contact_outcome.result);
     postprocess::write_json(directory + "/summary.json", summary);
     log << "Results in " << directory << "/" << std::endl;
   }

@@ -40,11 +40,27 @@ namespace
    * mesh: displacements at the interface nodes, and contact forces against
    * the nodal forces that block I's cells exert on block J's.
    */
-  void
-  check_stick_equals_monolithic(const parameters::Parameters &parameters)
+  /** Interfaces so strong that every pair sticks (formulation Sec. 5). */
+  parameters::Parameters
+  unbreakable(parameters::Parameters parameters)
   {
-    std::ostringstream log;
-    const auto         model = test_support::solved_model<2>(parameters, log);
+    for (auto &[name, interface] : parameters.interfaces)
+      {
+        interface.cohesion         = 1e12;
+        interface.tensile_strength = 1e12;
+      }
+    return parameters;
+  }
+
+  void
+  check_stick_equals_monolithic(const parameters::Parameters &input)
+  {
+    const parameters::Parameters parameters = unbreakable(input);
+    std::ostringstream           log;
+    const auto model = test_support::solved_model<2>(parameters, log);
+    ASSERT_TRUE(model->contact_outcome.converged());
+    for (const auto &state : model->contact_outcome.states)
+      ASSERT_EQ(state.status, contact::PairStatus::stick);
 
     // The merged model: every block's cells in one mesh, nodes shared.
     std::vector<unsigned int>                              all_blocks;
@@ -96,7 +112,7 @@ namespace
         const auto  dofs  = merged_dofs_at(pair.position_J);
         Tensor<1, 2> local;
         for (unsigned int d = 0; d < 2; ++d)
-          local[d] = model->contact_solution.forces[2 * k + d];
+          local[d] = model->contact_outcome.solution.forces[2 * k + d];
         const Tensor<1, 2> f = transpose(pair.frame) * local;
         for (unsigned int d = 0; d < 2; ++d)
           {
@@ -158,7 +174,7 @@ TEST(Flexibility, IsSymmetricPositiveDefinite)
   std::ostringstream log;
   auto               parameters       = test_support::case_parameters("paper_slope.prm");
   parameters.geometry.slope.mesh_size = 2.0;
-  const auto model                    = test_support::solved_model<2>(parameters, log);
+  const auto model                    = test_support::solved_model<2>(unbreakable(parameters), log);
   const auto &C                       = model->mixed_system->flexibility;
   double      max_entry = 0, asymmetry = 0;
   for (unsigned int i = 0; i < C.m(); ++i)
@@ -190,7 +206,7 @@ TEST(MinimalSupport, ReactionsVanishAtEquilibrium)
       std::ostringstream log;
       auto               parameters       = test_support::case_parameters(prm);
       parameters.geometry.slope.mesh_size = 2.0;
-      const auto model                    = test_support::solved_model<2>(parameters, log);
+      const auto model = test_support::solved_model<2>(unbreakable(parameters), log);
       for (unsigned int b = 0; b < model->blocks.size(); ++b)
         {
           const auto &block = *model->blocks[b];
@@ -203,4 +219,11 @@ TEST(MinimalSupport, ReactionsVanishAtEquilibrium)
               << prm << ", block " << block.name;
         }
     }
+}
+
+TEST(StickEqualsMonolithic, BlockOnInclinedPlaneWithMumps)
+{
+  auto parameters                 = test_support::case_parameters("inclined_block.prm");
+  parameters.solver.direct_solver = "Amesos_Mumps";
+  check_stick_equals_monolithic(parameters);
 }

@@ -5,6 +5,7 @@
 #include <fdem/blocks/elastic_block.h>
 #include <fdem/contact/interface_pairs.h>
 #include <fdem/contact/mixed_system.h>
+#include <fdem/contact/status_iteration.h>
 #include <fdem/geometry/mesh_description.h>
 #include <fdem/parameters/parameters.h>
 
@@ -54,9 +55,17 @@ namespace fdem
     /** C = C_I + C_J, g_bar, W and omega^T F (eqs. 4-8), computed once. */
     void
     compute_flexibility();
-    /** Solves eq. (9) for the pair forces and rigid motions. */
+    /**
+     * Solves eq. (9) with the contact conditions of Table 1 (the status
+     * iteration) for the pair forces and rigid motions, with the interfaces'
+     * strengths reduced by @p strength_reduction (the safety factor's K).
+     */
     void
-    solve_contact();
+    solve_contact(const double strength_reduction = 1.0);
+
+    /** Pair strengths of all interfaces, c and tan(phi) divided by @p K (eq. 10). */
+    std::vector<contact::PairStrength>
+    pair_strengths(const double K) const;
     /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
     void
     recover_block_displacements();
@@ -70,8 +79,7 @@ namespace fdem
     std::vector<contact::Interface<dim>>                interfaces;
     std::vector<Vector<double>>                         external_displacements;
     std::unique_ptr<contact::MixedSystem<dim>>          mixed_system;
-    std::vector<contact::PairStatus>                    statuses;
-    contact::ContactSolution                            contact_solution;
+    contact::ContactOutcome<dim>                        contact_outcome;
     std::vector<Vector<double>>                         displacements;
     nlohmann::json                                      summary;
 
@@ -85,7 +93,11 @@ namespace fdem
     face_group(const std::string &name, const std::string &what) const;
   };
 
-  /** Reads the .prm file and runs the case in its dimension; returns the summary. */
+  /**
+   * Reads the .prm file and runs the case in its dimension; returns the
+   * summary. Its "status" is "completed", or says why the contact problem
+   * has no solution.
+   */
   nlohmann::json
   run_case(const std::string &prm_file, std::ostream &log);
 } // namespace fdem

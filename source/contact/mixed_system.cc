@@ -2,8 +2,9 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/contact/mixed_system.h>
 
-#include <deal.II/lac/lapack_full_matrix.h>
+#include <fdem/contact/dense_lu.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fdem
@@ -109,9 +110,19 @@ namespace fdem
 
     template <int dim>
     ContactSolution
-    MixedSystem<dim>::solve(const std::vector<PairStatus> &statuses) const
+    MixedSystem<dim>::solve_all_stick() const
     {
-      Assert(statuses.size() == pairs.size(), ExcInternalError());
+      return solve(std::vector<PairState<dim>>(pairs.size()),
+                   std::vector<PairStrength>(pairs.size()));
+    }
+
+    template <int dim>
+    ContactSolution
+    MixedSystem<dim>::solve(const std::vector<PairState<dim>> &states,
+                            const std::vector<PairStrength> &  strengths) const
+    {
+      Assert(states.size() == pairs.size(), ExcInternalError());
+      Assert(strengths.size() == pairs.size(), ExcInternalError());
       const unsigned int n_forces = flexibility.m();
       const unsigned int n_rigid  = rigid_loads.size();
       const unsigned int n        = n_forces + n_rigid;
@@ -120,28 +131,59 @@ namespace fdem
       for (unsigned int i = 0; i < n_forces; ++i)
         max_diagonal = std::max(max_diagonal, flexibility(i, i));
 
-      LAPACKFullMatrix<double> matrix(n, n);
-      Vector<double>           rhs(n);
+      FullMatrix<double> matrix(n, n);
+      Vector<double>     rhs(n);
+      // Row "g_i = 0": g = g_bar - C f + W gamma.
+      const auto gap_row = [&](const unsigned int row) {
+        for (unsigned int j = 0; j < n_forces; ++j)
+          matrix(row, j) = flexibility(row, j);
+        for (unsigned int j = 0; j < n_rigid; ++j)
+          matrix(row, n_forces + j) = -rigid_coupling(row, j);
+        rhs[row] = external_gap[row];
+      };
       for (unsigned int p = 0; p < pairs.size(); ++p)
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            const unsigned int row = dim * p + i;
-            // A direction held by Dirichlet conditions on both sides has no
-            // flexibility: its force goes straight into the supports, and
-            // f = 0 there is one of the equivalent solutions.
-            const bool held = flexibility(row, row) <= 1e-12 * max_diagonal;
-            if (statuses[p] == PairStatus::open || held)
-              {
-                matrix(row, row) = 1; // f = 0
-                continue;
-              }
-            // Stick: g = g_bar - C f + W gamma = 0.
-            for (unsigned int j = 0; j < n_forces; ++j)
-              matrix(row, j) = flexibility(row, j);
-            for (unsigned int j = 0; j < n_rigid; ++j)
-              matrix(row, n_forces + j) = -rigid_coupling(row, j);
-            rhs[row] = external_gap[row];
-          }
+        {
+          const PairState<dim> &state    = states[p];
+          const PairStrength &  strength = strengths[p];
+          const unsigned int    normal   = dim * p;
+          // A direction held by Dirichlet conditions on both sides has no
+          // flexibility: its force goes straight into the supports, and
+          // f = 0 there is one of the equivalent solutions.
+          const auto held = [&](const unsigned int row) {
+            return flexibility(row, row) <= 1e-12 * max_diagonal;
+          };
+          if (state.status == PairStatus::open)
+            {
+              for (unsigned int i = 0; i < dim; ++i)
+                matrix(normal + i, normal + i) = 1; // f = 0
+              continue;
+            }
+          // Normal row: closed (g_n = 0), or held at the tension cut-off.
+          if (state.at_cutoff || held(normal))
+            {
+              matrix(normal, normal) = 1;
+              rhs[normal]            = state.at_cutoff ? strength.tensile_force : 0;
+            }
+          else
+            gap_row(normal);
+          for (unsigned int i = 1; i < dim; ++i)
+            {
+              const unsigned int row = normal + i;
+              if (state.status == PairStatus::slip)
+                {
+                  // f_t = d (c A - mu f_n): the force at the Mohr-Coulomb
+                  // limit along the slip direction d (a vector in 3D).
+                  const double d   = state.slip_direction[i - 1];
+                  matrix(row, row) = 1;
+                  matrix(row, normal) = d * strength.friction_coefficient;
+                  rhs[row]            = d * strength.cohesion_force;
+                }
+              else if (held(row))
+                matrix(row, row) = 1;
+              else
+                gap_row(row);
+            }
+        }
       // Equilibrium of the free modes: -W^T f = -omega^T F.
       for (unsigned int r = 0; r < n_rigid; ++r)
         {
@@ -151,35 +193,43 @@ namespace fdem
         }
 
       // Scale rows and columns so that forces and rigid motions, whose
-      // units differ, weigh alike in the factorisation.
+      // units differ, weigh alike in the factorisation and in the condition
+      // estimate.
       Vector<double> scale(n);
       for (unsigned int i = 0; i < n; ++i)
         {
           double s = 0;
           for (unsigned int j = 0; j < n; ++j)
-            s = std::max(s, std::abs(matrix(i, j)));
+            s = std::max({s, std::abs(matrix(i, j)), std::abs(matrix(j, i))});
           scale[i] = s > 0 ? 1.0 / std::sqrt(s) : 1.0;
         }
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          rhs[i] *= scale[i];
-          for (unsigned int j = 0; j < n; ++j)
-            matrix(i, j) *= scale[i] * scale[j];
-        }
-      matrix.compute_lu_factorization();
-      matrix.solve(rhs);
-      for (unsigned int i = 0; i < n; ++i)
-        rhs[i] *= scale[i];
+      std::vector<double> column_major(static_cast<std::size_t>(n) * n);
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          column_major[static_cast<std::size_t>(j) * n + i] =
+            matrix(i, j) * scale[i] * scale[j];
+      const DenseLU lu(n, std::move(column_major));
 
       ContactSolution solution;
       solution.forces.reinit(n_forces);
       solution.rigid_motions.reinit(n_rigid);
+      solution.relative_displacements = external_gap;
+      solution.reciprocal_condition   = lu.reciprocal_condition_number();
+      // Below this the solution has no correct digit left.
+      solution.solved = lu.factorized() && solution.reciprocal_condition > 1e-14;
+      if (!solution.solved)
+        return solution;
+
+      for (unsigned int i = 0; i < n; ++i)
+        rhs[i] *= scale[i];
+      lu.solve(rhs);
+      for (unsigned int i = 0; i < n; ++i)
+        rhs[i] *= scale[i];
       for (unsigned int i = 0; i < n_forces; ++i)
         solution.forces[i] = rhs[i];
       for (unsigned int i = 0; i < n_rigid; ++i)
         solution.rigid_motions[i] = rhs[n_forces + i];
 
-      solution.relative_displacements = external_gap;
       Vector<double> product(n_forces);
       flexibility.vmult(product, solution.forces);
       solution.relative_displacements -= product;

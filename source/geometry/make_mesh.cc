@@ -39,7 +39,7 @@ namespace fdem
       if (dim == 2)
         axis[2] = 1;
       else
-        axis = geometry.rotation_axis;
+        axis = geometry.rotation_axis / geometry.rotation_axis.norm();
       Tensor<2, 3> cross_product_matrix; // [k]x v = k x v
       cross_product_matrix[0][1] = -axis[2];
       cross_product_matrix[0][2] = axis[1];

@@ -117,20 +117,21 @@ namespace fdem
           "Rotation angle",
           "0",
           Patterns::Double(-360, 360),
-          "Angle of the rotation R of that transformation (degrees, "
-          "counter-clockwise about the z axis in 2D, right-handed about "
-          "Rotation axis in 3D).");
+          "Angle of the rotation R in x -> R (s x) + t, applied to every mesh "
+          "after it is made (degrees, counter-clockwise about the z axis in "
+          "2D, right-handed about Rotation axis in 3D).");
         prm.declare_entry("Rotation axis",
                           "0,0,1",
                           Patterns::List(Patterns::Double(), 3, 3, ","),
-                          "Axis of the rotation in 3D (any non-zero length, "
+                          "Axis of the rotation R in 3D (any non-zero length, "
                           "dimensionless; ignored in 2D).");
         prm.declare_entry(
           "Translation",
           "0,0",
           Patterns::List(Patterns::Double(), 2, 3, ","),
-          "Translation t of that transformation (model length unit), 2 or 3 "
-          "components; in 2D a third component must be 0.");
+          "Translation t in x -> R (s x) + t, applied to every mesh after it "
+          "is made (model length unit): 2 or 3 components, and in 2D a third "
+          "component must be 0.");
 
         prm.enter_subsection("Slope");
         {

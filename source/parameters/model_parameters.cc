@@ -167,13 +167,70 @@ namespace fdem
         "Largest initial gap (length) between a node of one side and the node "
         "of the other side found along the interface normal; 0 pairs only "
         "coincident nodes.");
+      prm.declare_entry("Friction angle",
+                        "30",
+                        Patterns::Double(0, 90),
+                        "Friction angle phi of the interface (degrees, 0 <= "
+                        "phi < 90): Mohr-Coulomb |tau| <= c + sigma_n tan(phi).");
+      prm.declare_entry("Cohesion",
+                        "0",
+                        Patterns::Double(0),
+                        "Cohesion c of the interface (force/length^2, e.g. kPa).");
+      prm.declare_entry("Tensile strength",
+                        "0",
+                        Patterns::Double(0),
+                        "Tensile strength sigma_t of the interface "
+                        "(force/length^2): a closed pair opens when its tension "
+                        "exceeds sigma_t times its area.");
+      prm.declare_entry("Frictionless",
+                        "false",
+                        Patterns::Bool(),
+                        "A frictionless interface carries no tangential force "
+                        "(friction angle and cohesion are ignored; cohesion must "
+                        "be 0).");
     }
 
     void
-    InterfaceParameters::parse_parameters(ParameterHandler &prm,
-                                          const std::string & /*path*/)
+    InterfaceParameters::parse_parameters(ParameterHandler & prm,
+                                          const std::string &path)
     {
-      search_distance = prm.get_double("Search distance");
+      search_distance  = prm.get_double("Search distance");
+      friction_angle   = prm.get_double("Friction angle");
+      cohesion         = prm.get_double("Cohesion");
+      tensile_strength = prm.get_double("Tensile strength");
+      frictionless     = prm.get_bool("Frictionless");
+      AssertThrow(friction_angle < 90,
+                  ExcMessage(path + "/Friction angle: must be below 90 degrees."));
+      AssertThrow(!(frictionless && cohesion > 0),
+                  ExcMessage(path + "/Cohesion: a frictionless interface cannot "
+                                    "have cohesion; set it to 0."));
+    }
+
+    void
+    ContactParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      prm.declare_entry("Maximum status iterations",
+                        "100",
+                        Patterns::Integer(1),
+                        "Largest number of solves of the mixed system in one "
+                        "contact problem (status iteration).");
+      prm.declare_entry("Runaway factor",
+                        "1e6",
+                        Patterns::Double(1),
+                        "A solution whose rigid relative motion exceeds this "
+                        "many times the elastic relative displacements has no "
+                        "static equilibrium (dimensionless).");
+      prm.leave_subsection();
+    }
+
+    void
+    ContactParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      max_status_iterations = prm.get_integer("Maximum status iterations");
+      runaway_factor        = prm.get_double("Runaway factor");
+      prm.leave_subsection();
     }
 
     void

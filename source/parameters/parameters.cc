@@ -128,6 +128,7 @@ namespace fdem
       declare_named_subsections<InterfaceParameters>(prm,
                                                      "Interfaces",
                                                      interfaces);
+      ContactParameters::declare_parameters(prm);
       SolverParameters::declare_parameters(prm);
       OutputParameters::declare_parameters(prm);
     }
@@ -139,6 +140,7 @@ namespace fdem
       fe_degree = prm.get_integer("Finite element degree");
       geometry.parse_parameters(prm);
       loads.parse_parameters(prm, dimension);
+      contact.parse_parameters(prm);
       solver.parse_parameters(prm);
       output.parse_parameters(prm);
 

@@ -19,26 +19,12 @@ namespace fdem
   {
     using namespace dealii;
 
-    std::string
-    status_name(const contact::PairStatus status)
-    {
-      switch (status)
-        {
-          case contact::PairStatus::stick:
-            return "stick";
-          case contact::PairStatus::slip:
-            return "slip";
-          default:
-            return "open";
-        }
-    }
-
     template <int dim>
     std::vector<PairResult<dim>>
     pair_results(const contact::Interface<dim> &         interface,
                  const unsigned int                      first_pair,
-                 const contact::ContactSolution &        solution,
-                 const std::vector<contact::PairStatus> &statuses)
+                 const contact::ContactSolution &           solution,
+                 const std::vector<contact::PairState<dim>> &states)
     {
       std::vector<PairResult<dim>> results;
       for (unsigned int k = 0; k < interface.pairs.size(); ++k)
@@ -60,7 +46,7 @@ namespace fdem
           r.gap             = solution.relative_displacements[dim * p];
           r.slip            = dim == 2 ? solution.relative_displacements[dim * p + 1] :
                                          std::sqrt(slip2);
-          r.status          = statuses[p];
+          r.status          = states[p].status;
           r.area            = pair.area;
           r.initial_gap     = pair.initial_gap;
           results.push_back(r);
@@ -91,7 +77,7 @@ namespace fdem
             for (const double f : r.tangential_force)
               out << ',' << f;
             out << ',' << r.normal_pressure << ',' << r.shear_stress << ','
-                << r.gap << ',' << r.slip << ',' << status_name(r.status) << ','
+                << r.gap << ',' << r.slip << ',' << contact::status_name(r.status) << ','
                 << r.area << ',' << r.initial_gap << '\n';
           }
     }
@@ -161,7 +147,7 @@ namespace fdem
 #define FDEM_INSTANTIATE(dim)                                                   \
   template std::vector<PairResult<dim>> pair_results(                           \
     const contact::Interface<dim> &, const unsigned int,                        \
-    const contact::ContactSolution &, const std::vector<contact::PairStatus> &); \
+    const contact::ContactSolution &, const std::vector<contact::PairState<dim>> &); \
   template void write_interface_csv(const std::string &,                        \
                                     const std::vector<contact::Interface<dim>> &, \
                                     const std::vector<std::vector<PairResult<dim>>> &); \

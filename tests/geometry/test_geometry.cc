@@ -833,7 +833,7 @@ TEST(MakeMesh, Errors)
 
 
 
-TEST(Parameters, ValidationMessages)
+TEST(GeometryParameters, ValidationMessages)
 {
   expect_error(
     [] { parse("subsection Slope\n set Base elevation = 30\nend"); },
@@ -874,7 +874,7 @@ TEST(Parameters, ValidationMessages)
 
 
 
-TEST(Parameters, MeshFilePath)
+TEST(GeometryParameters, MeshFilePath)
 {
   Parameters geometry =
     parse("set Source = mesh file\nset Mesh file = meshes/a.msh");

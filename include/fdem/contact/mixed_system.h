@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/blocks/elastic_block.h>
+#include <fdem/contact/contact_law.h>
 #include <fdem/contact/interface_pairs.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -17,14 +18,6 @@ namespace fdem
   {
     using namespace dealii;
 
-    /** Contact status of a node pair (the paper's Table 1). */
-    enum class PairStatus
-    {
-      stick,
-      slip,
-      open
-    };
-
     /** A solution of the mixed system: pair forces and rigid motions. */
     struct ContactSolution
     {
@@ -34,6 +27,10 @@ namespace fdem
       Vector<double> rigid_motions;
       /** Relative displacements g = g_bar - C f + W gamma, local, dim per pair. */
       Vector<double> relative_displacements;
+      /** Estimate of the reciprocal condition number of the scaled system. */
+      double reciprocal_condition = 1;
+      /** False if the system was singular (no static equilibrium). */
+      bool solved = true;
     };
 
     /**
@@ -64,9 +61,19 @@ namespace fdem
         const std::vector<Vector<double>> &external_displacements,
         const std::vector<Interface<dim>> &interfaces);
 
-      /** Solves the system with every pair's rows set by @p statuses. */
+      /**
+       * Solves the system with the rows of every pair set by its state
+       * (design/formulation.md Sec. 3): stick g = 0; slip g_n = 0 and the
+       * tangential force at the Mohr-Coulomb limit along the slip direction;
+       * open f = 0; at the tension cut-off f_n = sigma_t A instead of g_n = 0.
+       */
       ContactSolution
-      solve(const std::vector<PairStatus> &statuses) const;
+      solve(const std::vector<PairState<dim>> &states,
+            const std::vector<PairStrength> &  strengths) const;
+
+      /** Solves with every pair in stick. */
+      ContactSolution
+      solve_all_stick() const;
 
       /**
        * Nodal forces on block @p b: its external loads plus the contact
@@ -74,6 +81,13 @@ namespace fdem
        */
       Vector<double>
       block_nodal_forces(const unsigned int b, const ContactSolution &solution) const;
+
+      /** Pair @p p of all interfaces, in order. */
+      const NodePair<dim> &
+      pair(const unsigned int p) const
+      {
+        return *pairs[p];
+      }
 
       /** Number of pairs over all interfaces. */
       unsigned int

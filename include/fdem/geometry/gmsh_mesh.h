@@ -20,7 +20,8 @@ namespace fdem
      * After such a throw while reading a file, Gmsh stays locked and ignores
      * further files ("I'm busy!") until it is finalized, so the session
      * that saw an error should end: run() converts the error and the
-     * destructor finalizes while the exception propagates.
+     * destructor finalizes while the exception propagates. Some failures
+     * are silent: gmsh::open() of a missing file gives an empty model.
      */
     class GmshSession
     {

@@ -58,8 +58,7 @@ namespace fdem
         std::vector<Point<2>> sliding_surface_polyline;
         /** Element size away from the sliding surface (m). */
         double mesh_size;
-        /** Element size on the sliding surface (m); equals mesh_size if 0 was
-         * given. */
+        /** Element size on the sliding surface (m); mesh_size if 0 is given. */
         double mesh_size_on_sliding_surface;
       };
 
@@ -72,8 +71,7 @@ namespace fdem
         double radius;
         double foundation_width;
         double foundation_depth;
-        /** Length from the symmetry axis over which both sides get nodes at
-         * equal x. */
+        /** Length from the axis over which both sides have nodes at equal x. */
         double       contact_zone_width;
         unsigned int n_contact_zone_elements;
         /** Element size far from the contact zone. */
@@ -94,20 +92,21 @@ namespace fdem
         unsigned int n_elements_across_height;
       };
 
-      Source source;
-      /** The mesh file name as written in the .prm file; see mesh_file_path().
-       */
+      Source source = Source::slope;
+      /** The mesh file as written in the .prm file: see mesh_file_path(). */
       std::string mesh_file;
 
-      /** Transformation x -> R (s x) + t applied to every mesh. */
-      double scale_factor;
-      /** Rotation angle (degrees), about z in 2D and about rotation_axis in 3D.
+      /**
+       * The transformation x -> R (s x) + t applied to every mesh; the
+       * defaults leave it unchanged.
        */
-      double rotation_angle;
-      /** Rotation axis in 3D (normalised on parsing). */
-      Tensor<1, 3> rotation_axis;
-      /** Translation, with 2 or 3 components as given. */
-      std::vector<double> translation;
+      double scale_factor = 1;
+      /** Angle of R (degrees), about z in 2D and about rotation_axis in 3D. */
+      double rotation_angle = 0;
+      /** Axis of R in 3D (a unit vector after parsing). */
+      Tensor<1, 3> rotation_axis = Tensor<1, 3>({0., 0., 1.});
+      /** The translation t, with 2 or 3 components as given. */
+      std::vector<double> translation = {0, 0};
 
       Slope         slope;
       Hertz         hertz;
@@ -117,8 +116,7 @@ namespace fdem
       static void
       declare_parameters(ParameterHandler &prm);
 
-      /** Read and validate the subsection "Geometry"; throws on invalid data.
-       */
+      /** Read and check the subsection "Geometry"; throws on invalid data. */
       void
       parse_parameters(ParameterHandler &prm);
 

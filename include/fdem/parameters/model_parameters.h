@@ -76,6 +76,28 @@ namespace fdem
        * pairs coincident nodes only.
        */
       double search_distance = 0;
+      /** Friction angle phi (degrees, 0 <= phi < 90). */
+      double friction_angle = 30;
+      /** Cohesion c (force/length^2). */
+      double cohesion = 0;
+      /** Tensile strength sigma_t (force/length^2): the tension cut-off. */
+      double tensile_strength = 0;
+      /** No friction and no cohesion: the tangential force is zero. */
+      bool frictionless = false;
+    };
+
+    /** The status iteration of the contact solver: subsection "Contact". */
+    struct ContactParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Largest number of solves of the mixed system per contact problem. */
+      unsigned int max_status_iterations = 100;
+      /** Rigid motion beyond this many times the elastic scale is a runaway. */
+      double runaway_factor = 1e6;
     };
 
     /** Gravity and the other loads common to all blocks: subsection "Loads". */

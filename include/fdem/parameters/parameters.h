@@ -37,6 +37,7 @@ namespace fdem
       GeometryParameters geometry;
       LoadParameters     loads;
       SolverParameters   solver;
+      ContactParameters  contact;
       OutputParameters   output;
 
       std::vector<std::string>                   block_names;

@@ -40,12 +40,8 @@ namespace fdem
     std::vector<PairResult<dim>>
     pair_results(const contact::Interface<dim> &         interface,
                  const unsigned int                      first_pair,
-                 const contact::ContactSolution &        solution,
-                 const std::vector<contact::PairStatus> &statuses);
-
-    /** "stick", "slip" or "open". */
-    std::string
-    status_name(const contact::PairStatus status);
+                 const contact::ContactSolution &            solution,
+                 const std::vector<contact::PairState<dim>> &states);
 
     /** Writes all interfaces' pairs into one CSV table. */
     template <int dim>

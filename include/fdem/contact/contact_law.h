@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace fdem
+{
+  namespace contact
+  {
+    /** Contact status of a node pair (the paper's Table 1). */
+    enum class PairStatus
+    {
+      stick,
+      slip,
+      open
+    };
+
+    /** "stick", "slip" or "open". */
+    std::string
+    status_name(const PairStatus status);
+
+    /**
+     * Strength of one node pair (Mohr-Coulomb with cohesion and a tension
+     * cut-off, the paper's Table 1), as forces: the admissible set is
+     * |f_t| <= cohesion_force - friction_coefficient * f_n and
+     * f_n <= tensile_force (f_n > 0 is tension).
+     */
+    struct PairStrength
+    {
+      /** mu = tan(phi). */
+      double friction_coefficient = 0;
+      /** c A (force). */
+      double cohesion_force = 0;
+      /** sigma_t A (force, >= 0). */
+      double tensile_force = 0;
+
+      /** Shear capacity c A - mu f_n at the normal force @p f_n. */
+      double
+      shear_capacity(const double normal_force) const
+      {
+        return cohesion_force - friction_coefficient * normal_force;
+      }
+    };
+
+    /**
+     * The state of a pair in the status iteration: its status, the
+     * direction in which it slips (a unit vector in the tangent plane; +1 or
+     * -1 in 2D), and whether it is held at the tension cut-off (the corner of
+     * the admissible set, design/formulation.md Sec. 3 and 6.2): a closed
+     * pair whose normal force is fixed at sigma_t A while its tangential
+     * status still applies.
+     */
+    template <int dim>
+    struct PairState
+    {
+      PairStatus                  status = PairStatus::stick;
+      std::array<double, dim - 1> slip_direction{};
+      bool                        at_cutoff = false;
+
+      bool
+      operator==(const PairState &other) const
+      {
+        return status == other.status && at_cutoff == other.at_cutoff &&
+               slip_direction == other.slip_direction;
+      }
+    };
+  } // namespace contact
+} // namespace fdem

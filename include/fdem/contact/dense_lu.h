@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace fdem
+{
+  namespace contact
+  {
+    /**
+     * Dense LU factorisation with partial pivoting (LAPACK getrf) of a
+     * square matrix, with an estimate of its reciprocal condition number in
+     * the 1-norm (LAPACK gecon). The mixed system is small and dense, and
+     * whether it is singular (no static equilibrium) is part of the answer.
+     */
+    class DenseLU
+    {
+    public:
+      /** @p column_major holds the n x n matrix by columns; it is overwritten. */
+      DenseLU(const unsigned int n, std::vector<double> column_major);
+
+      /** False if a pivot was exactly zero. */
+      bool
+      factorized() const
+      {
+        return info == 0;
+      }
+
+      /** 1 / (||A||_1 ||A^{-1}||_1), estimated; 0 if singular. */
+      double
+      reciprocal_condition_number() const
+      {
+        return rcond;
+      }
+
+      /** Solves A x = b in place. */
+      void
+      solve(dealii::Vector<double> &b) const;
+
+    private:
+      int                 n;
+      std::vector<double> lu;
+      std::vector<int>    pivots;
+      int                 info  = 0;
+      double              rcond = 0;
+    };
+  } // namespace contact
+} // namespace fdem

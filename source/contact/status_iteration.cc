@@ -1,0 +1,282 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/contact/status_iteration.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
+namespace fdem
+{
+  namespace contact
+  {
+    std::string
+    result_description(const ContactResult result)
+    {
+      switch (result)
+        {
+          case ContactResult::converged:
+            return "converged";
+          case ContactResult::singular:
+            return "singular system: no static equilibrium";
+          case ContactResult::runaway:
+            return "runaway solution: no static equilibrium";
+          default:
+            return "status iteration limit reached";
+        }
+    }
+
+    namespace
+    {
+      /** Magnitude of the tangential part of a local vector. */
+      template <int dim>
+      double
+      tangential_norm(const Vector<double> &v, const unsigned int p)
+      {
+        double sum = 0;
+        for (unsigned int i = 1; i < dim; ++i)
+          sum += v[dim * p + i] * v[dim * p + i];
+        return std::sqrt(sum);
+      }
+
+      /** Unit tangential direction of a local vector (+1 in 2D if zero). */
+      template <int dim>
+      std::array<double, dim - 1>
+      tangential_direction(const Vector<double> &v, const unsigned int p)
+      {
+        std::array<double, dim - 1> d{};
+        const double                norm = tangential_norm<dim>(v, p);
+        if (norm == 0)
+          {
+            d[0] = 1;
+            return d;
+          }
+        for (unsigned int i = 1; i < dim; ++i)
+          d[i - 1] = v[dim * p + i] / norm;
+        return d;
+      }
+
+      /** Pairs may be frozen in a state to break a cycle. */
+      enum class Freeze
+      {
+        none,
+        at_cutoff,
+        slipping
+      };
+    } // namespace
+
+    template <int dim>
+    std::vector<PairState<dim>>
+    initial_states(const MixedSystem<dim> &system, const std::vector<PairStrength> &strengths)
+    {
+      std::vector<PairState<dim>> states(system.n_pairs());
+      for (unsigned int p = 0; p < states.size(); ++p)
+        {
+          states[p].slip_direction[0] = 1;
+          if (system.pair(p).initial_gap > 0)
+            states[p].status = PairStatus::open;
+          else if (strengths[p].shear_capacity(0) <= 0 &&
+                   strengths[p].friction_coefficient == 0)
+            states[p].status = PairStatus::slip; // frictionless
+        }
+      return states;
+    }
+
+    template <int dim>
+    ContactOutcome<dim>
+    solve_contact_problem(const MixedSystem<dim> &         system,
+                          const std::vector<PairStrength> &strengths,
+                          std::vector<PairState<dim>>      states,
+                          const StatusIterationControl &   control,
+                          std::ostream &                   log)
+    {
+      const unsigned int n_pairs = system.n_pairs();
+      ContactOutcome<dim> outcome;
+      std::vector<Freeze> frozen(n_pairs, Freeze::none);
+      std::vector<std::vector<PairState<dim>>> history;
+
+      // Scales for the checks: forces by the pairs' strengths and loads,
+      // gaps by the elastic relative displacements.
+      const double gap_scale = std::max(system.external_gap.linfty_norm(), 1e-300);
+
+      for (unsigned int iteration = 0;; ++iteration)
+        {
+          history.push_back(states);
+          ContactSolution solution = system.solve(states, strengths);
+          StatusIterationRecord record;
+          record.reciprocal_condition = solution.reciprocal_condition;
+          if (!solution.solved)
+            {
+              outcome.result = ContactResult::singular;
+              outcome.iterations.push_back(record);
+              outcome.states   = states;
+              outcome.solution = solution;
+              break;
+            }
+
+          // Runaway: rigid relative motion far beyond the elastic scale.
+          Vector<double> elastic(solution.forces.size());
+          system.flexibility.vmult(elastic, solution.forces);
+          const double elastic_scale = std::max(gap_scale, elastic.linfty_norm());
+          Vector<double> rigid(solution.forces.size());
+          system.rigid_coupling.vmult(rigid, solution.rigid_motions);
+          const bool finite = std::all_of(solution.forces.begin(), solution.forces.end(),
+                                          [](const double f) { return std::isfinite(f); });
+          if (!finite || rigid.linfty_norm() > control.runaway_factor * elastic_scale)
+            {
+              outcome.result = ContactResult::runaway;
+              outcome.iterations.push_back(record);
+              outcome.states   = states;
+              outcome.solution = solution;
+              break;
+            }
+
+          const double force_scale = std::max(solution.forces.linfty_norm(), 1e-300);
+          const double force_tolerance = 1e-10 * force_scale;
+          const double gap_tolerance   = 1e-10 * elastic_scale;
+          const Vector<double> &f = solution.forces;
+          const Vector<double> &g = solution.relative_displacements;
+
+          std::vector<PairState<dim>> next = states;
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            {
+              PairState<dim> &    state    = next[p];
+              const PairStrength &strength = strengths[p];
+              const double        f_n      = f[dim * p];
+              const double        g_n      = g[dim * p];
+              switch (state.status)
+                {
+                  case PairStatus::stick:
+                  case PairStatus::slip:
+                    if (!state.at_cutoff && f_n > strength.tensile_force + force_tolerance)
+                      {
+                        state.status = PairStatus::open;
+                        break;
+                      }
+                    if (state.status == PairStatus::stick)
+                      {
+                        if (tangential_norm<dim>(f, p) >
+                            strength.shear_capacity(f_n) + force_tolerance)
+                          {
+                            state.status         = PairStatus::slip;
+                            state.slip_direction = tangential_direction<dim>(f, p);
+                          }
+                      }
+                    else if (frozen[p] != Freeze::slipping)
+                      {
+                        double along = 0;
+                        for (unsigned int i = 1; i < dim; ++i)
+                          along += state.slip_direction[i - 1] * g[dim * p + i];
+                        // Slip against the force: the pair sticks. (A
+                        // frictionless pair has no force to slip against.)
+                        if (along < -gap_tolerance &&
+                            (strength.friction_coefficient > 0 || strength.cohesion_force > 0))
+                          state.status = PairStatus::stick;
+                      }
+                    break;
+                  case PairStatus::open:
+                    if (g_n < -gap_tolerance)
+                      {
+                        // Closing: a pair that slid while open closes slipping
+                        // along its slide (Sec. 6.1), not stuck at its start.
+                        const bool frictionless = strength.friction_coefficient == 0 &&
+                                                  strength.cohesion_force == 0;
+                        if (frictionless || tangential_norm<dim>(g, p) > gap_tolerance)
+                          {
+                            state.status         = PairStatus::slip;
+                            state.slip_direction = tangential_direction<dim>(g, p);
+                          }
+                        else
+                          state.status = PairStatus::stick;
+                      }
+                    break;
+                }
+            }
+
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            {
+              record.n_changes += (next[p] == states[p]) ? 0 : 1;
+              record.n_stick += next[p].status == PairStatus::stick;
+              record.n_slip += next[p].status == PairStatus::slip;
+              record.n_open += next[p].status == PairStatus::open;
+              record.n_at_cutoff += next[p].at_cutoff;
+            }
+          outcome.iterations.push_back(record);
+          log << "    contact iteration " << std::setw(3) << iteration + 1 << ": "
+              << record.n_stick << " stick, " << record.n_slip << " slip, "
+              << record.n_open << " open";
+          if (record.n_at_cutoff > 0)
+            log << " (" << record.n_at_cutoff << " at the tension cut-off)";
+          log << ", " << record.n_changes << " changed" << std::endl;
+
+          if (record.n_changes == 0)
+            {
+              outcome.result   = ContactResult::converged;
+              outcome.states   = states;
+              outcome.solution = solution;
+              break;
+            }
+          if (iteration + 1 >= control.max_iterations)
+            {
+              outcome.result   = ContactResult::iteration_limit;
+              outcome.states   = states;
+              outcome.solution = solution;
+              break;
+            }
+
+          // A state seen before closes a cycle: break it (Sec. 6.2, 6.3).
+          const auto seen = std::find(history.begin(), history.end(), next);
+          if (seen != history.end())
+            {
+              unsigned int n_frozen = 0;
+              for (unsigned int p = 0; p < n_pairs; ++p)
+                {
+                  bool was_open = false, was_closed = false, was_stick = false,
+                       was_slip = false;
+                  for (auto h = seen; h != history.end(); ++h)
+                    {
+                      const PairStatus s = (*h)[p].status;
+                      was_open |= s == PairStatus::open;
+                      was_closed |= s != PairStatus::open;
+                      was_stick |= s == PairStatus::stick;
+                      was_slip |= s == PairStatus::slip;
+                    }
+                  if (was_open && was_closed && frozen[p] != Freeze::at_cutoff)
+                    {
+                      frozen[p]         = Freeze::at_cutoff;
+                      next[p].at_cutoff = true;
+                      if (next[p].status == PairStatus::open)
+                        next[p].status = PairStatus::stick;
+                      ++n_frozen;
+                    }
+                  else if (was_stick && was_slip && frozen[p] == Freeze::none)
+                    {
+                      frozen[p]      = Freeze::slipping;
+                      next[p].status = PairStatus::slip;
+                      next[p].slip_direction = tangential_direction<dim>(f, p);
+                      ++n_frozen;
+                    }
+                }
+              ++outcome.n_cycles_broken;
+              log << "    status cycle of length " << history.end() - seen
+                  << " broken: " << n_frozen << " pairs held" << std::endl;
+            }
+          states = next;
+        }
+      return outcome;
+    }
+
+    template std::vector<PairState<2>>
+    initial_states(const MixedSystem<2> &, const std::vector<PairStrength> &);
+    template std::vector<PairState<3>>
+    initial_states(const MixedSystem<3> &, const std::vector<PairStrength> &);
+    template ContactOutcome<2>
+    solve_contact_problem(const MixedSystem<2> &, const std::vector<PairStrength> &,
+                          std::vector<PairState<2>>, const StatusIterationControl &,
+                          std::ostream &);
+    template ContactOutcome<3>
+    solve_contact_problem(const MixedSystem<3> &, const std::vector<PairStrength> &,
+                          std::vector<PairState<3>>, const StatusIterationControl &,
+                          std::ostream &);
+  } // namespace contact
+} // namespace fdem
