@@ -261,6 +261,7 @@ namespace fdem
                                                     contact_outcome.states));
         first_pair += interface.pairs.size();
       }
+    const nlohmann::json hertz = hertz_reference(results);
     // Without equilibrium there is no field to show: only the summary says why.
     const bool converged = contact_outcome.converged();
     if (converged)
@@ -313,16 +314,15 @@ namespace fdem
     for (unsigned int i = 0; i < interfaces.size(); ++i)
       {
         unsigned int n_status[3] = {0, 0, 0};
-        double max_pressure = 0, extent = 0, normal_force = 0, tangential_force = 0;
+        double max_pressure = 0, normal_force = 0, tangential_force = 0;
         for (const auto &r : results[i])
           {
             ++n_status[static_cast<int>(r.status)];
             max_pressure = std::max(max_pressure, r.normal_pressure);
-            if (r.status != contact::PairStatus::open)
-              extent += r.area;
             normal_force += r.normal_force;
             tangential_force += r.tangential_force[0];
           }
+        const double extent = postprocess::contact_extent(results[i]);
         summary["interfaces"].push_back(
           {{"name", interfaces[i].name},
            {"block_I", blocks[interfaces[i].block_I]->name},
@@ -337,6 +337,8 @@ namespace fdem
            {"total_normal_force", normal_force},
            {"total_tangential_force", tangential_force}});
       }
+    if (!hertz.empty())
+      summary["hertz"] = hertz;
     summary["rigid_motions"] = std::vector<double>(contact_outcome.solution.rigid_motions.begin(),
                                                    contact_outcome.solution.rigid_motions.end());
     nlohmann::json iterations = nlohmann::json::array();
@@ -362,6 +364,57 @@ namespace fdem
                              contact::result_description(contact_outcome.result);
     postprocess::write_json(directory + "/summary.json", summary);
     log << "Results in " << directory << "/" << std::endl;
+  }
+
+  template <int dim>
+  nlohmann::json
+  Model<dim>::hertz_reference(
+    std::vector<std::vector<postprocess::PairResult<dim>>> &results) const
+  {
+    // Plane-strain Hertz contact of a cylinder on a half-space (the paper's
+    // example 4.A, its ref. [12]): a = sqrt(4 p r / (pi E')), q_max =
+    // 2 p / (pi a), 1/E' = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, and
+    // q(x) = q_max sqrt(1 - (x/a)^2). The generator's model is a half model,
+    // so p is twice the normal force on its interface.
+    if (dim != 2 ||
+        parameters.geometry.source != parameters::GeometryParameters::Source::hertz ||
+        interfaces.size() != 1 || !contact_outcome.converged())
+      return {};
+    const auto &cylinder   = parameters.materials.at(blocks[interfaces[0].block_I]->name);
+    const auto &foundation = parameters.materials.at(blocks[interfaces[0].block_J]->name);
+    const double inverse_E = (1 - std::pow(cylinder.poissons_ratio, 2)) / cylinder.youngs_modulus +
+                             (1 - std::pow(foundation.poissons_ratio, 2)) / foundation.youngs_modulus;
+    double half_load = 0;
+    for (const auto &r : results[0])
+      half_load -= r.normal_force;
+    const double p = 2 * half_load, r = parameters.geometry.hertz.radius * parameters.geometry.scale_factor;
+    const double a_exact = std::sqrt(4 * p * r * inverse_E / numbers::PI);
+    const double q_exact = 2 * p / (numbers::PI * a_exact);
+    // Distance from the symmetry axis: the pair that touches before loading.
+    Point<dim> axis         = results[0][0].position;
+    double     smallest_gap = results[0][0].initial_gap;
+    for (const auto &pair : results[0])
+      if (pair.initial_gap < smallest_gap)
+        {
+          smallest_gap = pair.initial_gap;
+          axis         = pair.position;
+        }
+    for (auto &pair : results[0])
+      {
+        const double x         = pair.position.distance(axis) / a_exact;
+        pair.reference_pressure = x < 1 ? q_exact * std::sqrt(1 - x * x) : 0.0;
+      }
+    double q_max = 0;
+    for (const auto &pair : results[0])
+      q_max = std::max(q_max, pair.normal_pressure);
+    const double a = postprocess::contact_extent(results[0]);
+    return {{"load_per_unit_length", p},
+            {"contact_half_width_exact", a_exact},
+            {"max_pressure_exact", q_exact},
+            {"contact_half_width", a},
+            {"max_pressure", q_max},
+            {"contact_half_width_error", a / a_exact - 1},
+            {"max_pressure_error", q_max / q_exact - 1}};
   }
 
   nlohmann::json

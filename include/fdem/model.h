@@ -8,6 +8,7 @@
 #include <fdem/contact/status_iteration.h>
 #include <fdem/geometry/mesh_description.h>
 #include <fdem/parameters/parameters.h>
+#include <fdem/postprocess/interface_output.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -87,6 +88,14 @@ namespace fdem
     std::string   expanded_parameters;
     std::ostream &log;
     TimerOutput   timer;
+
+    /**
+     * For the Hertz generator's model: the exact contact half-width and
+     * maximum pressure and the relative errors of the computed ones; the
+     * exact pressure of each pair goes into @p results. Empty otherwise.
+     */
+    nlohmann::json
+    hertz_reference(std::vector<std::vector<postprocess::PairResult<dim>>> &results) const;
 
     /** Index of the face group called @p name, or throws naming @p what. */
     types::boundary_id

@@ -89,6 +89,14 @@ namespace fdem
                                    {{"pi", numbers::PI}});
               pressures[id] = pressure;
             }
+          if (condition.traction != "0")
+            {
+              auto traction = std::make_shared<FunctionParser<dim>>(dim);
+              traction->initialize(FunctionParser<dim>::default_variable_names(),
+                                   condition.traction,
+                                   {{"pi", numbers::PI}});
+              tractions[id] = traction;
+            }
         }
       if (!normal_ids.empty())
         VectorTools::compute_no_normal_flux_constraints(
@@ -240,15 +248,24 @@ namespace fdem
         if (face->at_boundary())
           {
             const auto pressure = pressures.find(face->boundary_id());
-            if (pressure == pressures.end())
+            const auto given    = tractions.find(face->boundary_id());
+            if (pressure == pressures.end() && given == tractions.end())
               continue;
             fe_face_values.reinit(cell, face);
+            Vector<double> value(dim);
             for (const unsigned int q : fe_face_values.quadrature_point_indices())
               {
+                const Point<dim> &x = fe_face_values.quadrature_point(q);
+                Tensor<1, dim>    traction;
                 // A pressure pushes against the outward normal.
-                const Tensor<1, dim> traction =
-                  -pressure->second->value(fe_face_values.quadrature_point(q)) *
-                  fe_face_values.normal_vector(q);
+                if (pressure != pressures.end())
+                  traction -= pressure->second->value(x) * fe_face_values.normal_vector(q);
+                if (given != tractions.end())
+                  {
+                    given->second->vector_value(x, value);
+                    for (unsigned int d = 0; d < dim; ++d)
+                      traction[d] += value[d];
+                  }
                 for (unsigned int i = 0; i < n; ++i)
                   cell_rhs(i) += fe_face_values[displacement].value(i, q) *
                                  traction * fe_face_values.JxW(q);

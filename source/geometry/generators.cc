@@ -6,6 +6,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <gmsh.h>
 
@@ -32,16 +33,18 @@ namespace fdem
       }
 
       /**
-       * Element size @p size_near on @p curves, growing linearly with the
-       * distance from them to @p size_far. The growth rate of 0.25 keeps
-       * neighbouring elements within about 25% of each other's size. The
-       * sizes are those of the final mesh: Gmsh meshes at twice the size
-       * and then subdivides (see set_unstructured_quad_options()).
+       * Element size @p size_near on @p curves and up to @p fine_distance
+       * from them, then growing linearly with the distance to @p size_far.
+       * The growth rate of 0.25 keeps neighbouring elements within about 25%
+       * of each other's size. The sizes are those of the final mesh: Gmsh
+       * meshes at twice the size and then subdivides (see
+       * set_unstructured_quad_options()).
        */
       void
       set_size_field(const std::vector<int> &curves,
                      const double            size_near,
-                     const double            size_far)
+                     const double            size_far,
+                     const double            fine_distance = 0)
       {
         namespace field       = gmsh::model::mesh::field;
         const double growth   = 0.25;
@@ -56,10 +59,11 @@ namespace fdem
         field::setNumber(threshold, "InField", distance);
         field::setNumber(threshold, "SizeMin", near);
         field::setNumber(threshold, "SizeMax", far);
-        field::setNumber(threshold, "DistMin", 0.5 * near);
+        const double fine = std::max(0.5 * near, fine_distance);
+        field::setNumber(threshold, "DistMin", fine);
         field::setNumber(threshold,
                          "DistMax",
-                         0.5 * near + std::abs(far - near) / growth);
+                         fine + std::abs(far - near) / growth);
         field::setAsBackgroundMesh(threshold);
         // Only the field decides, not the points or the curvature.
         gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -97,6 +101,67 @@ namespace fdem
                                       points[(i + 1) % points.size()]));
         return gmsh::model::occ::addPlaneSurface(
           {gmsh::model::occ::addCurveLoop(lines)});
+      }
+
+      /**
+       * The 2D mesh @p half (in x >= 0) joined to its mirror image in the
+       * axis x = 0: the vertices of the faces of @p axis_group are shared,
+       * that group is removed (the axis lies inside the blocks), and every
+       * block and every other face group holds its part and its mirror
+       * image. The cells of the image are flipped back to positive measure.
+       */
+      MeshDescription<2>
+      join_mirror_image(const MeshDescription<2> &half,
+                        const std::string        &axis_group)
+      {
+        const auto found = std::find(half.face_group_names.begin(),
+                                     half.face_group_names.end(),
+                                     axis_group);
+        Assert(found != half.face_group_names.end(), ExcInternalError());
+        const types::boundary_id axis = found - half.face_group_names.begin();
+
+        constexpr unsigned int    none = numbers::invalid_unsigned_int;
+        std::vector<unsigned int> image(half.vertices.size(), none);
+        for (const auto &face : half.faces)
+          if (face.boundary_id == axis)
+            for (const unsigned int v : face.vertices)
+              image[v] = v;
+
+        MeshDescription<2> full = half;
+        for (unsigned int v = 0; v < half.vertices.size(); ++v)
+          if (image[v] == none)
+            {
+              image[v] = full.vertices.size();
+              full.vertices.emplace_back(-half.vertices[v][0],
+                                         half.vertices[v][1]);
+            }
+
+        // Swapping the vertices along the cell's first direction undoes the
+        // change of orientation of the reflection.
+        for (const auto &cell : half.cells)
+          {
+            CellData<2> mirrored = cell;
+            for (const unsigned int i : {0u, 1u, 2u, 3u})
+              mirrored.vertices[i] = image[cell.vertices[i ^ 1u]];
+            full.cells.push_back(mirrored);
+          }
+
+        full.faces.clear();
+        for (const auto &face : half.faces)
+          if (face.boundary_id != axis)
+            {
+              CellData<1> renumbered = face;
+              renumbered.boundary_id -= (face.boundary_id > axis);
+              full.faces.push_back(renumbered);
+              CellData<1> mirrored = renumbered;
+              mirrored.vertices[0] = image[face.vertices[1]];
+              mirrored.vertices[1] = image[face.vertices[0]];
+              full.faces.push_back(mirrored);
+            }
+        full.face_group_names.erase(full.face_group_names.begin() + axis);
+
+        GridTools::consistently_order_cells(full.cells);
+        return full;
       }
 
       std::vector<int>
@@ -323,9 +388,13 @@ namespace fdem
           add_group(1, {foundation_surface}, "foundation surface");
           add_group(1, {foundation_side}, "foundation side");
 
+          // The contact stresses reach about one contact width into both
+          // bodies: keep the mesh as fine as the contact zone there, so that
+          // refining the contact zone refines where the solution varies.
           set_size_field(contact_curves,
                          hertz.contact_zone_width / n,
-                         hertz.mesh_size);
+                         hertz.mesh_size,
+                         0.5 * hertz.contact_zone_width);
           set_unstructured_quad_options();
           gmsh::model::mesh::generate(2);
 
@@ -352,7 +421,11 @@ namespace fdem
                 }
             }
         });
-      return extract_current_gmsh_model<2>(name);
+      // The full model is the half model and its mirror image: the same
+      // size field on both sides, the contact zone at x_{-i} = -x_i exactly,
+      // and a symmetric mesh for symmetric loads.
+      const MeshDescription<2> half = extract_current_gmsh_model<2>(name);
+      return hertz.full_model ? join_mirror_image(half, "symmetry") : half;
     }
 
 

@@ -215,6 +215,13 @@ namespace fdem
                             Patterns::Double(0),
                             "Element size far from the contact zone (model "
                             "length unit).");
+          prm.declare_entry(
+            "Full model",
+            "false",
+            Patterns::Bool(),
+            "Model the whole cylinder width (x from -r to r) on a foundation "
+            "from -W to W instead of the half model x >= 0; needed for "
+            "tangential loads, e.g. Cattaneo-Mindlin partial slip.");
         }
         prm.leave_subsection();
 
@@ -317,7 +324,8 @@ namespace fdem
           hertz.contact_zone_width = prm.get_double("Contact zone width");
           hertz.n_contact_zone_elements =
             prm.get_integer("Elements in contact zone");
-          hertz.mesh_size = prm.get_double("Mesh size");
+          hertz.mesh_size  = prm.get_double("Mesh size");
+          hertz.full_model = prm.get_bool("Full model");
         }
         prm.leave_subsection();
 

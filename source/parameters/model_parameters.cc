@@ -17,7 +17,9 @@ namespace fdem
     using namespace dealii;
 
     bool
-    expression_parses(const std::string &expression, const unsigned int dim)
+    expression_parses(const std::string &expression,
+                      const unsigned int dim,
+                      const unsigned int n_components)
     {
       // muparser writes its own diagnostics to std::cerr; the caller reports
       // the error in one line instead.
@@ -29,13 +31,13 @@ namespace fdem
           // Evaluating once makes the parser report unknown names now.
           if (dim == 2)
             {
-              FunctionParser<2> f(1);
+              FunctionParser<2> f(n_components);
               f.initialize("x,y", expression, {{"pi", numbers::PI}});
               f.value(Point<2>());
               restore();
               return true;
             }
-          FunctionParser<3> f(1);
+          FunctionParser<3> f(n_components);
           f.initialize("x,y,z", expression, {{"pi", numbers::PI}});
           f.value(Point<3>());
           restore();
@@ -136,6 +138,12 @@ namespace fdem
                         "positive when it pushes into the body, as a function "
                         "of the coordinates x, y (and z in 3D), e.g. "
                         "'9.81*max(0, 30-y)'.");
+      prm.declare_entry("Traction",
+                        "0",
+                        Patterns::Anything(),
+                        "Traction on this boundary part (force/length^2) as a "
+                        "vector function of x, y (and z in 3D), components "
+                        "separated by ';', e.g. '10; 0'; '0' for none.");
     }
 
     void
@@ -151,7 +159,14 @@ namespace fdem
       AssertThrow(!Utilities::trim(pressure).empty(),
                   ExcMessage(path + "/Pressure: give an expression, '0' for "
                                     "none."));
-      AssertThrow(expression_parses(pressure, dim),
+      traction = prm.get("Traction");
+      if (Utilities::trim(traction) == "0")
+        traction = "0";
+      AssertThrow(traction == "0" || expression_parses(traction, dim, dim),
+                  ExcMessage(path + "/Traction: cannot parse '" + traction +
+                             "' as " + std::to_string(dim) +
+                             " functions of the coordinates separated by ';'."));
+      AssertThrow(expression_parses(pressure, dim, 1),
                   ExcMessage(path + "/Pressure: cannot parse '" + pressure +
                              "' as a function of " +
                              (dim == 2 ? "x, y." : "x, y, z.")));

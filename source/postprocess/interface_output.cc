@@ -11,7 +11,10 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <fstream>
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
+#include <numeric>
 
 namespace fdem
 {
@@ -54,6 +57,164 @@ namespace fdem
       return results;
     }
 
+    namespace
+    {
+      /**
+       * Where q^2, fitted by c0 + c1 t + c2 t^2 over the points (t_i, q_i)
+       * (t measured from the last closed pair towards the open one, which is
+       * at t = gap), reaches zero: the root nearest t = 0 within
+       * [-spacing, gap], where spacing is the distance to the previous closed
+       * pair (the last closed pair may lie just beyond the true edge and
+       * carry a small force); gap/2 if there is none.
+       */
+      double
+      edge_of_pressure_profile(std::vector<double> t,
+                               std::vector<double> q,
+                               const double        gap)
+      {
+        const unsigned int n = t.size();
+        // Order by t: the end pair (t = 0) last.
+        std::vector<unsigned int> order(n);
+        std::iota(order.begin(), order.end(), 0);
+        std::sort(order.begin(), order.end(), [&](auto a, auto b) { return t[a] < t[b]; });
+        const std::vector<double> t_in = t, q_in = q;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            t[i] = t_in[order[i]];
+            q[i] = q_in[order[i]];
+          }
+        if (n < 3)
+          {
+            if (n == 2 && q[0] > q[1])
+              {
+                // Linear extrapolation of q^2 from the last two pairs.
+                const double q0 = q[1] * q[1], q1 = q[0] * q[0];
+                const double root = -q0 * (t[0] - t[1]) / (q1 - q0);
+                if (root >= t[0] && root <= gap)
+                  return root;
+              }
+            return 0.5 * gap;
+          }
+        // Least squares by the normal equations (3 x 3), scaled by the gap.
+        FullMatrix<double> normal(3, 3);
+        Vector<double>     rhs(3), c(3);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double x = t[i] / gap, y = q[i] * q[i];
+            const double basis[3] = {1, x, x * x};
+            for (unsigned int a = 0; a < 3; ++a)
+              {
+                rhs[a] += basis[a] * y;
+                for (unsigned int b = 0; b < 3; ++b)
+                  normal(a, b) += basis[a] * basis[b];
+              }
+          }
+        normal.gauss_jordan();
+        normal.vmult(c, rhs);
+        // The smallest root in [0, 1] of c0 + c1 x + c2 x^2.
+        std::vector<double> roots;
+        if (std::abs(c[2]) < 1e-14 * (std::abs(c[0]) + std::abs(c[1])))
+          roots.push_back(-c[0] / c[1]);
+        else
+          {
+            const double discriminant = c[1] * c[1] - 4 * c[2] * c[0];
+            if (discriminant >= 0)
+              for (const double sign : {-1.0, 1.0})
+                roots.push_back((-c[1] + sign * std::sqrt(discriminant)) / (2 * c[2]));
+          }
+        const double lower = t[n - 2] / gap; // the previous pair, < 0
+        double       best  = 0.5;
+        bool         found = false;
+        for (const double x : roots)
+          if (std::isfinite(x) && x >= lower && x <= 1 &&
+              (!found || std::abs(x) < std::abs(best)))
+            {
+              best  = x;
+              found = true;
+            }
+        return best * gap;
+      }
+    } // namespace
+
+    template <int dim>
+    double
+    contact_extent(const std::vector<PairResult<dim>> &results)
+    {
+      if constexpr (dim == 3)
+        {
+          double area = 0;
+          for (const auto &r : results)
+            area += (r.status != contact::PairStatus::open) ? r.area : 0;
+          return area;
+        }
+      const unsigned int n = results.size();
+      if (n == 0)
+        return 0;
+      // The chord: from the pair farthest from pair 0 to the one farthest from it.
+      const auto farthest_from = [&](const Point<dim> &x) {
+        unsigned int best = 0;
+        for (unsigned int k = 1; k < n; ++k)
+          if (results[k].position.distance(x) > results[best].position.distance(x))
+            best = k;
+        return best;
+      };
+      const unsigned int   A = farthest_from(results[0].position);
+      const unsigned int   B = farthest_from(results[A].position);
+      Tensor<1, dim>       e = results[B].position - results[A].position;
+      if (e.norm() > 0)
+        e /= e.norm();
+      std::vector<unsigned int> order(n);
+      std::iota(order.begin(), order.end(), 0);
+      std::vector<double> s(n);
+      for (unsigned int k = 0; k < n; ++k)
+        s[k] = (results[k].position - results[A].position) * e;
+      std::sort(order.begin(), order.end(), [&](auto a, auto b) { return s[a] < s[b]; });
+      const auto closed = [&](const unsigned int i) {
+        return results[order[i]].status != contact::PairStatus::open;
+      };
+      const auto pressure = [&](const unsigned int i) {
+        return std::max(results[order[i]].normal_pressure, 0.0);
+      };
+
+      double extent = 0;
+      for (unsigned int i = 0; i < n;)
+        {
+          if (!closed(i))
+            {
+              ++i;
+              continue;
+            }
+          unsigned int j = i;
+          while (j + 1 < n && closed(j + 1))
+            ++j;
+          const double s_first = s[order[i]], s_last = s[order[j]];
+          const double half    = 0.5 * (s_last - s_first);
+          double       left = s_first, right = s_last;
+          // Edge towards an open neighbour, from the outer half of the run.
+          const auto edge = [&](const unsigned int end, const int step, const double s_open) {
+            std::vector<double> t, q;
+            for (unsigned int k = i; k <= j; ++k)
+              {
+                const double distance = std::abs(s[order[k]] - s[order[end]]);
+                if (distance <= half + 1e-12 * (1 + half))
+                  {
+                    // t from the end pair towards the open one: <= 0 inside.
+                    t.push_back(step * (s[order[k]] - s[order[end]]));
+                    q.push_back(pressure(k));
+                  }
+              }
+            return s[order[end]] + step * edge_of_pressure_profile(t, q, std::abs(s_open - s[order[end]]));
+          };
+          if (i > 0)
+            left = edge(i, -1, s[order[i - 1]]);
+          if (j + 1 < n)
+            right = edge(j, +1, s[order[j + 1]]);
+          extent += right - left;
+          i = j + 1;
+        }
+      return extent;
+    }
+
     template <int dim>
     void
     write_interface_csv(const std::string &                              filename,
@@ -64,7 +225,8 @@ namespace fdem
       AssertThrow(out.good(), ExcMessage("Cannot write '" + filename + "'."));
       out << "interface,pair,x,y" << (dim == 3 ? ",z" : "") << ",normal_force,"
           << (dim == 2 ? "tangential_force" : "tangential_force_1,tangential_force_2")
-          << ",normal_pressure,shear_stress,gap,slip,status,area,initial_gap\n";
+          << ",normal_pressure,shear_stress,gap,slip,status,area,initial_gap,"
+             "reference_normal_pressure\n";
       out << std::setprecision(12);
       for (unsigned int i = 0; i < interfaces.size(); ++i)
         for (unsigned int k = 0; k < results[i].size(); ++k)
@@ -78,7 +240,10 @@ namespace fdem
               out << ',' << f;
             out << ',' << r.normal_pressure << ',' << r.shear_stress << ','
                 << r.gap << ',' << r.slip << ',' << contact::status_name(r.status) << ','
-                << r.area << ',' << r.initial_gap << '\n';
+                << r.area << ',' << r.initial_gap << ',';
+            if (std::isfinite(r.reference_pressure))
+              out << r.reference_pressure;
+            out << '\n';
           }
     }
 
@@ -145,6 +310,7 @@ namespace fdem
     }
 
 #define FDEM_INSTANTIATE(dim)                                                   \
+  template double contact_extent(const std::vector<PairResult<dim>> &);         \
   template std::vector<PairResult<dim>> pair_results(                           \
     const contact::Interface<dim> &, const unsigned int,                        \
     const contact::ContactSolution &, const std::vector<contact::PairState<dim>> &); \

@@ -166,6 +166,7 @@ namespace fdem
 
     private:
       std::map<types::boundary_id, std::shared_ptr<Function<dim>>> pressures;
+      std::map<types::boundary_id, std::shared_ptr<Function<dim>>> tractions;
       std::vector<types::boundary_id> interface_ids;
       TrilinosWrappers::SparseMatrix  stiffness_matrix;
       std::unique_ptr<DirectSolver>   direct_solver;

@@ -42,6 +42,15 @@ namespace fdem
      * the arc), "foundation surface" (rest of y = 0), "foundation side"
      * (x = W). In the contact zone both sides have vertices at exactly
      * x_i = i Lc / N, so that pairs can be found along the vertical.
+     *
+     * With hertz.full_model, the full model: the half model's mesh and its
+     * mirror image in x = 0, joined along the axis, so that the mesh is
+     * exactly symmetric. Blocks "cylinder" (the lower half: |x| <= r,
+     * y <= r) and "foundation" ([-W, W] x [-D, 0]). Face groups, in this
+     * order: "contact surface" (|x| <= Lc on both blocks, 2N faces on each,
+     * vertices at x_i for i = -N..N), "load" (y = r, x from -r to r),
+     * "bottom", "cylinder surface", "foundation surface" and "foundation
+     * side" (x = -W and x = W), each on both sides; there is no "symmetry".
      */
     MeshDescription<2>
     make_hertz_mesh(const parameters::GeometryParameters::Hertz &hertz);

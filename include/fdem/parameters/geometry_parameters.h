@@ -63,8 +63,9 @@ namespace fdem
       };
 
       /**
-       * Subsection "Hertz": half model (x >= 0) of a cylinder pressed onto
-       * a foundation, lengths in the user's unit (e.g. mm).
+       * Subsection "Hertz": a cylinder pressed onto a foundation, as the
+       * half model (x >= 0) or the full model, lengths in the user's unit
+       * (e.g. mm).
        */
       struct Hertz
       {
@@ -76,6 +77,11 @@ namespace fdem
         unsigned int n_contact_zone_elements;
         /** Element size far from the contact zone. */
         double mesh_size;
+        /**
+         * Whether to model the whole width (the half model and its mirror
+         * image in x = 0) instead of the half model x >= 0.
+         */
+        bool full_model = false;
       };
 
       /** Subsection "Inclined block": a block on an inclined plane. */

@@ -60,6 +60,11 @@ namespace fdem
        * function of x, y (, z); "0" for none.
        */
       std::string pressure = "0";
+      /**
+       * Traction vector (force/length^2) as functions of x, y (, z)
+       * separated by ';'; "0" for none.
+       */
+      std::string traction = "0";
     };
 
     /** Geometric pairing and strength of one interface: "Interfaces/<name>". */
@@ -140,9 +145,11 @@ namespace fdem
       bool write_vtu = true;
     };
 
-    /** True if @p expression is a valid function of x, y (, z) in @p dim dimensions. */
+    /** True if @p expression is a valid function of x, y (, z) with @p n_components components (separated by ';'). */
     bool
-    expression_parses(const std::string &expression, const unsigned int dim);
+    expression_parses(const std::string &expression,
+                      const unsigned int dim,
+                      const unsigned int n_components = 1);
 
     /** Parses "a, b, c" into exactly n_components numbers, or throws naming path. */
     std::vector<double>

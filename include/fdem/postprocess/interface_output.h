@@ -7,6 +7,7 @@
 #include <fdem/contact/mixed_system.h>
 
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,8 @@ namespace fdem
       double slip = 0;
       contact::PairStatus status = contact::PairStatus::stick;
       double area = 0, initial_gap = 0;
+      /** Normal pressure of an exact solution here, if the case has one (else NaN, not written). */
+      double reference_pressure = std::numeric_limits<double>::quiet_NaN();
     };
 
     /** Per-pair results of @p interface, whose first pair is @p first_pair overall. */
@@ -42,6 +45,21 @@ namespace fdem
                  const unsigned int                      first_pair,
                  const contact::ContactSolution &            solution,
                  const std::vector<contact::PairState<dim>> &states);
+
+    /**
+     * Extent of the contact zone: its length in 2D (design/formulation.md
+     * Sec. 5 asks for an estimate from the whole pressure profile, not the
+     * last closed pair, which jumps by a pair spacing). Pairs are ordered
+     * along the chord of the interface; each run of closed pairs counts from
+     * edge to edge. An edge at the end of the interface is that end; an edge
+     * next to an open pair is where the square of the pressure, fitted by a
+     * quadratic over the outer half of the run, reaches zero (exact in form
+     * for the elliptic Hertz profile). In 3D: the total tributary area of
+     * the closed pairs.
+     */
+    template <int dim>
+    double
+    contact_extent(const std::vector<PairResult<dim>> &results);
 
     /** Writes all interfaces' pairs into one CSV table. */
     template <int dim>
