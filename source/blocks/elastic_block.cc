@@ -71,7 +71,7 @@ namespace fdem
       const std::vector<types::boundary_id> &interface_group_ids)
     {
       interface_ids = interface_group_ids;
-      AffineConstraints<double> fixed, normal;
+      AffineConstraints<double> fixed, normal, plate;
       std::set<types::boundary_id> normal_ids;
       for (const auto &[id, condition] : boundary_conditions)
         {
@@ -80,6 +80,8 @@ namespace fdem
               mapping, dof_handler, id, Functions::ZeroFunction<dim>(dim), fixed);
           else if (condition.constraint == parameters::Constraint::normal)
             normal_ids.insert(id);
+          else if (condition.constraint == parameters::Constraint::plate)
+            add_plate_constraints(id, plate);
 
           if (condition.pressure != "0")
             {
@@ -102,13 +104,57 @@ namespace fdem
         VectorTools::compute_no_normal_flux_constraints(
           dof_handler, 0, normal_ids, normal, mapping);
 
-      // Where a fixed part meets a roller, the fixed condition wins.
+      // Where a fixed part meets a roller or a plate, the fixed condition
+      // wins; where a roller meets a plate, the roller.
       dirichlet_constraints.clear();
-      dirichlet_constraints.merge(normal);
+      dirichlet_constraints.merge(plate);
+      dirichlet_constraints.merge(
+        normal, AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
       dirichlet_constraints.merge(
         fixed, AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
       dirichlet_constraints.close();
       constraints.copy_from(dirichlet_constraints);
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::add_plate_constraints(const types::boundary_id   id,
+                                             AffineConstraints<double> &plate) const
+    {
+      // The part's normal must be one coordinate axis: its dofs along that
+      // axis all follow the first one.
+      int                                  axis = -1;
+      std::set<types::global_dof_index>    dofs;
+      std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+            {
+              const Tensor<1, dim> n = cell->face(f)->center() - cell->center();
+              int                  face_axis = 0;
+              for (unsigned int d = 1; d < dim; ++d)
+                if (std::abs(n[d]) > std::abs(n[face_axis]))
+                  face_axis = d;
+              AssertThrow(axis < 0 || axis == face_axis,
+                          ExcMessage("Block '" + name +
+                                     "': a boundary part with Constraint = plate "
+                                     "must be flat and normal to a coordinate axis."));
+              axis = face_axis;
+              cell->face(f)->get_dof_indices(face_dofs);
+              for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                if (fe.face_system_to_component_index(i).first ==
+                    static_cast<unsigned int>(axis))
+                  dofs.insert(face_dofs[i]);
+            }
+      if (dofs.size() < 2)
+        return;
+      const types::global_dof_index master = *dofs.begin();
+      for (const types::global_dof_index dof : dofs)
+        if (dof != master)
+          {
+            plate.add_line(dof);
+            plate.add_entry(dof, master, 1.0);
+          }
     }
 
     template <int dim>

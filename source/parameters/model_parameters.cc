@@ -127,10 +127,13 @@ namespace fdem
     {
       prm.declare_entry("Constraint",
                         "none",
-                        Patterns::Selection("none|fixed|normal"),
+                        Patterns::Selection("none|fixed|normal|plate"),
                         "Displacement constraint on this boundary part: none, "
-                        "fixed (all components zero) or normal (zero "
-                        "displacement along the boundary normal, a roller).");
+                        "fixed (all components zero), normal (zero "
+                        "displacement along the boundary normal, a roller) or "
+                        "plate (the same displacement along the normal at "
+                        "every node, as under a rigid loading plate; the part "
+                        "must be flat and normal to a coordinate axis).");
       prm.declare_entry("Pressure",
                         "0",
                         Patterns::Anything(),
@@ -154,6 +157,7 @@ namespace fdem
       const std::string type = prm.get("Constraint");
       constraint             = (type == "fixed"  ? Constraint::fixed :
                                 type == "normal" ? Constraint::normal :
+                                type == "plate"  ? Constraint::plate :
                                                    Constraint::none);
       pressure               = prm.get("Pressure");
       AssertThrow(!Utilities::trim(pressure).empty(),

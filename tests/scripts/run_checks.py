@@ -8,6 +8,11 @@
                                          doc/parameters.md must be what
                                          --print-parameters prints (--write
                                          regenerates it)
+  run_checks.py no-equilibrium EXE CASE.prm
+                                         the case has no static equilibrium:
+                                         exit code 3, one line on stderr, a
+                                         summary.json that says why, and no
+                                         result files that look valid
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -106,6 +111,22 @@ def check_bad_input(exe, prm):
             assert "summary.json" not in files, "a summary.json was written"
 
 
+def check_no_equilibrium(exe, prm):
+    with tempfile.TemporaryDirectory() as workdir:
+        result = run(exe, prm, workdir)
+        lines = result.stderr.strip().splitlines()
+        print("stderr:", result.stderr.strip())
+        assert result.returncode == 3, f"exit code {result.returncode}, expected 3"
+        assert len(lines) == 1 and "no static equilibrium" in lines[0], lines
+        case = os.path.splitext(os.path.basename(prm))[0]
+        out = os.path.join(workdir, case + "-output")
+        summary = json.load(open(os.path.join(out, "summary.json")))
+        assert summary["status"].startswith("no static equilibrium"), summary["status"]
+        assert summary["contact"]["converged"] is False
+        for name in os.listdir(out):
+            assert not name.endswith((".vtu", ".pvd", ".csv")), f"{name} was written"
+
+
 def parameters_doc(exe, doc, write=False):
     listing = subprocess.run([exe, "--print-parameters"], capture_output=True,
                              text=True, check=True).stdout
@@ -127,5 +148,6 @@ if __name__ == "__main__":
     if command == "parameters-doc":
         parameters_doc(exe, path, "--write" in sys.argv)
     else:
-        {"vtu": check_vtu, "bad-input": check_bad_input}[command](exe, path)
+        {"vtu": check_vtu, "bad-input": check_bad_input,
+         "no-equilibrium": check_no_equilibrium}[command](exe, path)
     print("passed")

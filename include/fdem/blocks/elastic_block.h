@@ -176,6 +176,15 @@ namespace fdem
       std::vector<Point<dim>>   dof_support_points;
       std::vector<unsigned int> dof_components;
 
+      /**
+       * Constraints of a rigid loading plate on boundary part @p id: the
+       * displacement along the part's normal (a coordinate axis) is the same
+       * at all its nodes.
+       */
+      void
+      add_plate_constraints(const types::boundary_id id,
+                            AffineConstraints<double> &plate) const;
+
       /** Values of every rigid mode at every dof (n_dofs x n_rigid_modes). */
       FullMatrix<double>
       rigid_modes_at_dofs() const;

@@ -37,7 +37,9 @@ namespace fdem
     {
       none,
       fixed,
-      normal
+      normal,
+      /** The same normal displacement at every node: a rigid loading plate. */
+      plate
     };
 
     /**
