@@ -27,6 +27,18 @@
 
 namespace
 {
+  /** The x coordinates of the listed vertices, sorted. */
+  std::vector<double>
+  sorted_x_coordinates(const fdem::geometry::MeshDescription<2> &mesh,
+                       const std::set<unsigned int> &            vertices)
+  {
+    std::vector<double> x;
+    for (const unsigned int v : vertices)
+      x.push_back(mesh.vertices[v][0]);
+    std::sort(x.begin(), x.end());
+    return x;
+  }
+
   using namespace dealii;
   using namespace fdem;
   using fdem::geometry::MeshDescription;
@@ -517,15 +529,8 @@ TEST(Hertz, ContactZoneVerticesMatchInX)
   ASSERT_EQ(arc_vertices.size(), n + 1);
   ASSERT_EQ(top_vertices.size(), n + 1);
 
-  const auto sorted_x = [&](const std::set<unsigned int> &vertices) {
-    std::vector<double> x;
-    for (const unsigned int v : vertices)
-      x.push_back(mesh.vertices[v][0]);
-    std::sort(x.begin(), x.end());
-    return x;
-  };
-  const std::vector<double> arc_x = sorted_x(arc_vertices),
-                            top_x = sorted_x(top_vertices);
+  const std::vector<double> arc_x = sorted_x_coordinates(mesh, arc_vertices),
+                            top_x = sorted_x_coordinates(mesh, top_vertices);
   for (unsigned int i = 0; i <= n; ++i)
     {
       EXPECT_NEAR(arc_x[i], top_x[i], 1e-12 * lc);
@@ -685,15 +690,8 @@ TEST(Hertz, FullModelContactZoneVerticesMatchInX)
       ASSERT_EQ(arc_vertices.size(), 2u * n + 1);
       ASSERT_EQ(top_vertices.size(), 2u * n + 1);
 
-      const auto sorted_x = [&](const std::set<unsigned int> &vertices) {
-        std::vector<double> x;
-        for (const unsigned int v : vertices)
-          x.push_back(mesh.vertices[v][0]);
-        std::sort(x.begin(), x.end());
-        return x;
-      };
-      const std::vector<double> arc_x = sorted_x(arc_vertices),
-                                top_x = sorted_x(top_vertices);
+      const std::vector<double> arc_x = sorted_x_coordinates(mesh, arc_vertices),
+                                top_x = sorted_x_coordinates(mesh, top_vertices);
       for (int i = -n; i <= n; ++i)
         {
           EXPECT_NEAR(arc_x[i + n], top_x[i + n], 1e-12 * lc);
