@@ -94,11 +94,13 @@ main(int argc, char *argv[])
           return 0;
         }
       const nlohmann::json summary = fdem::run_case(prm_file, std::cout);
-      if (summary["status"] != "completed")
+      const std::string    status  = summary["status"];
+      if (status != "completed")
         {
-          std::cerr << "fdem-slope: " << summary["status"].get<std::string>()
-                    << " (see summary.json)." << std::endl;
-          return 3;
+          // 3: no static equilibrium at all; 4: no converged safety factor
+          // (summary.json holds the bracket).
+          std::cerr << "fdem-slope: " << status << " (see summary.json)." << std::endl;
+          return status.rfind("no static equilibrium", 0) == 0 ? 3 : 4;
         }
     }
   catch (const std::exception &error)

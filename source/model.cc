@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/blocks/surface_loads.h>
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/block_output.h>
@@ -7,6 +8,7 @@
 #include <fdem/postprocess/output_files.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -41,7 +43,10 @@ namespace fdem
     assemble_and_factorize();
     build_interfaces();
     compute_flexibility();
-    solve_contact();
+    if (parameters.safety_factor.compute)
+      compute_safety_factor();
+    else
+      solve_contact();
     if (contact_outcome.converged())
       recover_block_displacements();
     output_results();
@@ -101,6 +106,24 @@ namespace fdem
     for (const std::string &name : parameters.interface_names)
       interface_ids.push_back(face_group(name, "Interfaces/Names"));
 
+    // Surface loads: boundary pressures and tractions, and the pore pressure
+    // of each interface, which pushes on both sides' faces.
+    std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> pressures, tractions;
+    for (const std::string &name : parameters.boundary_names)
+      {
+        const auto &boundary = parameters.boundaries.at(name);
+        const auto  id       = face_group(name, "Boundaries/Names");
+        if (boundary.pressure != "0")
+          pressures[id] = blocks::make_pressure_function<dim>(boundary.pressure, parameters.water);
+        if (boundary.traction != "0")
+          tractions[id] = blocks::make_traction_function<dim>(boundary.traction);
+      }
+    for (const std::string &name : parameters.interface_names)
+      if (parameters.interfaces.at(name).pore_pressure != "0")
+        pressures[face_group(name, "Interfaces/Names")] =
+          blocks::make_pressure_function<dim>(parameters.interfaces.at(name).pore_pressure,
+                                              parameters.water);
+
     blocks.clear();
     for (unsigned int b = 0; b < mesh.block_names.size(); ++b)
       {
@@ -111,6 +134,7 @@ namespace fdem
             {b, parameters.materials.at(name)}},
           parameters.fe_degree));
         blocks.back()->setup_constraints(conditions, interface_ids);
+        blocks.back()->set_surface_loads(pressures, tractions);
         blocks.back()->find_free_rigid_modes();
         log << "  block '" << name << "': " << blocks.back()->dof_handler.n_dofs()
             << " dofs, " << blocks.back()->n_free_rigid_modes()
@@ -193,10 +217,12 @@ namespace fdem
         for (const auto &pair : interface.pairs)
           {
             contact::PairStrength strength;
+            const double          reduction = p.sliding_surface ? K : 1.0;
             if (!p.frictionless)
               {
-                strength.friction_coefficient = std::tan(p.friction_angle * numbers::PI / 180) / K;
-                strength.cohesion_force       = p.cohesion * pair.area / K;
+                strength.friction_coefficient =
+                  std::tan(p.friction_angle * numbers::PI / 180) / reduction;
+                strength.cohesion_force = p.cohesion * pair.area / reduction;
               }
             strength.tensile_force = p.tensile_strength * pair.area;
             strengths.push_back(strength);
@@ -207,24 +233,80 @@ namespace fdem
 
   template <int dim>
   void
-  Model<dim>::solve_contact(const double strength_reduction)
+  Model<dim>::solve_contact(const double strength_reduction_factor)
   {
     TimerOutput::Scope scope(timer, "contact");
-    const auto strengths = pair_strengths(strength_reduction);
-    // Warm start from the last states when there are any (Sec. 6).
-    auto states = contact_outcome.states.size() == mixed_system->n_pairs() ?
-                    contact_outcome.states :
+    const auto strengths = pair_strengths(strength_reduction_factor);
+    // Warm start from the last states with a static solution (Sec. 6).
+    auto states = last_converged.states.size() == mixed_system->n_pairs() ?
+                    last_converged.states :
                     contact::initial_states(*mixed_system, strengths);
     contact::StatusIterationControl control;
     control.max_iterations = parameters.contact.max_status_iterations;
     control.runaway_factor = parameters.contact.runaway_factor;
     log << "  contact problem:" << std::endl;
-    contact_outcome = contact::solve_contact_problem(*mixed_system, strengths, states, control, log);
+    contact_outcome    = contact::solve_contact_problem(*mixed_system, strengths, states, control, log);
+    strength_reduction = strength_reduction_factor;
+    if (contact_outcome.converged())
+      {
+        last_converged   = contact_outcome;
+        last_converged_K = strength_reduction_factor;
+      }
     log << "  contact problem " << contact::result_description(contact_outcome.result)
         << " after " << contact_outcome.iterations.size() << " solves";
     if (contact_outcome.n_cycles_broken > 0)
       log << " (" << contact_outcome.n_cycles_broken << " status cycles broken)";
     log << std::endl;
+  }
+
+  template <int dim>
+  std::vector<bool>
+  Model<dim>::pairs_on_sliding_surface() const
+  {
+    std::vector<bool> on_surface;
+    for (const auto &interface : interfaces)
+      on_surface.insert(on_surface.end(),
+                        interface.pairs.size(),
+                        parameters.interfaces.at(interface.name).sliding_surface);
+    return on_surface;
+  }
+
+  template <int dim>
+  void
+  Model<dim>::compute_safety_factor()
+  {
+    const std::vector<bool> on_surface = pairs_on_sliding_surface();
+    AssertThrow(std::find(on_surface.begin(), on_surface.end(), true) != on_surface.end(),
+                ExcMessage("Interfaces: no interface is a sliding surface; set "
+                           "'Sliding surface = true' on one, or Safety factor/"
+                           "Compute = false."));
+    log << "Safety factor (eqs. 10-13):" << std::endl;
+    const auto solve = [&](const double K) {
+      solve_contact(K);
+      const auto solution =
+        safety_factor::resisting_and_sliding_forces(contact_outcome, pair_strengths(K), on_surface);
+      // Each step with a static solution can be looked at in ParaView.
+      if (solution.converged && parameters.output.write_vtu)
+        {
+          recover_block_displacements();
+          const unsigned int step = step_files.empty() ? 0 : step_files.back().time + 1;
+          write_vtu("-step" + Utilities::int_to_string(step, 3), step, step_files);
+        }
+      return solution;
+    };
+    safety_factor_result = safety_factor::iterate(solve, parameters.safety_factor, log);
+    // The model's state: the last one with a static solution.
+    if (last_converged.states.size() == mixed_system->n_pairs())
+      {
+        contact_outcome    = last_converged;
+        strength_reduction = last_converged_K;
+      }
+    log << "Safety factor: ";
+    if (safety_factor_result.converged)
+      log << std::setprecision(8) << safety_factor_result.safety_factor;
+    else
+      log << "not converged";
+    log << " (" << safety_factor_result.reason << ")" << std::endl;
   }
 
   template <int dim>
@@ -246,42 +328,65 @@ namespace fdem
   }
 
   template <int dim>
+  std::vector<std::vector<postprocess::PairResult<dim>>>
+  Model<dim>::interface_results() const
+  {
+    std::vector<std::vector<postprocess::PairResult<dim>>> results;
+    const auto   full_strengths = pair_strengths(1.0);
+    unsigned int first_pair     = 0;
+    for (const auto &interface : interfaces)
+      {
+        results.push_back(postprocess::pair_results(interface, first_pair,
+                                                    contact_outcome.solution,
+                                                    contact_outcome.states,
+                                                    full_strengths));
+        first_pair += interface.pairs.size();
+      }
+    return results;
+  }
+
+  template <int dim>
+  void
+  Model<dim>::write_vtu(const std::string &                 suffix,
+                        const double                        time,
+                        std::vector<postprocess::PvdEntry> &entries)
+  {
+    const std::string directory = parameters.output_directory();
+    const auto        results   = interface_results();
+    unsigned int      part      = 0;
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      entries.push_back({time, part++,
+                         postprocess::write_block_vtu(*blocks[b], b, displacements[b],
+                                                      directory, suffix)});
+    for (unsigned int i = 0; i < interfaces.size(); ++i)
+      entries.push_back({time, part++,
+                         postprocess::write_interface_vtu(*blocks[interfaces[i].block_J],
+                                                          interfaces[i], results[i],
+                                                          directory, suffix)});
+  }
+
+  template <int dim>
   void
   Model<dim>::output_results()
   {
     const std::string directory = parameters.output_directory();
     TimerOutput::Scope scope(timer, "output");
 
-    std::vector<std::vector<postprocess::PairResult<dim>>> results;
-    unsigned int first_pair = 0;
-    for (const auto &interface : interfaces)
-      {
-        results.push_back(postprocess::pair_results(interface, first_pair,
-                                                    contact_outcome.solution,
-                                                    contact_outcome.states));
-        first_pair += interface.pairs.size();
-      }
+    auto results = interface_results();
     const nlohmann::json hertz = hertz_reference(results);
+
     // Without equilibrium there is no field to show: only the summary says why.
     const bool converged = contact_outcome.converged();
     if (converged)
       postprocess::write_interface_csv(directory + "/interfaces.csv", interfaces, results);
-
     if (converged && parameters.output.write_vtu)
       {
         std::vector<postprocess::PvdEntry> entries;
-        for (unsigned int b = 0; b < blocks.size(); ++b)
-          entries.push_back({0, static_cast<unsigned int>(entries.size()),
-                             postprocess::write_block_vtu(*blocks[b], b, displacements[b],
-                                                          directory, "")});
-        for (unsigned int i = 0; i < interfaces.size(); ++i)
-          entries.push_back({0, static_cast<unsigned int>(entries.size()),
-                             postprocess::write_interface_vtu(*blocks[interfaces[i].block_J],
-                                                              interfaces[i], results[i],
-                                                              directory, "")});
+        write_vtu("", 0, entries);
         postprocess::write_pvd(directory + "/solution.pvd", entries);
+        if (!step_files.empty())
+          postprocess::write_pvd(directory + "/safety_factor_steps.pvd", step_files);
       }
-
     scope.stop();
 
     summary                = nlohmann::json::object();
@@ -339,6 +444,31 @@ namespace fdem
       }
     if (!hertz.empty())
       summary["hertz"] = hertz;
+    summary["strength_reduction"] = strength_reduction;
+    if (parameters.safety_factor.compute)
+      {
+        const auto &sf = safety_factor_result;
+        const auto  number_or_null = [](const double x) {
+          return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+        };
+        summary["safety_factor"]         = number_or_null(sf.safety_factor);
+        summary["converged"]             = sf.converged;
+        summary["safety_factor_reason"]  = sf.reason;
+        summary["safety_factor_bracket"] = {number_or_null(sf.bracket_low),
+                                            number_or_null(sf.bracket_high)};
+        nlohmann::json steps = nlohmann::json::array();
+        for (const auto &step : sf.steps)
+          steps.push_back({{"K", step.K},
+                           {"K_next", step.K_next},
+                           {"F_R", step.solution.resisting_force},
+                           {"F_tau", step.solution.sliding_force},
+                           {"n_stick", step.solution.n_stick},
+                           {"n_slip", step.solution.n_slip},
+                           {"n_open", step.solution.n_open},
+                           {"n_contact_iterations", step.solution.n_contact_iterations},
+                           {"contact_result", step.solution.result}});
+        summary["iterations"] = steps;
+      }
     summary["rigid_motions"] = std::vector<double>(contact_outcome.solution.rigid_motions.begin(),
                                                    contact_outcome.solution.rigid_motions.end());
     nlohmann::json iterations = nlohmann::json::array();
@@ -358,10 +488,15 @@ namespace fdem
     for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
       timings[section] = seconds;
     summary["timings"] = timings;
-    summary["status"]  = contact_outcome.converged() ?
-                           "completed" :
-                           "no static equilibrium: " +
-                             contact::result_description(contact_outcome.result);
+    if (!contact_outcome.converged())
+      summary["status"] = "no static equilibrium: " +
+                          (parameters.safety_factor.compute ?
+                             safety_factor_result.reason :
+                             contact::result_description(contact_outcome.result));
+    else if (parameters.safety_factor.compute && !safety_factor_result.converged)
+      summary["status"] = "safety factor not converged: " + safety_factor_result.reason;
+    else
+      summary["status"] = "completed";
     postprocess::write_json(directory + "/summary.json", summary);
     log << "Results in " << directory << "/" << std::endl;
   }

@@ -7,6 +7,8 @@
 // mesh".
 #include "test_helpers.h"
 
+#include <fdem/blocks/surface_loads.h>
+
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -80,6 +82,16 @@ namespace
           parameters.boundaries.at(name);
       }
     merged.setup_constraints(conditions, {});
+    std::map<dealii::types::boundary_id, std::shared_ptr<const dealii::Function<2>>> pressures,
+      tractions;
+    for (const auto &[id, condition] : conditions)
+      {
+        if (condition.pressure != "0")
+          pressures[id] = blocks::make_pressure_function<2>(condition.pressure, parameters.water);
+        if (condition.traction != "0")
+          tractions[id] = blocks::make_traction_function<2>(condition.traction);
+      }
+    merged.set_surface_loads(pressures, tractions);
     merged.find_free_rigid_modes();
     ASSERT_EQ(merged.n_free_rigid_modes(), 0u);
     merged.assemble_and_factorize(parameters.loads, parameters.solver.direct_solver);

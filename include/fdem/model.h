@@ -8,7 +8,9 @@
 #include <fdem/contact/status_iteration.h>
 #include <fdem/geometry/mesh_description.h>
 #include <fdem/parameters/parameters.h>
+#include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/interface_output.h>
+#include <fdem/safety_factor/safety_factor.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -64,9 +66,19 @@ namespace fdem
     void
     solve_contact(const double strength_reduction = 1.0);
 
-    /** Pair strengths of all interfaces, c and tan(phi) divided by @p K (eq. 10). */
+    /**
+     * Pair strengths of all interfaces; on the sliding surfaces c and
+     * tan(phi) are divided by @p K (eq. 10).
+     */
     std::vector<contact::PairStrength>
     pair_strengths(const double K) const;
+    /**
+     * The safety factor by the iteration of eqs. (10)-(13) with its
+     * safeguards; leaves the model in the last state with a static solution.
+     */
+    void
+    compute_safety_factor();
+
     /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
     void
     recover_block_displacements();
@@ -81,10 +93,31 @@ namespace fdem
     std::vector<Vector<double>>                         external_displacements;
     std::unique_ptr<contact::MixedSystem<dim>>          mixed_system;
     contact::ContactOutcome<dim>                        contact_outcome;
+    /** K of contact_outcome's strengths (1: full strength). */
+    double                                              strength_reduction = 1;
+    safety_factor::Result                               safety_factor_result;
     std::vector<Vector<double>>                         displacements;
     nlohmann::json                                      summary;
 
   private:
+    /** The last contact solution that converged, and its K. */
+    contact::ContactOutcome<dim> last_converged;
+    double                       last_converged_K = 1;
+    /** VTU/PVD files of the steps of the safety-factor iteration. */
+    std::vector<postprocess::PvdEntry> step_files;
+
+    /** Per pair of all interfaces: on a sliding surface? */
+    std::vector<bool>
+    pairs_on_sliding_surface() const;
+
+    /** Results per interface for the current contact state. */
+    std::vector<std::vector<postprocess::PairResult<dim>>>
+    interface_results() const;
+
+    /** Block and interface VTU files of the current state, listed in @p entries. */
+    void
+    write_vtu(const std::string &suffix, const double time, std::vector<postprocess::PvdEntry> &entries);
+
     std::string   expanded_parameters;
     std::ostream &log;
     TimerOutput   timer;

@@ -83,22 +83,6 @@ namespace fdem
           else if (condition.constraint == parameters::Constraint::plate)
             add_plate_constraints(id, plate);
 
-          if (condition.pressure != "0")
-            {
-              auto pressure = std::make_shared<FunctionParser<dim>>(1);
-              pressure->initialize(FunctionParser<dim>::default_variable_names(),
-                                   condition.pressure,
-                                   {{"pi", numbers::PI}});
-              pressures[id] = pressure;
-            }
-          if (condition.traction != "0")
-            {
-              auto traction = std::make_shared<FunctionParser<dim>>(dim);
-              traction->initialize(FunctionParser<dim>::default_variable_names(),
-                                   condition.traction,
-                                   {{"pi", numbers::PI}});
-              tractions[id] = traction;
-            }
         }
       if (!normal_ids.empty())
         VectorTools::compute_no_normal_flux_constraints(
@@ -114,6 +98,16 @@ namespace fdem
         fixed, AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
       dirichlet_constraints.close();
       constraints.copy_from(dirichlet_constraints);
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::set_surface_loads(
+      const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> &pressures,
+      const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> &tractions)
+    {
+      this->pressures = pressures;
+      this->tractions = tractions;
     }
 
     template <int dim>

@@ -170,7 +170,8 @@ namespace fdem
                   ExcMessage(path + "/Traction: cannot parse '" + traction +
                              "' as " + std::to_string(dim) +
                              " functions of the coordinates separated by ';'."));
-      AssertThrow(expression_parses(pressure, dim, 1),
+      pressure = Utilities::trim(pressure);
+      AssertThrow(pressure == "piezometric" || expression_parses(pressure, dim, 1),
                   ExcMessage(path + "/Pressure: cannot parse '" + pressure +
                              "' as a function of " +
                              (dim == 2 ? "x, y." : "x, y, z.")));
@@ -207,11 +208,26 @@ namespace fdem
                         "A frictionless interface carries no tangential force "
                         "(friction angle and cohesion are ignored; cohesion must "
                         "be 0).");
+      prm.declare_entry("Sliding surface",
+                        "true",
+                        Patterns::Bool(),
+                        "Part of the sliding surface: the safety factor K "
+                        "divides this interface's cohesion and tan(friction "
+                        "angle) (eq. 10) and sums its forces (eq. 11).");
+      prm.declare_entry("Pore pressure",
+                        "0",
+                        Patterns::Anything(),
+                        "Pore (water) pressure in the interface (force/length^2) "
+                        "as a function of x, y (and z in 3D), or 'piezometric' "
+                        "for the hydrostatic pressure below Water/Piezometric "
+                        "line. It pushes both sides apart; friction acts on the "
+                        "effective normal force.");
     }
 
     void
     InterfaceParameters::parse_parameters(ParameterHandler & prm,
-                                          const std::string &path)
+                                          const std::string &path,
+                                          const unsigned int dim)
     {
       search_distance  = prm.get_double("Search distance");
       friction_angle   = prm.get_double("Friction angle");
@@ -223,6 +239,113 @@ namespace fdem
       AssertThrow(!(frictionless && cohesion > 0),
                   ExcMessage(path + "/Cohesion: a frictionless interface cannot "
                                     "have cohesion; set it to 0."));
+      sliding_surface = prm.get_bool("Sliding surface");
+      pore_pressure   = Utilities::trim(prm.get("Pore pressure"));
+      AssertThrow(pore_pressure == "piezometric" || expression_parses(pore_pressure, dim, 1),
+                  ExcMessage(path + "/Pore pressure: cannot parse '" + pore_pressure +
+                             "' as a function of the coordinates (or 'piezometric')."));
+    }
+
+    void
+    SafetyFactorParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Safety factor");
+      prm.declare_entry("Compute",
+                        "true",
+                        Patterns::Bool(),
+                        "Compute the safety factor by the iteration of eqs. "
+                        "(10)-(13). If false, solve the contact problem once, "
+                        "at full strength.");
+      prm.declare_entry("Initial factor",
+                        "1.0",
+                        Patterns::Anything(),
+                        "K of the first iteration, > 0 (dimensionless).");
+      prm.declare_entry("Tolerance",
+                        "1e-6",
+                        Patterns::Anything(),
+                        "Relative tolerance, > 0: the iteration stops when two "
+                        "successive K* agree to it (eq. 13).");
+      prm.declare_entry("Maximum iterations",
+                        "60",
+                        Patterns::Integer(1),
+                        "Largest number of contact solves in the iteration, "
+                        "steps back included.");
+      prm.declare_entry("Minimum factor",
+                        "1e-3",
+                        Patterns::Anything(),
+                        "If no K down to this value has a static solution, the "
+                        "model has none (> 0, dimensionless).");
+      prm.leave_subsection();
+    }
+
+    void
+    SafetyFactorParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Safety factor");
+      compute = prm.get_bool("Compute");
+      // Read as text so that a value <= 0 gets a message naming the entry.
+      const auto positive = [&](const std::string &entry) {
+        double value = 0;
+        try
+          {
+            value = Utilities::string_to_double(prm.get(entry));
+          }
+        catch (...)
+          {
+            AssertThrow(false, ExcMessage("Safety factor/" + entry + ": '" +
+                                          prm.get(entry) + "' is not a number."));
+          }
+        AssertThrow(value > 0 && std::isfinite(value),
+                    ExcMessage("Safety factor/" + entry + ": must be > 0, got " +
+                               prm.get(entry) + "."));
+        return value;
+      };
+      initial_factor = positive("Initial factor");
+      tolerance      = positive("Tolerance");
+      minimum_factor = positive("Minimum factor");
+      max_iterations = prm.get_integer("Maximum iterations");
+      prm.leave_subsection();
+    }
+
+    void
+    WaterParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Water");
+      prm.declare_entry("Unit weight of water",
+                        "9.81",
+                        Patterns::Double(0),
+                        "Unit weight of water gamma_w (force/length^3, e.g. kN/m^3).");
+      prm.declare_entry("Piezometric line",
+                        "",
+                        Patterns::Anything(),
+                        "Piezometric line as points 'x,y; x,y; ...' with "
+                        "increasing x (2D): below it the water pressure is "
+                        "gamma_w times the depth under the line; used where a "
+                        "pressure or pore pressure is 'piezometric'. Empty: "
+                        "none.");
+      prm.leave_subsection();
+    }
+
+    void
+    WaterParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Water");
+      unit_weight = prm.get_double("Unit weight of water");
+      piezometric_line.clear();
+      for (const std::string &point :
+           Utilities::split_string_list(prm.get("Piezometric line"), ';'))
+        {
+          const std::vector<double> xy =
+            parse_vector(point, 2, "Water/Piezometric line");
+          piezometric_line.push_back({{xy[0], xy[1]}});
+          AssertThrow(piezometric_line.size() == 1 ||
+                        xy[0] > piezometric_line[piezometric_line.size() - 2][0],
+                      ExcMessage("Water/Piezometric line: the x coordinates must "
+                                 "increase."));
+        }
+      AssertThrow(piezometric_line.size() != 1,
+                  ExcMessage("Water/Piezometric line: give at least two points."));
+      prm.leave_subsection();
     }
 
     void

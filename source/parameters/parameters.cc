@@ -129,6 +129,8 @@ namespace fdem
                                                      "Interfaces",
                                                      interfaces);
       ContactParameters::declare_parameters(prm);
+      SafetyFactorParameters::declare_parameters(prm);
+      WaterParameters::declare_parameters(prm);
       SolverParameters::declare_parameters(prm);
       OutputParameters::declare_parameters(prm);
     }
@@ -141,6 +143,8 @@ namespace fdem
       geometry.parse_parameters(prm);
       loads.parse_parameters(prm, dimension);
       contact.parse_parameters(prm);
+      safety_factor.parse_parameters(prm);
+      water.parse_parameters(prm);
       solver.parse_parameters(prm);
       output.parse_parameters(prm);
 
@@ -175,7 +179,7 @@ namespace fdem
       for (const std::string &name : interface_names)
         {
           prm.enter_subsection(name);
-          interfaces[name].parse_parameters(prm, "Interfaces/" + name);
+          interfaces[name].parse_parameters(prm, "Interfaces/" + name, dimension);
           prm.leave_subsection();
         }
       prm.leave_subsection();

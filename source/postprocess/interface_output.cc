@@ -26,8 +26,9 @@ namespace fdem
     std::vector<PairResult<dim>>
     pair_results(const contact::Interface<dim> &         interface,
                  const unsigned int                      first_pair,
-                 const contact::ContactSolution &           solution,
-                 const std::vector<contact::PairState<dim>> &states)
+                 const contact::ContactSolution &            solution,
+                 const std::vector<contact::PairState<dim>> &states,
+                 const std::vector<contact::PairStrength> &  full_strengths)
     {
       std::vector<PairResult<dim>> results;
       for (unsigned int k = 0; k < interface.pairs.size(); ++k)
@@ -50,6 +51,13 @@ namespace fdem
           r.slip            = dim == 2 ? solution.relative_displacements[dim * p + 1] :
                                          std::sqrt(slip2);
           r.status          = states[p].status;
+          if (r.status != contact::PairStatus::open)
+            {
+              const double strength = full_strengths[p].shear_capacity(r.normal_force);
+              const double shear    = std::sqrt(shear2);
+              r.local_safety_factor =
+                std::max(0.0, shear * 1000 > strength ? strength / shear : 1000.0);
+            }
           r.area            = pair.area;
           r.initial_gap     = pair.initial_gap;
           results.push_back(r);
@@ -225,8 +233,8 @@ namespace fdem
       AssertThrow(out.good(), ExcMessage("Cannot write '" + filename + "'."));
       out << "interface,pair,x,y" << (dim == 3 ? ",z" : "") << ",normal_force,"
           << (dim == 2 ? "tangential_force" : "tangential_force_1,tangential_force_2")
-          << ",normal_pressure,shear_stress,gap,slip,status,area,initial_gap,"
-             "reference_normal_pressure\n";
+          << ",normal_pressure,shear_stress,gap,slip,status,local_safety_factor,area,"
+             "initial_gap,reference_normal_pressure\n";
       out << std::setprecision(12);
       for (unsigned int i = 0; i < interfaces.size(); ++i)
         for (unsigned int k = 0; k < results[i].size(); ++k)
@@ -240,7 +248,7 @@ namespace fdem
               out << ',' << f;
             out << ',' << r.normal_pressure << ',' << r.shear_stress << ','
                 << r.gap << ',' << r.slip << ',' << contact::status_name(r.status) << ','
-                << r.area << ',' << r.initial_gap << ',';
+                << r.local_safety_factor << ',' << r.area << ',' << r.initial_gap << ',';
             if (std::isfinite(r.reference_pressure))
               out << r.reference_pressure;
             out << '\n';
@@ -274,6 +282,7 @@ namespace fdem
                                               "gap",
                                               "slip",
                                               "status",
+                                              "local_safety_factor",
                                               "paired"};
       std::vector<Vector<double>> fields(names.size(),
                                          Vector<double>(dof_handler.n_dofs()));
@@ -293,7 +302,8 @@ namespace fdem
               fields[5][i] = r.slip;
               // 0 stick, 1 slip, 2 open.
               fields[6][i] = static_cast<double>(r.status);
-              fields[7][i] = 1;
+              fields[7][i] = r.local_safety_factor;
+              fields[8][i] = 1;
               break;
             }
 
@@ -313,7 +323,8 @@ namespace fdem
   template double contact_extent(const std::vector<PairResult<dim>> &);         \
   template std::vector<PairResult<dim>> pair_results(                           \
     const contact::Interface<dim> &, const unsigned int,                        \
-    const contact::ContactSolution &, const std::vector<contact::PairState<dim>> &); \
+    const contact::ContactSolution &, const std::vector<contact::PairState<dim>> &, \
+    const std::vector<contact::PairStrength> &);                                \
   template void write_interface_csv(const std::string &,                        \
                                     const std::vector<contact::Interface<dim>> &, \
                                     const std::vector<std::vector<PairResult<dim>>> &); \

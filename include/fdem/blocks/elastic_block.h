@@ -72,8 +72,8 @@ namespace fdem
                    const unsigned int                           fe_degree);
 
       /**
-       * Applies the Dirichlet conditions and records the pressures, keyed by
-       * face-group index (boundary id). @p interface_ids lists the face
+       * Applies the Dirichlet conditions, keyed by face-group index
+       * (boundary id). @p interface_ids lists the face
        * groups that are interfaces (never used for supports).
        */
       void
@@ -81,6 +81,16 @@ namespace fdem
         const std::map<types::boundary_id, parameters::BoundaryParameters>
           &                                    boundary_conditions,
         const std::vector<types::boundary_id> &interface_ids);
+
+      /**
+       * Surface loads by face group (boundary id): pressures (pushing into
+       * the block) and traction vectors. Water in an interface is a pressure
+       * on both sides' faces.
+       */
+      void
+      set_surface_loads(
+        const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> &pressures,
+        const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> &tractions);
 
       /** Finds the free rigid modes and adds a minimal support for them. */
       void
@@ -165,8 +175,8 @@ namespace fdem
       Vector<double>                 load_vector;
 
     private:
-      std::map<types::boundary_id, std::shared_ptr<Function<dim>>> pressures;
-      std::map<types::boundary_id, std::shared_ptr<Function<dim>>> tractions;
+      std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> pressures;
+      std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> tractions;
       std::vector<types::boundary_id> interface_ids;
       TrilinosWrappers::SparseMatrix  stiffness_matrix;
       std::unique_ptr<DirectSolver>   direct_solver;

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,8 @@ namespace fdem
       Constraint constraint = Constraint::none;
       /**
        * Pressure (force/length^2, positive pushing into the body) as a
-       * function of x, y (, z); "0" for none.
+       * function of x, y (, z), or "piezometric" (Water/Piezometric line);
+       * "0" for none.
        */
       std::string pressure = "0";
       /**
@@ -75,7 +77,9 @@ namespace fdem
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
-      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string &       path,
+                       const unsigned int        dim);
 
       /**
        * Largest initial normal gap (length) at which a node of one side is
@@ -91,6 +95,53 @@ namespace fdem
       double tensile_strength = 0;
       /** No friction and no cohesion: the tangential force is zero. */
       bool frictionless = false;
+      /** Part of the sliding surface whose c and tan(phi) the safety factor reduces. */
+      bool sliding_surface = true;
+      /**
+       * Pore pressure (force/length^2) in the interface, a function of x, y
+       * (, z), or "piezometric" for the hydrostatic pressure below
+       * Water/Piezometric line; "0" for none. It pushes both sides apart, and
+       * the contact law acts on the effective normal force.
+       */
+      std::string pore_pressure = "0";
+    };
+
+    /** The safety-factor iteration (eqs. 10-13): subsection "Safety factor". */
+    struct SafetyFactorParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Compute the safety factor (else: one contact solve at full strength). */
+      bool compute = true;
+      /** K of the first iteration (eq. 10). */
+      double initial_factor = 1.0;
+      /** Stop when two successive K* agree to this relative tolerance (eq. 13). */
+      double tolerance = 1e-6;
+      /** Largest number of contact solves of the iteration. */
+      unsigned int max_iterations = 60;
+      /** Below this K the search for a statically admissible K gives up. */
+      double minimum_factor = 1e-3;
+    };
+
+    /** Water: subsection "Water". */
+    struct WaterParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Unit weight of water gamma_w (force/length^3). */
+      double unit_weight = 9.81;
+      /**
+       * Piezometric line as points "x,y; x,y; ..." with increasing x (2D):
+       * below it the pressure is gamma_w times the depth under it. Empty:
+       * none.
+       */
+      std::vector<std::array<double, 2>> piezometric_line;
     };
 
     /** The status iteration of the contact solver: subsection "Contact". */

@@ -38,6 +38,8 @@ namespace fdem
       LoadParameters     loads;
       SolverParameters   solver;
       ContactParameters  contact;
+      SafetyFactorParameters safety_factor;
+      WaterParameters    water;
       OutputParameters   output;
 
       std::vector<std::string>                   block_names;

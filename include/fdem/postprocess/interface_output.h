@@ -34,6 +34,12 @@ namespace fdem
       double slip = 0;
       contact::PairStatus status = contact::PairStatus::stick;
       double area = 0, initial_gap = 0;
+      /**
+       * Local safety factor: the pair's full shear strength c A - tan(phi)
+       * f_n over its mobilised shear |f_t|; 0 for an open pair, at most 1000
+       * (a pair with no shear).
+       */
+      double local_safety_factor = 0;
       /** Normal pressure of an exact solution here, if the case has one (else NaN, not written). */
       double reference_pressure = std::numeric_limits<double>::quiet_NaN();
     };
@@ -44,7 +50,8 @@ namespace fdem
     pair_results(const contact::Interface<dim> &         interface,
                  const unsigned int                      first_pair,
                  const contact::ContactSolution &            solution,
-                 const std::vector<contact::PairState<dim>> &states);
+                 const std::vector<contact::PairState<dim>> &states,
+                 const std::vector<contact::PairStrength> &  full_strengths);
 
     /**
      * Extent of the contact zone: its length in 2D (design/formulation.md

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/parameters/model_parameters.h>
+
+#include <deal.II/base/function.h>
+
+#include <memory>
+#include <string>
+
+namespace fdem
+{
+  namespace blocks
+  {
+    using namespace dealii;
+
+    /**
+     * Hydrostatic water pressure below a piezometric line (2D):
+     * p = gamma_w max(0, y_line(x) - y), with y_line interpolated linearly
+     * between the line's points and constant beyond its ends.
+     */
+    template <int dim>
+    class PiezometricPressure : public Function<dim>
+    {
+    public:
+      explicit PiezometricPressure(const parameters::WaterParameters &water);
+
+      double
+      value(const Point<dim> &p, const unsigned int component = 0) const override;
+
+    private:
+      const parameters::WaterParameters water;
+    };
+
+    /**
+     * A pressure (force/length^2) from a .prm entry: "piezometric", or an
+     * expression of x, y (, z) for deal.II's FunctionParser (with pi).
+     */
+    template <int dim>
+    std::shared_ptr<const Function<dim>>
+    make_pressure_function(const std::string &               expression,
+                           const parameters::WaterParameters &water);
+
+    /** A traction vector function from an expression with dim components separated by ';'. */
+    template <int dim>
+    std::shared_ptr<const Function<dim>>
+    make_traction_function(const std::string &expression);
+  } // namespace blocks
+} // namespace fdem

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/safety_factor/safety_factor.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace fdem
+{
+  namespace safety_factor
+  {
+    template <int dim>
+    ReducedStrengthSolution
+    resisting_and_sliding_forces(const contact::ContactOutcome<dim> &      outcome,
+                                 const std::vector<contact::PairStrength> &reduced_strengths,
+                                 const std::vector<bool> &                 on_sliding_surface)
+    {
+      ReducedStrengthSolution s;
+      s.converged            = outcome.converged();
+      s.result               = contact::result_description(outcome.result);
+      s.n_contact_iterations = outcome.iterations.size();
+      double sum_f_t         = 0;
+      for (unsigned int p = 0; p < on_sliding_surface.size(); ++p)
+        {
+          if (!on_sliding_surface[p])
+            continue;
+          const contact::PairStatus status = outcome.states[p].status;
+          s.n_stick += status == contact::PairStatus::stick;
+          s.n_slip += status == contact::PairStatus::slip;
+          s.n_open += status == contact::PairStatus::open;
+          if (!s.converged || status == contact::PairStatus::open)
+            continue;
+          sum_f_t += outcome.solution.forces[dim * p + 1];
+          s.resisting_force += reduced_strengths[p].shear_capacity(outcome.solution.forces[dim * p]);
+        }
+      s.sliding_force = std::abs(sum_f_t);
+      return s;
+    }
+
+    Result
+    iterate(const std::function<ReducedStrengthSolution(double K)> &solve,
+            const parameters::SafetyFactorParameters &              parameters,
+            std::ostream &                                          log)
+    {
+      Result       result;
+      const double tolerance = parameters.tolerance;
+      double       K         = parameters.initial_factor;
+      double       previous_K_star = std::numeric_limits<double>::quiet_NaN();
+      double &     K_low = result.bracket_low, &K_high = result.bracket_high;
+      result.reason = "iteration limit reached";
+      for (unsigned int i = 0; i < parameters.max_iterations; ++i)
+        {
+          Step step{K, K, solve(K)}; // eqs. (10)-(11)
+          const ReducedStrengthSolution &s      = step.solution;
+          double                         K_star = 0;
+          if (s.converged && s.sliding_force > 0)
+            {
+              K_star = K * s.resisting_force / s.sliding_force; // eq. (12)
+              K_low  = std::isnan(K_low) ? K : std::max(K_low, K);
+              // Never step into K's already known to have no static solution.
+              step.K_next = K_star < K_high ? K_star : 0.5 * (K_low + K_high);
+            }
+          else if (!s.converged)
+            {
+              K_high      = std::min(K_high, K);
+              step.K_next = std::isnan(K_low) ? 0.5 * K : 0.5 * (K_low + K_high);
+            }
+          result.steps.push_back(step);
+          log << "  safety factor step " << std::setw(2) << result.steps.size()
+              << ": K = " << std::setprecision(9) << K;
+          if (s.converged && s.sliding_force > 0)
+            log << ", F_R = " << s.resisting_force << ", F_tau = " << s.sliding_force
+                << ", K* = " << K_star << std::endl;
+          else
+            log << ": no static solution (" << s.result << ")" << std::endl;
+
+          if (s.converged && !(s.sliding_force > 0))
+            {
+              result.reason = "no sliding force on the sliding surface";
+              break;
+            }
+          // Eq. (13), as two successive K* (design/formulation.md 6.5).
+          if (s.converged && std::abs(K_star - previous_K_star) <= tolerance * K_star)
+            {
+              result.converged     = true;
+              result.safety_factor = K_star;
+              result.reason        = "two successive K* agree";
+              break;
+            }
+          if (s.converged)
+            previous_K_star = K_star;
+          if (!std::isnan(K_low) && K_high - K_low <= tolerance * K_low)
+            {
+              // The largest K with a static solution, to the tolerance.
+              result.converged     = true;
+              result.safety_factor = K_low;
+              result.reason        = "bracket narrower than the tolerance";
+              break;
+            }
+          if (std::isnan(K_low) && step.K_next < parameters.minimum_factor)
+            {
+              result.reason = "no static solution for any K down to Safety factor/Minimum factor";
+              break;
+            }
+          K = step.K_next;
+        }
+      return result;
+    }
+
+    template ReducedStrengthSolution
+    resisting_and_sliding_forces(const contact::ContactOutcome<2> &,
+                                 const std::vector<contact::PairStrength> &,
+                                 const std::vector<bool> &);
+    template ReducedStrengthSolution
+    resisting_and_sliding_forces(const contact::ContactOutcome<3> &,
+                                 const std::vector<contact::PairStrength> &,
+                                 const std::vector<bool> &);
+  } // namespace safety_factor
+} // namespace fdem
