@@ -284,7 +284,8 @@ namespace fdem
     const auto solve = [&](const double K) {
       solve_contact(K);
       const auto solution =
-        safety_factor::resisting_and_sliding_forces(contact_outcome, pair_strengths(K), on_surface);
+        safety_factor::resisting_and_sliding_forces(*mixed_system, contact_outcome,
+                                                    pair_strengths(K), on_surface);
       // Each step with a static solution can be looked at in ParaView.
       if (solution.converged && parameters.output.write_vtu)
         {
@@ -420,13 +421,20 @@ namespace fdem
       {
         unsigned int n_status[3] = {0, 0, 0};
         double max_pressure = 0, normal_force = 0, tangential_force = 0;
-        for (const auto &r : results[i])
+        Tensor<1, dim> tangential_resultant;
+        for (unsigned int k = 0; k < results[i].size(); ++k)
           {
+            const auto &r = results[i][k];
             ++n_status[static_cast<int>(r.status)];
             max_pressure = std::max(max_pressure, r.normal_pressure);
             normal_force += r.normal_force;
             tangential_force += r.tangential_force[0];
+            for (unsigned int t = 0; t + 1 < dim; ++t)
+              tangential_resultant += r.tangential_force[t] * interfaces[i].pairs[k].frame[t + 1];
           }
+        // In 3D the pairs' tangents differ: the magnitude of the resultant.
+        if (dim == 3)
+          tangential_force = tangential_resultant.norm();
         const double extent = postprocess::contact_extent(results[i]);
         summary["interfaces"].push_back(
           {{"name", interfaces[i].name},
@@ -483,6 +491,7 @@ namespace fdem
                           {"converged", contact_outcome.converged()},
                           {"n_solves", contact_outcome.iterations.size()},
                           {"n_cycles_broken", contact_outcome.n_cycles_broken},
+                          {"max_slip_angle_degrees", contact_outcome.max_slip_angle},
                           {"iterations", iterations}};
     nlohmann::json timings = nlohmann::json::object();
     for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))

@@ -167,10 +167,11 @@ namespace fdem
                         double along = 0;
                         for (unsigned int i = 1; i < dim; ++i)
                           along += state.slip_direction[i - 1] * g[dim * p + i];
+                        const bool has_strength = strength.friction_coefficient > 0 ||
+                                                  strength.cohesion_force > 0;
                         // Slip against the force: the pair sticks. (A
                         // frictionless pair has no force to slip against.)
-                        if (along < -gap_tolerance &&
-                            (strength.friction_coefficient > 0 || strength.cohesion_force > 0))
+                        if (along < -gap_tolerance && has_strength)
                           state.status = PairStatus::stick;
                       }
                     break;
@@ -214,6 +215,19 @@ namespace fdem
               outcome.result   = ContactResult::converged;
               outcome.states   = states;
               outcome.solution = solution;
+              // How far a slipping pair's force is from its slip direction
+              // (0 in 2D; in 3D the direction is the trial force's).
+              for (unsigned int p = 0; p < n_pairs; ++p)
+                if (states[p].status == PairStatus::slip &&
+                    tangential_norm<dim>(g, p) > gap_tolerance)
+                  {
+                    double along = 0;
+                    for (unsigned int i = 1; i < dim; ++i)
+                      along += states[p].slip_direction[i - 1] * g[dim * p + i];
+                    const double cosine = std::clamp(along / tangential_norm<dim>(g, p), -1.0, 1.0);
+                    outcome.max_slip_angle =
+                      std::max(outcome.max_slip_angle, std::acos(cosine) * 180 / numbers::PI);
+                  }
               break;
             }
           if (iteration + 1 >= control.max_iterations)

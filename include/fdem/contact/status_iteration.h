@@ -48,6 +48,12 @@ namespace fdem
       std::vector<StatusIterationRecord> iterations;
       /** Cycles of statuses met and broken (design/formulation.md Sec. 6.3). */
       unsigned int n_cycles_broken = 0;
+      /**
+       * Largest angle (degrees) between a slipping pair's force direction and
+       * its slip at convergence: 0 in 2D; in 3D a slipping pair keeps the
+       * direction of its trial force (doc/theory.md).
+       */
+      double max_slip_angle = 0;
 
       bool
       converged() const
@@ -78,7 +84,8 @@ namespace fdem
      * check every pair, update, repeat until nothing changes. Starts from
      * @p states (warm start). The rules (doc/theory.md):
      * - stick: tension beyond sigma_t A opens the pair; a tangential force
-     *   beyond c A - mu f_n makes it slip along that force;
+     *   beyond c A - mu f_n makes it slip along that force (in 3D it keeps
+     *   that direction while it slips);
      * - slip: tension beyond sigma_t A opens it; slip against the force
      *   (d . g_t < 0) returns it to stick;
      * - open: penetration (g_n < 0) closes it, to slip along its relative

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/contact/contact_law.h>
+#include <fdem/contact/mixed_system.h>
 #include <fdem/contact/status_iteration.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -51,16 +52,23 @@ namespace fdem
     };
 
     /**
-     * Eq. (11) over the pairs of the sliding surface: F_tau = |sum f_t| and
-     * F_R = sum over the pairs in contact of their shear strength
-     * c'A - tan(phi') f_n at the reduced strength (for a compressed pair
-     * tan(phi') |f_n| + c'A, as in the paper; open pairs carry none).
+     * Eq. (11) over the pairs of the sliding surface. F_R is the sum over
+     * the pairs in contact of their shear strength c'A - tan(phi') f_n at
+     * the reduced strength (for a compressed pair tan(phi') |f_n| + c'A, as
+     * in the paper; open pairs carry none). F_tau is the sliding force: in
+     * 2D |sum f_t|, the tangential forces summed along the surface's tangent
+     * as in the paper; in 3D, where a pair's tangents have no common
+     * direction, the magnitude of the sum of the pairs' tangential force
+     * vectors, i.e. the shear resultant along the direction in which it
+     * drives the sliding mass (on a wedge at its limit: the line of
+     * intersection).
      */
     template <int dim>
     ReducedStrengthSolution
-    resisting_and_sliding_forces(const contact::ContactOutcome<dim> &     outcome,
+    resisting_and_sliding_forces(const contact::MixedSystem<dim> &         system,
+                                 const contact::ContactOutcome<dim> &      outcome,
                                  const std::vector<contact::PairStrength> &reduced_strengths,
-                                 const std::vector<bool> &                on_sliding_surface);
+                                 const std::vector<bool> &                 on_sliding_surface);
 
     /**
      * The paper's iteration, eqs. (10)-(13), with safeguards
