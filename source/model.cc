@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <numeric>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -408,7 +409,11 @@ namespace fdem
             for (const auto dof : block.support_dofs)
               reaction = std::max(reaction, std::abs(residual[dof]));
           }
+        double volume = 0;
+        for (const auto &cell : block.triangulation.active_cell_iterators())
+          volume += cell->measure();
         summary["blocks"].push_back({{"name", block.name},
+                                     {"volume", volume},
                                      {"n_cells", block.triangulation.n_active_cells()},
                                      {"n_dofs", block.dof_handler.n_dofs()},
                                      {"free_rigid_modes", block.n_free_rigid_modes()},
@@ -441,6 +446,8 @@ namespace fdem
            {"block_I", blocks[interfaces[i].block_I]->name},
            {"block_J", blocks[interfaces[i].block_J]->name},
            {"n_pairs", interfaces[i].pairs.size()},
+           {"area", std::accumulate(results[i].begin(), results[i].end(), 0.0,
+                                    [](const double a, const auto &r) { return a + r.area; })},
            {"n_unpaired_nodes", interfaces[i].n_unpaired_I + interfaces[i].n_unpaired_J},
            {"n_stick", n_status[0]},
            {"n_slip", n_status[1]},
