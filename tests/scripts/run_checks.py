@@ -13,6 +13,9 @@
                                          exit code 3, one line on stderr, a
                                          summary.json that says why, and no
                                          result files that look valid
+  run_checks.py deterministic EXE CASE.prm
+                                         two runs give the same summary.json,
+                                         byte for byte, timings aside
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -138,6 +141,19 @@ def check_no_equilibrium(exe, prm):
             assert not name.endswith((".vtu", ".pvd", ".csv")), f"{name} was written"
 
 
+def check_deterministic(exe, prm):
+    texts = []
+    for _ in range(2):
+        with tempfile.TemporaryDirectory() as workdir:
+            result = run(exe, prm, workdir)
+            assert result.returncode == 0, result.stderr
+            case = os.path.splitext(os.path.basename(prm))[0]
+            summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
+            del summary["timings"]
+            texts.append(json.dumps(summary, sort_keys=True))
+    assert texts[0] == texts[1], "two runs of the same input differ"
+
+
 def parameters_doc(exe, doc, write=False):
     listing = subprocess.run([exe, "--print-parameters"], capture_output=True,
                              text=True, check=True).stdout
@@ -160,5 +176,6 @@ if __name__ == "__main__":
         parameters_doc(exe, path, "--write" in sys.argv)
     else:
         {"vtu": check_vtu, "bad-input": check_bad_input,
-         "no-equilibrium": check_no_equilibrium}[command](exe, path)
+         "no-equilibrium": check_no_equilibrium,
+         "deterministic": check_deterministic}[command](exe, path)
     print("passed")
