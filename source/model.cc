@@ -124,6 +124,24 @@ namespace fdem
         pressures[face_group(name, "Interfaces/Names")] =
           blocks::make_pressure_function<dim>(parameters.interfaces.at(name).pore_pressure,
                                               parameters.water);
+    // A pressure that is not a number somewhere on its faces would spread
+    // NaN through the solution: check it at every vertex of its faces.
+    for (const auto &[id, pressure] : pressures)
+      for (const auto &face : mesh.faces)
+        if (face.boundary_id == id)
+          for (const unsigned int v : face.vertices)
+            {
+              const double value = pressure->value(mesh.vertices[v]);
+              const std::string &name = mesh.face_group_names[id];
+              const bool is_interface =
+                std::count(parameters.interface_names.begin(), parameters.interface_names.end(), name);
+              std::ostringstream point;
+              point << mesh.vertices[v];
+              AssertThrow(std::isfinite(value),
+                          ExcMessage((is_interface ? "Interfaces/" + name + "/Pore pressure" :
+                                                     "Boundaries/" + name + "/Pressure") +
+                                     ": not a number at (" + point.str() + ")."));
+            }
 
     blocks.clear();
     for (unsigned int b = 0; b < mesh.block_names.size(); ++b)

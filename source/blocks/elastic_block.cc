@@ -33,6 +33,32 @@ namespace fdem
       , materials(materials)
     {
       geometry::create_block_triangulation(mesh, block_ids, triangulation);
+      // One block, one body: a block in separate parts would need supports
+      // for each part, and its rigid modes would not be the body's.
+      if (block_ids.size() == 1)
+        {
+          std::vector<bool> reached(triangulation.n_active_cells(), false);
+          std::vector<typename Triangulation<dim>::active_cell_iterator> front{
+            triangulation.begin_active()};
+          reached[front[0]->active_cell_index()] = true;
+          unsigned int n_reached                  = 1;
+          while (!front.empty())
+            {
+              const auto cell = front.back();
+              front.pop_back();
+              for (const unsigned int f : cell->face_indices())
+                if (!cell->at_boundary(f) && !reached[cell->neighbor(f)->active_cell_index()])
+                  {
+                    reached[cell->neighbor(f)->active_cell_index()] = true;
+                    ++n_reached;
+                    front.push_back(cell->neighbor(f));
+                  }
+            }
+          AssertThrow(n_reached == triangulation.n_active_cells(),
+                      ExcMessage(mesh.source + ": block '" + name +
+                                 "' is not connected; give each separate part "
+                                 "its own physical group."));
+        }
       dof_handler.reinit(triangulation);
       dof_handler.distribute_dofs(fe);
 
