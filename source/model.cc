@@ -276,6 +276,15 @@ namespace fdem
     if (contact_outcome.n_cycles_broken > 0)
       log << " (" << contact_outcome.n_cycles_broken << " status cycles broken)";
     log << std::endl;
+    // The system is equilibrated before the estimate, so a small value means
+    // the answer itself is uncertain, not that the units are awkward.
+    const double condition = contact_outcome.iterations.empty() ?
+                               1.0 :
+                               contact_outcome.iterations.back().reciprocal_condition;
+    if (contact_outcome.converged() && condition < 1e-10)
+      log << "  warning: the mixed system is ill-conditioned (reciprocal condition "
+          << condition << "): about " << int(std::round(-std::log10(condition)))
+          << " of the 16 significant digits of the contact forces may be lost." << std::endl;
   }
 
   template <int dim>
@@ -517,6 +526,10 @@ namespace fdem
                           {"n_solves", contact_outcome.iterations.size()},
                           {"n_cycles_broken", contact_outcome.n_cycles_broken},
                           {"max_slip_angle_degrees", contact_outcome.max_slip_angle},
+                          {"reciprocal_condition",
+                           contact_outcome.iterations.empty() ?
+                             1.0 :
+                             contact_outcome.iterations.back().reciprocal_condition},
                           {"iterations", iterations}};
     nlohmann::json timings = nlohmann::json::object();
     for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))

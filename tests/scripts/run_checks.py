@@ -100,8 +100,9 @@ def check_vtu(exe, prm):
                     f"{name}: '{field}' is empty or not finite"
             print(f"{name}: {grid.GetNumberOfPoints()} points, fields {', '.join(fields)}")
         # The interface VTU carries the same normal forces as the CSV table.
-        rows = open(os.path.join(out, "interfaces.csv")).read().splitlines()
-        csv_total = sum(float(r.split(",")[4]) for r in rows[1:])
+        import csv
+        rows = list(csv.DictReader(open(os.path.join(out, "interfaces.csv"))))
+        csv_total = sum(float(r["normal_force"]) for r in rows)
         json_total = sum(i["total_normal_force"] for i in summary["interfaces"])
         assert abs(csv_total - json_total) <= 1e-9 * abs(json_total), (csv_total, json_total)
 
