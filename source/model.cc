@@ -202,6 +202,24 @@ namespace fdem
                                                      sides[0], *blocks[sides[0]],
                                                      sides[1], *blocks[sides[1]],
                                                      parameters.interfaces.at(name).search_distance));
+        // A node on two interfaces (the line of intersection of a wedge) is
+        // paired once, in the interface listed first: two pairs of the same
+        // two nodes would constrain one relative displacement twice.
+        auto &pairs = interfaces.back().pairs;
+        const auto paired_before = [&](const contact::NodePair<dim> &pair) {
+          for (unsigned int i = 0; i + 1 < interfaces.size(); ++i)
+            for (const auto &other : interfaces[i].pairs)
+              if (interfaces[i].block_I == sides[0] && interfaces[i].block_J == sides[1] &&
+                  other.dofs_I == pair.dofs_I && other.dofs_J == pair.dofs_J)
+                return true;
+          return false;
+        };
+        const auto n_before = pairs.size();
+        pairs.erase(std::remove_if(pairs.begin(), pairs.end(), paired_before), pairs.end());
+        interfaces.back().n_shared_nodes = n_before - pairs.size();
+        AssertThrow(!pairs.empty(),
+                    ExcMessage("Interfaces/" + name + ": all its node pairs belong to "
+                               "interfaces listed before it."));
         log << "  interface '" << name << "': " << interfaces.back().pairs.size()
             << " node pairs between '" << blocks[sides[0]]->name << "' and '"
             << blocks[sides[1]]->name << "'" << std::endl;
@@ -476,6 +494,7 @@ namespace fdem
            {"area", std::accumulate(results[i].begin(), results[i].end(), 0.0,
                                     [](const double a, const auto &r) { return a + r.area; })},
            {"n_unpaired_nodes", interfaces[i].n_unpaired_I + interfaces[i].n_unpaired_J},
+           {"n_nodes_paired_in_an_earlier_interface", interfaces[i].n_shared_nodes},
            {"n_stick", n_status[0]},
            {"n_slip", n_status[1]},
            {"n_open", n_status[2]},

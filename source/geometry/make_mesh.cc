@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 
 #include <fdem/geometry/generators.h>
+#include <fdem/geometry/generators_3d.h>
 #include <fdem/geometry/gmsh_mesh.h>
 #include <fdem/geometry/make_mesh.h>
 
@@ -72,12 +73,24 @@ namespace fdem
       MeshDescription<dim> mesh;
       if (geometry.source == Source::mesh_file)
         mesh = read_gmsh_file<dim>(geometry.mesh_file_path(prm_directory));
+      else if (geometry.source_is_3d())
+        {
+          AssertThrow(dim == 3,
+                      ExcMessage("Geometry/Source: the built-in generators "
+                                 "wedge and block on plane are 3D only; set "
+                                 "Dimension = 3."));
+          if constexpr (dim == 3)
+            mesh = (geometry.source == Source::wedge) ?
+                     make_wedge_mesh(geometry.wedge) :
+                     make_block_on_plane_mesh(geometry.block_on_plane);
+        }
       else
         {
           AssertThrow(dim == 2,
                       ExcMessage("Geometry/Source: the built-in generators "
-                                 "(slope, hertz, inclined block) are 2D only "
-                                 "for now; use a mesh file in 3D."));
+                                 "slope, hertz and inclined block are 2D "
+                                 "only; in 3D use wedge, block on plane or a "
+                                 "mesh file."));
           if constexpr (dim == 2)
             mesh = (geometry.source == Source::slope) ?
                      make_slope_mesh(geometry.slope) :

@@ -4,10 +4,15 @@
 #include <fdem/parameters/geometry_parameters.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <map>
+#include <utility>
 
 namespace fdem
 {
@@ -40,6 +45,65 @@ namespace fdem
         for (const std::string &point : Utilities::split_string_list(text, ';'))
           points.push_back(parse_point(point));
         return points;
+      }
+
+      GeometryParameters::Source
+      source_from_name(const std::string &name)
+      {
+        using Source = GeometryParameters::Source;
+        const std::map<std::string, Source> sources = {
+          {"mesh file", Source::mesh_file},
+          {"slope", Source::slope},
+          {"hertz", Source::hertz},
+          {"inclined block", Source::inclined_block},
+          {"wedge", Source::wedge},
+          {"block on plane", Source::block_on_plane}};
+        return sources.at(name);
+      }
+
+      /** Pattern of a plane orientation "dip, dip direction". */
+      Patterns::List
+      orientation_pattern()
+      {
+        return Patterns::List(Patterns::Double(), 2, 2, ",");
+      }
+
+      /** Help text of a plane orientation entry about @p plane. */
+      std::string
+      orientation_help(const std::string &plane)
+      {
+        return "Orientation of " + plane +
+               " as 'dip, dip direction' (degrees): the dip psi below the "
+               "horizontal (0 to 90) and the dip direction alpha, the "
+               "azimuth of the line of steepest descent clockwise from north "
+               "(0 to 360). With x = east, y = north, z = up, the plane's "
+               "upward unit normal is n = (sin psi sin alpha, sin psi cos "
+               "alpha, cos psi).";
+      }
+
+      PlaneOrientation
+      parse_orientation(const std::string &text)
+      {
+        const std::vector<double> values =
+          Utilities::string_to_double(Utilities::split_string_list(text, ','));
+        PlaneOrientation orientation;
+        orientation.dip           = values[0];
+        orientation.dip_direction = values[1];
+        return orientation;
+      }
+
+      bool
+      is_valid(const PlaneOrientation &orientation)
+      {
+        return orientation.dip >= 0 && orientation.dip <= 90 &&
+               orientation.dip_direction >= 0 &&
+               orientation.dip_direction <= 360;
+      }
+
+      double
+      radians(const double degrees)
+      {
+        return degrees * numbers::PI / 180;
       }
 
       /** One-sentence errors that start with the parameter's path. */
@@ -94,10 +158,13 @@ namespace fdem
         prm.declare_entry(
           "Source",
           "slope",
-          Patterns::Selection("mesh file|slope|hertz|inclined block"),
+          Patterns::Selection(
+            "mesh file|slope|hertz|inclined block|wedge|block on plane"),
           "Where the mesh comes from: a Gmsh file (see Mesh file) or one of "
-          "the built-in 2D generators, whose data are in the subsection of "
-          "the same name.");
+          "the built-in generators, whose data are in the subsection of the "
+          "same name: slope, hertz and inclined block build 2D models "
+          "(Dimension = 2), wedge and block on plane 3D models "
+          "(Dimension = 3).");
         prm.declare_entry(
           "Mesh file",
           "",
@@ -264,6 +331,118 @@ namespace fdem
             "plane; the foundation gets elements of that size.");
         }
         prm.leave_subsection();
+
+        prm.enter_subsection("Wedge");
+        {
+          prm.declare_entry(
+            "Slope height",
+            "20",
+            Patterns::Double(0),
+            "Height H of the slope face (m). 3D, x = east, y = north, z = "
+            "up: the apex of the wedge (where the line of intersection of "
+            "Plane A and Plane B daylights in the slope face) is the origin, "
+            "on the toe of the face at z = 0; the crest passes through the "
+            "point at z = H straight up the face's line of steepest ascent "
+            "from the apex.");
+          prm.declare_entry("Slope face",
+                            "65, 180",
+                            orientation_pattern(),
+                            orientation_help("the slope face") +
+                              " The ground in front of the toe is horizontal "
+                              "(z = 0).");
+          prm.declare_entry("Upper slope",
+                            "0, 180",
+                            orientation_pattern(),
+                            orientation_help("the upper slope, the ground "
+                                             "behind the crest"));
+          prm.declare_entry("Plane A",
+                            "50, 140",
+                            orientation_pattern(),
+                            orientation_help(
+                              "the first joint plane (through the apex)"));
+          prm.declare_entry("Plane B",
+                            "50, 220",
+                            orientation_pattern(),
+                            orientation_help(
+                              "the second joint plane (through the apex)"));
+          prm.declare_entry(
+            "Mesh size",
+            "2",
+            Patterns::Double(0),
+            "Element size h in and near the wedge (m): Gmsh meshes "
+            "tetrahedra of size 2 h and splits each into four hexahedra, "
+            "whose edges are about h/3 to h long (0.65 h on average). In the "
+            "rock the size grows with the distance from the wedge (by a "
+            "quarter of the distance) up to 5 h.");
+          prm.declare_entry(
+            "Rock extent",
+            "0",
+            Patterns::Double(0),
+            "Least distance from the wedge to the sides, the back and the "
+            "base of the rock box, and length of the ground in front of the "
+            "toe (m); 0 means 2 Slope height.");
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Block on plane");
+        {
+          prm.declare_entry(
+            "Dip",
+            "30",
+            Patterns::Double(0, 90),
+            "Dip psi of the plane, below the horizontal (degrees). 3D, x = "
+            "east, y = north, z = up: the plane passes through the origin "
+            "with the upward unit normal n = (sin psi sin alpha, sin psi cos "
+            "alpha, cos psi).");
+          prm.declare_entry(
+            "Dip direction",
+            "120",
+            Patterns::Double(0, 360),
+            "Dip direction alpha of the plane: azimuth of its line of "
+            "steepest descent, clockwise from north (degrees). The block's "
+            "length runs down the dip from the origin, its width is centred "
+            "on the origin along the strike.");
+          prm.declare_entry("Block length",
+                            "10",
+                            Patterns::Double(0),
+                            "Length of the block down the dip (m).");
+          prm.declare_entry("Block width",
+                            "6",
+                            Patterns::Double(0),
+                            "Width of the block along the strike (m).");
+          prm.declare_entry("Block height",
+                            "5",
+                            Patterns::Double(0),
+                            "Height of the block normal to the plane (m).");
+          prm.declare_entry("Foundation thickness",
+                            "5",
+                            Patterns::Double(0),
+                            "Thickness of the foundation slab normal to the "
+                            "plane (m).");
+          prm.declare_entry("Foundation overhang",
+                            "3",
+                            Patterns::Double(0),
+                            "Length the foundation extends beyond the block "
+                            "on each of its four sides (m).");
+          prm.declare_entry("Elements along length",
+                            "10",
+                            Patterns::Integer(1),
+                            "Number of elements of the block down the dip; "
+                            "the foundation gets elements of that length.");
+          prm.declare_entry("Elements along width",
+                            "6",
+                            Patterns::Integer(1),
+                            "Number of elements of the block along the "
+                            "strike; the foundation gets elements of that "
+                            "width.");
+          prm.declare_entry("Elements across height",
+                            "5",
+                            Patterns::Integer(1),
+                            "Number of elements of the block normal to the "
+                            "plane; the foundation gets elements of that "
+                            "height.");
+        }
+        prm.leave_subsection();
       }
       prm.leave_subsection();
     }
@@ -275,14 +454,11 @@ namespace fdem
     {
       prm.enter_subsection("Geometry");
       {
-        const std::string source_name = prm.get("Source");
-        source         = (source_name == "mesh file") ? Source::mesh_file :
-                         (source_name == "slope")     ? Source::slope :
-                         (source_name == "hertz")     ? Source::hertz :
-                                                        Source::inclined_block;
+        source         = source_from_name(prm.get("Source"));
         mesh_file      = prm.get("Mesh file");
         scale_factor   = prm.get_double("Scale factor");
         rotation_angle = prm.get_double("Rotation angle");
+
         const std::vector<double> axis = Utilities::string_to_double(
           Utilities::split_string_list(prm.get("Rotation axis"), ','));
         rotation_axis = Tensor<1, 3>({axis[0], axis[1], axis[2]});
@@ -341,6 +517,39 @@ namespace fdem
           inclined_block.n_elements_along_length =
             prm.get_integer("Elements along length");
           inclined_block.n_elements_across_height =
+            prm.get_integer("Elements across height");
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Wedge");
+        {
+          wedge.slope_height = prm.get_double("Slope height");
+          wedge.slope_face   = parse_orientation(prm.get("Slope face"));
+          wedge.upper_slope  = parse_orientation(prm.get("Upper slope"));
+          wedge.plane_a      = parse_orientation(prm.get("Plane A"));
+          wedge.plane_b      = parse_orientation(prm.get("Plane B"));
+          wedge.mesh_size    = prm.get_double("Mesh size");
+          wedge.rock_extent  = prm.get_double("Rock extent");
+          if (wedge.rock_extent == 0)
+            wedge.rock_extent = 2 * wedge.slope_height;
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Block on plane");
+        {
+          auto &block                = block_on_plane;
+          block.plane.dip            = prm.get_double("Dip");
+          block.plane.dip_direction  = prm.get_double("Dip direction");
+          block.block_length         = prm.get_double("Block length");
+          block.block_width          = prm.get_double("Block width");
+          block.block_height         = prm.get_double("Block height");
+          block.foundation_thickness = prm.get_double("Foundation thickness");
+          block.foundation_overhang  = prm.get_double("Foundation overhang");
+          block.n_elements_along_length =
+            prm.get_integer("Elements along length");
+          block.n_elements_along_width =
+            prm.get_integer("Elements along width");
+          block.n_elements_across_height =
             prm.get_integer("Elements across height");
         }
         prm.leave_subsection();
@@ -410,6 +619,151 @@ namespace fdem
                   "Geometry/Inclined block/Foundation thickness and overhang: "
                   "must be positive.");
         }
+      else if (source == Source::wedge)
+        {
+          const std::string path = "Geometry/Wedge/";
+          require(wedge.slope_height > 0,
+                  path + "Slope height: must be positive.");
+          require(wedge.mesh_size > 0, path + "Mesh size: must be positive.");
+          require(wedge.rock_extent > 0,
+                  path + "Rock extent: must be positive.");
+          for (const auto &[name, orientation] :
+               {std::make_pair("Slope face", wedge.slope_face),
+                std::make_pair("Upper slope", wedge.upper_slope),
+                std::make_pair("Plane A", wedge.plane_a),
+                std::make_pair("Plane B", wedge.plane_b)})
+            require(is_valid(orientation),
+                    path + name +
+                      ": the dip must lie in [0, 90] and the dip direction "
+                      "in [0, 360] degrees.");
+          require(wedge.slope_face.dip > 0,
+                  path + "Slope face: the dip must be positive.");
+          require(wedge.upper_slope.dip < 90,
+                  path + "Upper slope: the dip must be less than 90 degrees.");
+          (void)wedge.corners(); // throws if the planes form no wedge
+        }
+      else if (source == Source::block_on_plane)
+        {
+          const auto &block = block_on_plane;
+          require(block.block_length > 0 && block.block_width > 0 &&
+                    block.block_height > 0,
+                  "Geometry/Block on plane/Block length, width and height: "
+                  "must be positive.");
+          require(block.foundation_thickness > 0 &&
+                    block.foundation_overhang > 0,
+                  "Geometry/Block on plane/Foundation thickness and overhang: "
+                  "must be positive.");
+        }
+    }
+
+
+
+    bool
+    GeometryParameters::source_is_3d() const
+    {
+      return source == Source::wedge || source == Source::block_on_plane;
+    }
+
+
+
+    Tensor<1, 3>
+    PlaneOrientation::upward_normal() const
+    {
+      const double psi = radians(dip), alpha = radians(dip_direction);
+      return Tensor<1, 3>({std::sin(psi) * std::sin(alpha),
+                           std::sin(psi) * std::cos(alpha),
+                           std::cos(psi)});
+    }
+
+
+
+    Tensor<1, 3>
+    PlaneOrientation::down_dip_direction() const
+    {
+      const double psi = radians(dip), alpha = radians(dip_direction);
+      return Tensor<1, 3>({std::cos(psi) * std::sin(alpha),
+                           std::cos(psi) * std::cos(alpha),
+                           -std::sin(psi)});
+    }
+
+
+
+    Point<3>
+    GeometryParameters::Wedge::crest_point() const
+    {
+      // Up the face's line of steepest ascent by the height H.
+      const Tensor<1, 3> up_dip = -slope_face.down_dip_direction();
+      return Point<3>(slope_height / up_dip[2] * up_dip);
+    }
+
+
+
+    std::array<Point<3>, 4>
+    GeometryParameters::Wedge::corners() const
+    {
+      const std::string  no_wedge = "Geometry/Wedge: the planes do not form a "
+                                    "wedge that daylights in the slope face.";
+      const double       h        = slope_height;
+      const Tensor<1, 3> n_face   = slope_face.upward_normal();
+      const Tensor<1, 3> n_upper  = upper_slope.upward_normal();
+      const Tensor<1, 3> n_a      = plane_a.upward_normal();
+      const Tensor<1, 3> n_b      = plane_b.upward_normal();
+      const Point<3>     crest    = crest_point();
+      // The toe (and the apex) must lie below the upper slope.
+      require(n_upper * crest > 1e-9 * h,
+              "Geometry/Wedge/Upper slope: must dip less steeply than the "
+              "slope face in the face's dip direction, so that the two meet "
+              "in a crest above the toe.");
+
+      // The point on three planes n_i . x = d_i (the face, A and B pass
+      // through the origin, the upper slope through the crest point).
+      const auto meet = [&](const std::array<Tensor<1, 3>, 3> &normals,
+                            const std::array<double, 3>       &offsets) {
+        Tensor<2, 3> matrix;
+        for (unsigned int i = 0; i < 3; ++i)
+          matrix[i] = normals[i];
+        require(std::abs(determinant(matrix)) > 1e-6, no_wedge);
+        return Point<3>(invert(matrix) *
+                        Tensor<1, 3>({offsets[0], offsets[1], offsets[2]}));
+      };
+      const double   d_upper = n_upper * crest;
+      const Point<3> apex;
+      const Point<3> top = meet({{n_a, n_b, n_upper}}, {{0, 0, d_upper}});
+      const Point<3> crest_a =
+        meet({{n_face, n_upper, n_a}}, {{0, d_upper, 0}});
+      const Point<3> crest_b =
+        meet({{n_face, n_upper, n_b}}, {{0, d_upper, 0}});
+
+      // The line of intersection runs from the apex into the rock behind
+      // the face, and the face of the wedge lies between the toe level and
+      // the crest; then the tetrahedron is the wedge if it is not flat.
+      Tensor<2, 3> edges; // rows: the edges from the apex
+      edges[0]            = top - apex;
+      edges[1]            = crest_a - apex;
+      edges[2]            = crest_b - apex;
+      const double volume = std::abs(determinant(edges)) / 6;
+      require(n_face * top < -1e-9 * h && crest_a[2] > 1e-9 * h &&
+                crest_b[2] > 1e-9 * h && volume > 1e-9 * h * h * h,
+              no_wedge);
+      return {{apex, top, crest_a, crest_b}};
+    }
+
+
+
+    Tensor<2, 3>
+    GeometryParameters::BlockOnPlane::rotation() const
+    {
+      const Tensor<1, 3> down_dip = plane.down_dip_direction();
+      const Tensor<1, 3> normal   = plane.upward_normal();
+      const Tensor<1, 3> strike   = cross_product_3d(normal, down_dip);
+      Tensor<2, 3>       rotation;
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          rotation[i][0] = down_dip[i];
+          rotation[i][1] = strike[i];
+          rotation[i][2] = normal[i];
+        }
+      return rotation;
     }
 
 

@@ -380,10 +380,11 @@ namespace fdem
     {
       prm.enter_subsection("Loads");
       prm.declare_entry("Gravity direction",
-                        "0, -1",
-                        Patterns::List(Patterns::Double(), 2, 3),
+                        "",
+                        Patterns::List(Patterns::Double(), 0, 3),
                         "Direction of gravity (any length; it is normalised), "
-                        "2 or 3 comma-separated numbers as the dimension.");
+                        "2 or 3 comma-separated numbers as the dimension. "
+                        "Empty: down, i.e. -y in 2D and -z in 3D.");
       prm.declare_entry("Gravitational acceleration",
                         "9.81",
                         Patterns::Double(0),
@@ -397,9 +398,14 @@ namespace fdem
                                      const unsigned int dim)
     {
       prm.enter_subsection("Loads");
-      gravity_direction = parse_vector(prm.get("Gravity direction"),
-                                       dim,
-                                       "Loads/Gravity direction");
+      const std::string direction = Utilities::trim(prm.get("Gravity direction"));
+      if (direction.empty())
+        {
+          gravity_direction.assign(dim, 0.0);
+          gravity_direction[dim - 1] = -1;
+        }
+      else
+        gravity_direction = parse_vector(direction, dim, "Loads/Gravity direction");
       double norm       = 0;
       for (const double g : gravity_direction)
         norm += g * g;

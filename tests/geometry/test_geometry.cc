@@ -4,7 +4,9 @@
 // Unit tests of the geometry module: the built-in generators, Gmsh files,
 // the transforms and the error messages.
 
+#include <fdem/geometry/block_mesh.h>
 #include <fdem/geometry/generators.h>
+#include <fdem/geometry/generators_3d.h>
 #include <fdem/geometry/gmsh_mesh.h>
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/parameters/geometry_parameters.h>
@@ -19,9 +21,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <limits>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -1003,10 +1008,15 @@ TEST(MakeMesh, MeshFileRelativeToThePrmDirectoryAndOutput)
 
 TEST(MakeMesh, Errors)
 {
-  expect_error(
-    [] { geometry::make_mesh<3>(parse(""), "", ""); },
-    "Geometry/Source: the built-in generators (slope, hertz, inclined "
-    "block) are 2D only for now");
+  expect_error([] { geometry::make_mesh<3>(parse(""), "", ""); },
+               "Geometry/Source: the built-in generators slope, hertz and "
+               "inclined block are 2D only; in 3D use wedge, block on plane "
+               "or a mesh file.");
+  for (const std::string source : {"wedge", "block on plane"})
+    expect_error(
+      [&] { geometry::make_mesh<2>(parse("set Source = " + source), "", ""); },
+      "Geometry/Source: the built-in generators wedge and block on plane "
+      "are 3D only; set Dimension = 3.");
   expect_error(
     [] {
       geometry::make_mesh<2>(parse("set Source = inclined block\n"
@@ -1068,4 +1078,694 @@ TEST(GeometryParameters, MeshFilePath)
   EXPECT_EQ(geometry.mesh_file_path(""), "meshes/a.msh");
   geometry.mesh_file = "/data/b.msh";
   EXPECT_EQ(geometry.mesh_file_path("/work/case"), "/data/b.msh");
+}
+
+
+
+// ---------------------------------------------------------------------------
+// The 3D generators
+// ---------------------------------------------------------------------------
+
+namespace
+{
+  using Face3 = std::array<unsigned int, 4>;
+
+  Face3
+  sorted_face(const CellData<2> &face)
+  {
+    Face3 key = {
+      {face.vertices[0], face.vertices[1], face.vertices[2], face.vertices[3]}};
+    std::sort(key.begin(), key.end());
+    return key;
+  }
+
+  /** The faces of the cells of @p block (all blocks if it is invalid). */
+  std::set<Face3>
+  cell_faces(const MeshDescription<3> &mesh,
+             const unsigned int        block = numbers::invalid_unsigned_int)
+  {
+    std::set<Face3> faces;
+    for (const auto &cell : mesh.cells)
+      if (block == numbers::invalid_unsigned_int || cell.material_id == block)
+        for (const unsigned int f : GeometryInfo<3>::face_indices())
+          {
+            Face3 key;
+            for (unsigned int v = 0; v < 4; ++v)
+              key[v] =
+                cell.vertices[GeometryInfo<3>::face_to_cell_vertices(f, v)];
+            std::sort(key.begin(), key.end());
+            faces.insert(key);
+          }
+    return faces;
+  }
+
+  std::vector<CellData<2>>
+  faces_of(const MeshDescription<3> &mesh, const std::string &group)
+  {
+    const unsigned int       id = index_of(mesh.face_group_names, group);
+    std::vector<CellData<2>> faces;
+    for (const auto &face : mesh.faces)
+      if (face.boundary_id == id)
+        faces.push_back(face);
+    return faces;
+  }
+
+  /** Area of a plane quadrilateral face (two triangles). */
+  double
+  area(const MeshDescription<3> &mesh, const CellData<2> &face)
+  {
+    const Point<3> &p0 = mesh.vertices[face.vertices[0]],
+                   &p1 = mesh.vertices[face.vertices[1]],
+                   &p2 = mesh.vertices[face.vertices[2]],
+                   &p3 = mesh.vertices[face.vertices[3]];
+    return 0.5 * cross_product_3d(p1 - p0, p3 - p0).norm() +
+           0.5 * cross_product_3d(p3 - p0, p2 - p0).norm();
+  }
+
+  /**
+   * What every generated 3D mesh must satisfy: the given names in order,
+   * hexahedra of positive measure, every block and face group non-empty,
+   * every face a face of a cell, every vertex used, and deal.II accepts it
+   * as a triangulation.
+   */
+  void
+  check_mesh(const MeshDescription<3>       &mesh,
+             const std::vector<std::string> &blocks,
+             const std::vector<std::string> &face_groups)
+  {
+    EXPECT_EQ(mesh.block_names, blocks);
+    EXPECT_EQ(mesh.face_group_names, face_groups);
+    std::vector<unsigned int> n_cells(blocks.size()),
+      n_faces(face_groups.size());
+    std::vector<bool> used(mesh.vertices.size());
+    for (const auto &cell : mesh.cells)
+      {
+        ASSERT_EQ(cell.vertices.size(), 8u);
+        ASSERT_LT(cell.material_id, blocks.size());
+        EXPECT_GT(measure(mesh, cell), 0);
+        ++n_cells[cell.material_id];
+        for (const unsigned int v : cell.vertices)
+          used[v] = true;
+      }
+    const std::set<Face3> faces = cell_faces(mesh);
+    for (const auto &face : mesh.faces)
+      {
+        ASSERT_EQ(face.vertices.size(), 4u);
+        ASSERT_LT(face.boundary_id, face_groups.size());
+        ++n_faces[face.boundary_id];
+        EXPECT_TRUE(faces.count(sorted_face(face)));
+      }
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      EXPECT_GT(n_cells[b], 0u) << blocks[b];
+    for (unsigned int g = 0; g < face_groups.size(); ++g)
+      EXPECT_GT(n_faces[g], 0u) << face_groups[g];
+    EXPECT_EQ(std::count(used.begin(), used.end(), false), 0);
+
+    Triangulation<3> triangulation;
+    EXPECT_NO_THROW(triangulation.create_triangulation(mesh.vertices,
+                                                       mesh.cells,
+                                                       SubCellData()));
+    EXPECT_EQ(triangulation.n_active_cells(), mesh.cells.size());
+  }
+
+  /**
+   * The mesh is conforming everywhere: in deal.II's triangulation of the
+   * whole mesh, the boundary faces are exactly the faces of the groups
+   * other than @p interfaces (which lie inside). Each block alone is a
+   * triangulation whose boundary faces all carry a group.
+   */
+  void
+  expect_conforming_mesh(const MeshDescription<3>       &mesh,
+                         const std::vector<std::string> &interfaces)
+  {
+    std::set<unsigned int> interface_ids;
+    for (const std::string &name : interfaces)
+      interface_ids.insert(index_of(mesh.face_group_names, name));
+    std::set<Face3> outer;
+    for (const auto &face : mesh.faces)
+      if (!interface_ids.count(face.boundary_id))
+        outer.insert(sorted_face(face));
+
+    Triangulation<3> triangulation;
+    triangulation.create_triangulation(mesh.vertices,
+                                       mesh.cells,
+                                       SubCellData());
+    std::set<Face3> boundary;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            Face3 key;
+            for (unsigned int v = 0; v < 4; ++v)
+              key[v] = face->vertex_index(v);
+            std::sort(key.begin(), key.end());
+            boundary.insert(key);
+          }
+    EXPECT_EQ(boundary.size(), outer.size());
+    EXPECT_TRUE(boundary == outer);
+
+    for (unsigned int b = 0; b < mesh.block_names.size(); ++b)
+      {
+        Triangulation<3> block;
+        geometry::create_block_triangulation(mesh, {b}, block);
+        for (const auto &cell : block.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                EXPECT_NE(face->boundary_id(), geometry::unnamed_boundary_id)
+                  << mesh.block_names[b] << " " << face->center();
+              }
+      }
+  }
+
+  /**
+   * Every vertex of every face of @p group belongs to cells of both blocks,
+   * and every face is a face of a cell of each block: the interface is
+   * conforming.
+   */
+  void
+  expect_conforming_interface(const MeshDescription<3> &mesh,
+                              const std::string        &group)
+  {
+    std::vector<std::set<unsigned int>> blocks_of_vertex(mesh.vertices.size());
+    for (const auto &cell : mesh.cells)
+      for (const unsigned int v : cell.vertices)
+        blocks_of_vertex[v].insert(cell.material_id);
+    const std::set<Face3> faces_0 = cell_faces(mesh, 0),
+                          faces_1 = cell_faces(mesh, 1);
+    const auto interface          = faces_of(mesh, group);
+    ASSERT_FALSE(interface.empty()) << group;
+    for (const auto &face : interface)
+      {
+        EXPECT_TRUE(faces_0.count(sorted_face(face))) << group;
+        EXPECT_TRUE(faces_1.count(sorted_face(face))) << group;
+        for (const unsigned int v : face.vertices)
+          EXPECT_EQ(blocks_of_vertex[v].size(), 2u) << group;
+      }
+  }
+
+  /** Upward unit normal of a plane of dip psi and dip direction alpha. */
+  Tensor<1, 3>
+  normal(const double dip, const double dip_direction)
+  {
+    const double psi   = dip * numbers::PI / 180,
+                 alpha = dip_direction * numbers::PI / 180;
+    return Tensor<1, 3>({std::sin(psi) * std::sin(alpha),
+                         std::sin(psi) * std::cos(alpha),
+                         std::cos(psi)});
+  }
+
+  /** The point on the three planes n_i . x = d_i, by Cramer's rule. */
+  Point<3>
+  meet(const std::array<Tensor<1, 3>, 3> &n, const std::array<double, 3> &d)
+  {
+    const auto det =
+      [](const Tensor<1, 3> &a, const Tensor<1, 3> &b, const Tensor<1, 3> &c) {
+        return a * cross_product_3d(b, c);
+      };
+    // Columns of the matrix with rows n_i.
+    std::array<Tensor<1, 3>, 3> column;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        column[j][i] = n[i][j];
+    const Tensor<1, 3> rhs({d[0], d[1], d[2]});
+    const double       denominator = det(column[0], column[1], column[2]);
+    return Point<3>(det(rhs, column[1], column[2]) / denominator,
+                    det(column[0], rhs, column[2]) / denominator,
+                    det(column[0], column[1], rhs) / denominator);
+  }
+
+  /** Smallest and largest edge length and smallest corner sine of a mesh. */
+  struct Quality
+  {
+    double min_edge = std::numeric_limits<double>::max(), max_edge = 0;
+    double min_sine = 1;
+  };
+
+  Quality
+  quality(const MeshDescription<3> &mesh)
+  {
+    Quality q;
+    for (const auto &cell : mesh.cells)
+      for (unsigned int v = 0; v < 8; ++v)
+        {
+          Tensor<2, 3> edges;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              Tensor<1, 3> edge = mesh.vertices[cell.vertices[v ^ (1u << d)]] -
+                                  mesh.vertices[cell.vertices[v]];
+              if ((v >> d) & 1u)
+                edge *= -1;
+              q.min_edge = std::min(q.min_edge, edge.norm());
+              q.max_edge = std::max(q.max_edge, edge.norm());
+              edges[d]   = edge / edge.norm();
+            }
+          q.min_sine = std::min(q.min_sine, determinant(edges));
+        }
+    return q;
+  }
+
+  const std::vector<std::string> wedge_blocks = {"wedge", "rock"};
+  const std::vector<std::string> wedge_groups =
+    {"plane A", "plane B", "slope face", "upper slope", "base", "sides"};
+  const std::vector<std::string> block_on_plane_blocks = {"block",
+                                                          "foundation"};
+  const std::vector<std::string> block_on_plane_groups = {"sliding surface",
+                                                          "block surface",
+                                                          "foundation surface",
+                                                          "foundation base",
+                                                          "foundation ends"};
+
+  /** The wedge's corners from the planes of @p wedge, as in the docs. */
+  std::array<Point<3>, 4>
+  exact_wedge_corners(const Parameters::Wedge &wedge)
+  {
+    const double   psi   = wedge.slope_face.dip * numbers::PI / 180;
+    const double   alpha = wedge.slope_face.dip_direction * numbers::PI / 180;
+    const double   h     = wedge.slope_height;
+    const Point<3> crest(-h / std::tan(psi) * std::sin(alpha),
+                         -h / std::tan(psi) * std::cos(alpha),
+                         h);
+    const auto     n = [](const parameters::PlaneOrientation &o) {
+      return normal(o.dip, o.dip_direction);
+    };
+    const Tensor<1, 3> face = n(wedge.slope_face), upper = n(wedge.upper_slope),
+                       a = n(wedge.plane_a), b = n(wedge.plane_b);
+    const double d = upper * crest;
+    return {{Point<3>(),
+             meet({{a, b, upper}}, {{0, 0, d}}),
+             meet({{face, upper, a}}, {{0, d, 0}}),
+             meet({{face, upper, b}}, {{0, d, 0}})}};
+  }
+
+  double
+  tetrahedron_volume(const std::array<Point<3>, 4> &p)
+  {
+    return std::abs((p[1] - p[0]) *
+                    cross_product_3d(p[2] - p[0], p[3] - p[0])) /
+           6;
+  }
+
+  /** The checks of a wedge mesh; returns it. */
+  MeshDescription<3>
+  check_wedge(const Parameters::Wedge &wedge)
+  {
+    const auto mesh = geometry::make_wedge_mesh(wedge);
+    check_mesh(mesh, wedge_blocks, wedge_groups);
+    const double h = wedge.slope_height;
+
+    for (const std::string group : {"plane A", "plane B"})
+      expect_conforming_interface(mesh, group);
+    expect_conforming_mesh(mesh, {"plane A", "plane B"});
+    const Tensor<1, 3> n_a =
+      normal(wedge.plane_a.dip, wedge.plane_a.dip_direction);
+    const Tensor<1, 3> n_b =
+      normal(wedge.plane_b.dip, wedge.plane_b.dip_direction);
+    for (const auto &[group, n] :
+         {std::make_pair("plane A", n_a), std::make_pair("plane B", n_b)})
+      for (const auto &face : faces_of(mesh, group))
+        for (const unsigned int v : face.vertices)
+          EXPECT_LT(std::abs(n * mesh.vertices[v]), 1e-9 * h) << group;
+
+    // Flat faces: the hexahedra fill the tetrahedron exactly.
+    const std::array<Point<3>, 4> corners = exact_wedge_corners(wedge);
+    const double                  exact   = tetrahedron_volume(corners);
+    EXPECT_NEAR(block_area(mesh, 0), exact, 1e-9 * exact);
+    // The mesh's corners are the wedge's.
+    for (const Point<3> &corner : corners)
+      {
+        double distance = std::numeric_limits<double>::max();
+        for (const auto &cell : mesh.cells)
+          if (cell.material_id == 0)
+            for (const unsigned int v : cell.vertices)
+              distance = std::min(distance, mesh.vertices[v].distance(corner));
+        EXPECT_LT(distance, 1e-9 * h) << corner;
+      }
+
+    // Only the rock reaches the base and the sides; the free surfaces are
+    // on both blocks.
+    const std::set<Face3> wedge_faces = cell_faces(mesh, 0),
+                          rock_faces  = cell_faces(mesh, 1);
+    for (const std::string group : {"base", "sides"})
+      for (const auto &face : faces_of(mesh, group))
+        {
+          EXPECT_FALSE(wedge_faces.count(sorted_face(face))) << group;
+          EXPECT_TRUE(rock_faces.count(sorted_face(face))) << group;
+        }
+    for (const std::string group : {"slope face", "upper slope"})
+      {
+        unsigned int n_wedge = 0, n_rock = 0;
+        for (const auto &face : faces_of(mesh, group))
+          {
+            n_wedge += wedge_faces.count(sorted_face(face));
+            n_rock += rock_faces.count(sorted_face(face));
+          }
+        EXPECT_GT(n_wedge, 0u) << group;
+        EXPECT_GT(n_rock, 0u) << group;
+      }
+    return mesh;
+  }
+} // namespace
+
+
+
+TEST(PlaneOrientation, NormalAndDownDipDirection)
+{
+  parameters::PlaneOrientation plane;
+  plane.dip            = 30;
+  plane.dip_direction  = 120;
+  const Tensor<1, 3> n = plane.upward_normal(), d = plane.down_dip_direction();
+  EXPECT_LT((n - normal(30, 120)).norm(), 1e-15);
+  // Dipping to the east-south-east: the normal leans that way.
+  EXPECT_GT(n[0], 0);
+  EXPECT_LT(n[1], 0);
+  EXPECT_NEAR(n.norm(), 1, 1e-15);
+  EXPECT_NEAR(d.norm(), 1, 1e-15);
+  EXPECT_NEAR(n * d, 0, 1e-15);
+  EXPECT_NEAR(d[2], -0.5, 1e-15);
+  EXPECT_NEAR(std::atan2(d[0], d[1]) * 180 / numbers::PI, 120, 1e-12);
+  // Dip direction 0 is north, 90 east.
+  plane.dip_direction = 0;
+  EXPECT_GT(plane.down_dip_direction()[1], 0);
+  plane.dip_direction = 90;
+  EXPECT_GT(plane.down_dip_direction()[0], 0);
+}
+
+
+
+TEST(Wedge, DefaultMeshHasTheNamedBlocksAndFaceGroups)
+{
+  const Parameters geometry = parse("set Source = wedge");
+  const auto      &wedge    = geometry.wedge;
+  EXPECT_EQ(wedge.slope_height, 20);
+  EXPECT_EQ(wedge.rock_extent, 40);
+  EXPECT_EQ(wedge.mesh_size, 2);
+  EXPECT_EQ(wedge.plane_a.dip, 50);
+  EXPECT_EQ(wedge.plane_a.dip_direction, 140);
+  const auto mesh = check_wedge(wedge);
+
+  // The apex at the origin, the crest at z = H above it on the face.
+  const std::array<Point<3>, 4> corners = wedge.corners();
+  const std::array<Point<3>, 4> exact   = exact_wedge_corners(wedge);
+  for (unsigned int i = 0; i < 4; ++i)
+    EXPECT_LT(corners[i].distance(exact[i]), 1e-12 * 20);
+  EXPECT_EQ(corners[0], Point<3>());
+  const Point<3> crest = wedge.crest_point();
+  EXPECT_NEAR(crest[0], 0, 1e-12);
+  EXPECT_NEAR(crest[1], 20 / std::tan(65 * numbers::PI / 180), 1e-12);
+  EXPECT_NEAR(crest[2], 20, 1e-12);
+  for (const unsigned int i : {1u, 2u, 3u})
+    EXPECT_NEAR(corners[i][2], 20, 1e-12);
+
+  // The planes of the outer faces; the box reaches the rock extent below
+  // the apex.
+  const Tensor<1, 3> n_face = normal(65, 180);
+  for (const auto &face : faces_of(mesh, "upper slope"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][2], 20, 1e-9);
+  for (const auto &face : faces_of(mesh, "base"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][2], -40, 1e-9);
+  for (const auto &face : faces_of(mesh, "slope face"))
+    {
+      // The face itself, or the ground in front of the toe.
+      bool on_face = true, on_ground = true;
+      for (const unsigned int v : face.vertices)
+        {
+          on_face &= std::abs(n_face * mesh.vertices[v]) < 1e-9;
+          on_ground &=
+            std::abs(mesh.vertices[v][2]) < 1e-9 && mesh.vertices[v][1] < 1e-9;
+        }
+      EXPECT_TRUE(on_face || on_ground);
+    }
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0, z_min = 0;
+  for (const Point<3> &p : mesh.vertices)
+    {
+      x_min = std::min(x_min, p[0]);
+      x_max = std::max(x_max, p[0]);
+      y_min = std::min(y_min, p[1]);
+      y_max = std::max(y_max, p[1]);
+      z_min = std::min(z_min, p[2]);
+    }
+  double wedge_x_min = 0, wedge_x_max = 0, wedge_y_max = 0;
+  for (const Point<3> &p : corners)
+    {
+      wedge_x_min = std::min(wedge_x_min, p[0]);
+      wedge_x_max = std::max(wedge_x_max, p[0]);
+      wedge_y_max = std::max(wedge_y_max, p[1]);
+    }
+  // Dip direction 180: the face looks south (-y), the strike is along x.
+  EXPECT_NEAR(x_min, wedge_x_min - 40, 1e-9);
+  EXPECT_NEAR(x_max, wedge_x_max + 40, 1e-9);
+  EXPECT_NEAR(y_max, wedge_y_max + 40, 1e-9);
+  EXPECT_NEAR(y_min, -40, 1e-9);
+  EXPECT_NEAR(z_min, -40, 1e-9);
+
+  const Quality q             = quality(mesh);
+  unsigned int  n_wedge_cells = 0;
+  for (const auto &cell : mesh.cells)
+    n_wedge_cells += (cell.material_id == 0);
+  std::cout << "wedge: " << mesh.cells.size() << " cells (" << n_wedge_cells
+            << " in the wedge), " << mesh.vertices.size() << " vertices, edges "
+            << q.min_edge << " to " << q.max_edge << " m, smallest corner sine "
+            << q.min_sine << std::endl;
+  EXPECT_GT(q.min_sine, 0.05);
+}
+
+
+
+TEST(Wedge, OtherOrientationsAndSizes)
+{
+  // An inclined upper slope, a steeper face looking north-east, unequal
+  // planes, a finer mesh and a smaller rock extent.
+  const Parameters geometry =
+    parse("set Source = wedge\nsubsection Wedge\n"
+          " set Slope height = 12\n set Slope face = 75, 40\n"
+          " set Upper slope = 10, 60\n set Plane A = 45, 5\n"
+          " set Plane B = 60, 85\n set Mesh size = 1.5\n"
+          " set Rock extent = 10\nend");
+  const auto mesh = check_wedge(geometry.wedge);
+  for (const auto &face : faces_of(mesh, "base"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(mesh.vertices[v][2], -10, 1e-9);
+  const Tensor<1, 3> n_upper = normal(10, 60);
+  const Point<3>     crest   = geometry.wedge.crest_point();
+  for (const auto &face : faces_of(mesh, "upper slope"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(n_upper * (mesh.vertices[v] - crest), 0, 1e-9);
+}
+
+
+
+TEST(Wedge, PlanesThatFormNoWedgeAreRejected)
+{
+  const std::string message = "Geometry/Wedge: the planes do not form a "
+                              "wedge that daylights in the slope face.";
+  for (const std::string &planes :
+       {// The line of intersection plunges more steeply than the face.
+        std::string(" set Plane A = 80, 140\n set Plane B = 80, 220\n"),
+        // Parallel planes.
+        std::string(" set Plane A = 50, 140\n set Plane B = 50, 140\n"),
+        // Dipping into the slope: the line rises out of the face.
+        std::string(" set Plane A = 50, 320\n set Plane B = 50, 40\n")})
+    {
+      SCOPED_TRACE(planes);
+      expect_error(
+        [&] {
+          parse("set Source = wedge\nsubsection Wedge\n" + planes + "end");
+        },
+        message);
+      // The generator checks too, and make_mesh in 3D.
+      Parameters geometry = parse("subsection Wedge\n" + planes + "end");
+      expect_error([&] { geometry::make_wedge_mesh(geometry.wedge); }, message);
+      geometry.source = Parameters::Source::wedge;
+      expect_error([&] { geometry::make_mesh<3>(geometry, "", ""); }, message);
+    }
+  expect_error(
+    [] {
+      parse("set Source = wedge\nsubsection Wedge\n"
+            " set Upper slope = 70, 180\nend");
+    },
+    "Geometry/Wedge/Upper slope: must dip less steeply than the slope face");
+  expect_error(
+    [] {
+      parse(
+        "set Source = wedge\nsubsection Wedge\n set Plane A = 95, 140\nend");
+    },
+    "Geometry/Wedge/Plane A: the dip must lie in [0, 90] and the dip "
+    "direction in [0, 360] degrees.");
+  expect_error(
+    [] {
+      parse("set Source = wedge\nsubsection Wedge\n set Mesh size = 0\nend");
+    },
+    "Geometry/Wedge/Mesh size: must be positive.");
+}
+
+
+
+TEST(BlockOnPlane, StructuredMeshOnTheRotatedPlane)
+{
+  const Parameters geometry             = parse("set Source = block on plane");
+  const Parameters::BlockOnPlane &block = geometry.block_on_plane;
+  EXPECT_EQ(block.plane.dip, 30);
+  EXPECT_EQ(block.plane.dip_direction, 120);
+  EXPECT_EQ(block.foundation_overhang, 3);
+  const auto mesh = geometry::make_block_on_plane_mesh(block);
+  check_mesh(mesh, block_on_plane_blocks, block_on_plane_groups);
+  expect_conforming_interface(mesh, "sliding surface");
+  expect_conforming_mesh(mesh, {"sliding surface"});
+
+  // Elements of 1 m: 10 x 6 x 5 in the block, 16 x 12 x 5 in the slab.
+  unsigned int n_block_cells = 0;
+  for (const auto &cell : mesh.cells)
+    {
+      n_block_cells += (cell.material_id == 0);
+      EXPECT_NEAR(measure(mesh, cell), 1, 1e-12);
+    }
+  EXPECT_EQ(n_block_cells, 300u);
+  EXPECT_EQ(mesh.cells.size(), 300u + 960u);
+  EXPECT_EQ(mesh.vertices.size(), 11u * 7 * 6 + 17u * 13 * 6 - 11 * 7);
+  EXPECT_NEAR(block_area(mesh, 0), 10. * 6 * 5, 1e-9 * 300);
+  EXPECT_NEAR(block_area(mesh, 1), 16. * 12 * 5, 1e-9 * 960);
+  EXPECT_EQ(faces_of(mesh, "sliding surface").size(), 60u);
+  EXPECT_EQ(faces_of(mesh, "block surface").size(), 60u + 2 * 50 + 2 * 30);
+  EXPECT_EQ(faces_of(mesh, "foundation surface").size(), 16u * 12 - 60);
+  EXPECT_EQ(faces_of(mesh, "foundation base").size(), 16u * 12);
+  EXPECT_EQ(faces_of(mesh, "foundation ends").size(), 2u * 80 + 2 * 60);
+
+  // The sliding surface lies on the plane through the origin with the
+  // given normal and covers L x B; the block lies above it, down the dip
+  // from the origin and centred on it along the strike.
+  const Tensor<1, 3> n = normal(30, 120);
+  const Tensor<1, 3> down_dip(
+    {std::cos(numbers::PI / 6) * std::sin(2 * numbers::PI / 3),
+     std::cos(numbers::PI / 6) * std::cos(2 * numbers::PI / 3),
+     -0.5});
+  const Tensor<1, 3> strike       = cross_product_3d(n, down_dip);
+  double             sliding_area = 0;
+  for (const auto &face : faces_of(mesh, "sliding surface"))
+    {
+      sliding_area += area(mesh, face);
+      for (const unsigned int v : face.vertices)
+        EXPECT_NEAR(n * mesh.vertices[v], 0, 1e-12);
+    }
+  EXPECT_NEAR(sliding_area, 60, 1e-9 * 60);
+  for (const auto &cell : mesh.cells)
+    for (const unsigned int v : cell.vertices)
+      {
+        const Point<3> &p = mesh.vertices[v];
+        if (cell.material_id == 0)
+          {
+            EXPECT_GT(n * p, -1e-12);
+            EXPECT_LT(n * p, 5 + 1e-12);
+            EXPECT_GT(down_dip * p, -1e-12);
+            EXPECT_LT(down_dip * p, 10 + 1e-12);
+            EXPECT_LT(std::abs(strike * p), 3 + 1e-12);
+          }
+        else
+          {
+            EXPECT_LT(n * p, 1e-12);
+            EXPECT_GT(n * p, -5 - 1e-12);
+          }
+      }
+  for (const auto &face : faces_of(mesh, "foundation base"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(n * mesh.vertices[v], -5, 1e-12);
+  for (const auto &face : faces_of(mesh, "foundation surface"))
+    for (const unsigned int v : face.vertices)
+      EXPECT_NEAR(n * mesh.vertices[v], 0, 1e-12);
+  for (const auto &face : faces_of(mesh, "foundation ends"))
+    {
+      double along = 0, across = 0;
+      for (const unsigned int v : face.vertices)
+        {
+          along  = std::max(along, std::abs(down_dip * mesh.vertices[v] - 5));
+          across = std::max(across, std::abs(strike * mesh.vertices[v]));
+        }
+      EXPECT_TRUE(std::abs(along - 8) < 1e-12 || std::abs(across - 6) < 1e-12);
+    }
+  // The block's faces other than the sliding surface are not on the
+  // foundation.
+  const std::set<Face3> foundation = cell_faces(mesh, 1);
+  for (const auto &face : faces_of(mesh, "block surface"))
+    EXPECT_FALSE(foundation.count(sorted_face(face)));
+}
+
+
+
+TEST(BlockOnPlane, OtherSizesAndTheTransformation)
+{
+  const std::string entries =
+    "set Source = block on plane\nsubsection Block on plane\n"
+    " set Dip = 47\n set Dip direction = 301\n set Block length = 4\n"
+    " set Block width = 3\n set Block height = 2\n"
+    " set Foundation thickness = 1.5\n set Foundation overhang = 0.4\n"
+    " set Elements along length = 8\n set Elements along width = 3\n"
+    " set Elements across height = 4\nend\n";
+  const Parameters geometry = parse(entries);
+  const auto       mesh     = geometry::make_mesh<3>(geometry, "", "");
+  check_mesh(mesh, block_on_plane_blocks, block_on_plane_groups);
+  expect_conforming_interface(mesh, "sliding surface");
+  expect_conforming_mesh(mesh, {"sliding surface"});
+  EXPECT_NEAR(block_area(mesh, 0), 4. * 3 * 2, 1e-9 * 24);
+  EXPECT_NEAR(block_area(mesh, 1), 4.8 * 3.8 * 1.5, 1e-9 * 27);
+  // 8 x 3 x 4 in the block; the slab has one element across the overhang
+  // in both directions and 3 across the thickness.
+  EXPECT_EQ(mesh.cells.size(), 8u * 3 * 4 + 10u * 5 * 3);
+  const Tensor<1, 3> n            = normal(47, 301);
+  double             sliding_area = 0;
+  for (const auto &face : faces_of(mesh, "sliding surface"))
+    {
+      sliding_area += area(mesh, face);
+      for (const unsigned int v : face.vertices)
+        EXPECT_NEAR(n * mesh.vertices[v], 0, 1e-12);
+    }
+  EXPECT_NEAR(sliding_area, 12, 1e-9 * 12);
+
+  // make_mesh applies the transformation to the 3D generators too.
+  const auto moved = geometry::make_mesh<3>(
+    parse(entries + "set Scale factor = 2\nset Translation = 1, 2, 3"), "", "");
+  ASSERT_EQ(moved.vertices.size(), mesh.vertices.size());
+  for (unsigned int v = 0; v < mesh.vertices.size(); ++v)
+    EXPECT_LT(moved.vertices[v].distance(
+                Point<3>(2 * mesh.vertices[v] + Tensor<1, 3>({1., 2., 3.}))),
+              1e-12 * 10);
+}
+
+
+
+TEST(BlockOnPlane, WrittenMeshReadsBack)
+{
+  const auto mesh = geometry::make_block_on_plane_mesh(
+    parse("set Source = block on plane").block_on_plane);
+  const std::string file = temporary_file(".msh");
+  geometry::write_gmsh_file(mesh, file);
+  const auto read = geometry::read_gmsh_file<3>(file);
+  std::filesystem::remove(file);
+  EXPECT_EQ(read.cells.size(), mesh.cells.size());
+  EXPECT_EQ(read.vertices.size(), mesh.vertices.size());
+  EXPECT_EQ(read.faces.size(), mesh.faces.size());
+  EXPECT_EQ(read.block_names, mesh.block_names);
+  EXPECT_EQ(read.face_group_names, mesh.face_group_names);
+  EXPECT_NEAR(block_area(read, 0), 300, 1e-9 * 300);
+}
+
+
+
+TEST(BlockOnPlane, BadInputs)
+{
+  expect_error(
+    [] {
+      parse("set Source = block on plane\nsubsection Block on plane\n"
+            " set Block width = 0\nend");
+    },
+    "Geometry/Block on plane/Block length, width and height: must be "
+    "positive.");
+  expect_error(
+    [] {
+      parse("set Source = block on plane\nsubsection Block on plane\n"
+            " set Foundation overhang = 0\nend");
+    },
+    "Geometry/Block on plane/Foundation thickness and overhang: must be "
+    "positive.");
 }

@@ -47,6 +47,8 @@ namespace fdem
       std::vector<NodePair<dim>> pairs;
       /** Interface nodes left without a partner on each side. */
       unsigned int n_unpaired_I = 0, n_unpaired_J = 0;
+      /** Nodes also on an interface listed before, and paired there. */
+      unsigned int n_shared_nodes = 0;
     };
 
     /**

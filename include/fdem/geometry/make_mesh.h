@@ -14,7 +14,9 @@ namespace fdem
     /**
      * The mesh that the subsection "Geometry" describes: read from the mesh
      * file (relative to @p prm_directory) or made by a built-in generator
-     * (2D only), then transformed by apply_transformation(). If
+     * (slope, hertz and inclined block in 2D, wedge and block on plane in
+     * 3D; any other combination throws), then transformed by
+     * apply_transformation(). If
      * @p msh_output_file is not empty, the final mesh is also written there
      * (Gmsh .msh version 4, ASCII) for the user to look at.
      */

@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,36 @@ namespace fdem
   namespace parameters
   {
     using namespace dealii;
+
+    /**
+     * Orientation of a plane in 3D by its dip and dip direction, with x =
+     * east, y = north and z = up.
+     */
+    struct PlaneOrientation
+    {
+      /** Dip psi: angle below the horizontal (degrees, 0 to 90). */
+      double dip = 0;
+      /**
+       * Dip direction alpha: azimuth of the line of steepest descent
+       * (degrees clockwise from north, 0 to 360).
+       */
+      double dip_direction = 0;
+
+      /**
+       * The upward unit normal n = (sin psi sin alpha, sin psi cos alpha,
+       * cos psi).
+       */
+      Tensor<1, 3>
+      upward_normal() const;
+
+      /**
+       * The unit vector down the line of steepest descent,
+       * (cos psi sin alpha, cos psi cos alpha, -sin psi); horizontal towards
+       * the dip direction for a horizontal plane.
+       */
+      Tensor<1, 3>
+      down_dip_direction() const;
+    };
 
     /**
      * The subsection "Geometry": where the mesh comes from (a Gmsh file or
@@ -32,7 +63,9 @@ namespace fdem
         mesh_file,
         slope,
         hertz,
-        inclined_block
+        inclined_block,
+        wedge,
+        block_on_plane
       };
 
       /** Shape of the sliding surface of the slope generator. */
@@ -98,6 +131,89 @@ namespace fdem
         unsigned int n_elements_across_height;
       };
 
+      /**
+       * Subsection "Wedge": a tetrahedral rock wedge cut from a slope by two
+       * joint planes A and B (3D). The apex of the wedge, where the line of
+       * intersection of A and B daylights in the slope face, is the origin,
+       * on the toe of the slope face (z = 0); the crest passes through the
+       * point at height H straight up the face's line of steepest ascent
+       * from there, crest_point().
+       */
+      struct Wedge
+      {
+        /** Height H of the slope face, from the toe (z = 0) to the crest (m).
+         */
+        double           slope_height;
+        PlaneOrientation slope_face;
+        PlaneOrientation upper_slope;
+        PlaneOrientation plane_a;
+        PlaneOrientation plane_b;
+        /**
+         * Element size h in and near the wedge (m): tetrahedra of size 2 h,
+         * each split into four hexahedra.
+         */
+        double mesh_size;
+        /**
+         * Least distance from the wedge to the sides, back and base of the
+         * rock, and length of the ground in front of the toe (m); 2 H if 0
+         * is given.
+         */
+        double rock_extent;
+
+        /**
+         * The point of the crest above the apex, (-H cot psi sin alpha,
+         * -H cot psi cos alpha, H) with the slope face's dip psi and dip
+         * direction alpha.
+         */
+        Point<3>
+        crest_point() const;
+
+        /**
+         * The corners of the wedge: the apex (the origin: slope face, A, B),
+         * the top of the line of intersection (upper slope, A, B), and the
+         * ends of its crest edge on A (slope face, upper slope, A) and on B
+         * (slope face, upper slope, B). Throws if the planes do not form a
+         * wedge that daylights in the slope face: the line of intersection
+         * must run from the apex up into the rock behind the face and reach
+         * the upper slope, and the crest edge must lie above the toe.
+         */
+        std::array<Point<3>, 4>
+        corners() const;
+      };
+
+      /**
+       * Subsection "Block on plane": a block on an inclined plane in 3D,
+       * structured hexahedra. In the plane's frame (x down-dip, y along
+       * strike, z normal to the plane, up) the block is
+       * [0, L] x [-B/2, B/2] x [0, H] and the foundation slab
+       * [-o, L + o] x [-B/2 - o, B/2 + o] x [-T, 0], with o the overhang.
+       */
+      struct BlockOnPlane
+      {
+        PlaneOrientation plane;
+        /** Block length L down the dip (m). */
+        double block_length;
+        /** Block width B along the strike (m). */
+        double block_width;
+        /** Block height H normal to the plane (m). */
+        double block_height;
+        /** Thickness T of the foundation slab (m). */
+        double foundation_thickness;
+        /** Length the foundation extends beyond the block on every side (m). */
+        double       foundation_overhang;
+        unsigned int n_elements_along_length;
+        unsigned int n_elements_along_width;
+        unsigned int n_elements_across_height;
+
+        /**
+         * The rotation from the plane's frame to x, y, z: its columns are
+         * the down-dip direction, the strike direction (normal x down-dip)
+         * and the upward normal.
+         */
+        Tensor<2, 3>
+        rotation() const;
+      };
+
       Source source = Source::slope;
       /** The mesh file as written in the .prm file: see mesh_file_path(). */
       std::string mesh_file;
@@ -117,6 +233,12 @@ namespace fdem
       Slope         slope;
       Hertz         hertz;
       InclinedBlock inclined_block;
+      Wedge         wedge;
+      BlockOnPlane  block_on_plane;
+
+      /** Whether the selected source builds 3D models (only). */
+      bool
+      source_is_3d() const;
 
       /** Declare the entries of the subsection "Geometry". */
       static void

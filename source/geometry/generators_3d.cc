@@ -1,0 +1,545 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+
+#include <fdem/geometry/generators_3d.h>
+#include <fdem/geometry/gmsh_mesh.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    namespace
+    {
+      /** Physical group of @p entities (of dimension @p structdim) named @p name. */
+      void
+      add_group(const int               structdim,
+                const std::vector<int> &entities,
+                const std::string      &name)
+      {
+        gmsh::model::setPhysicalName(
+          structdim, gmsh::model::addPhysicalGroup(structdim, entities), name);
+      }
+
+      /**
+       * OpenCASCADE solid bounded by plane polygons: @p faces lists, for
+       * each face, the indices of its corners in @p corners, in order
+       * around it. Neighbouring faces share their edges.
+       */
+      int
+      add_occ_polyhedron(const std::vector<Point<3>>              &corners,
+                         const std::vector<std::vector<unsigned>> &faces)
+      {
+        namespace occ = gmsh::model::occ;
+        std::vector<int> points;
+        for (const Point<3> &corner : corners)
+          points.push_back(occ::addPoint(corner[0], corner[1], corner[2]));
+        std::map<std::pair<unsigned int, unsigned int>, int> lines;
+        const auto line = [&](const unsigned int a, const unsigned int b) {
+          const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+          auto       it  = lines.find(key);
+          if (it == lines.end())
+            it = lines
+                   .emplace(key,
+                            occ::addLine(points[key.first], points[key.second]))
+                   .first;
+          return (a < b) ? it->second : -it->second;
+        };
+        std::vector<int> surfaces;
+        for (const auto &face : faces)
+          {
+            std::vector<int> loop;
+            for (unsigned int i = 0; i < face.size(); ++i)
+              loop.push_back(line(face[i], face[(i + 1) % face.size()]));
+            surfaces.push_back(occ::addPlaneSurface({occ::addCurveLoop(loop)}));
+          }
+        return occ::addVolume({occ::addSurfaceLoop(surfaces)});
+      }
+
+      /** Solid with the eight @p corners in deal.II's (lexicographic) order. */
+      int
+      add_occ_hexahedron(const std::array<Point<3>, 8> &corners)
+      {
+        return add_occ_polyhedron(std::vector<Point<3>>(corners.begin(),
+                                                        corners.end()),
+                                  {{0, 1, 3, 2},
+                                   {4, 5, 7, 6},
+                                   {0, 1, 5, 4},
+                                   {2, 3, 7, 6},
+                                   {0, 2, 6, 4},
+                                   {1, 3, 7, 5}});
+      }
+
+      /** Tags of the entities of dimension dim-1 that bound @p entity. */
+      std::vector<int>
+      boundary_tags(const int dim, const int entity)
+      {
+        gmsh::vectorpair boundary;
+        gmsh::model::getBoundary({{dim, entity}}, boundary, false, false);
+        std::vector<int> tags;
+        for (const auto &dim_tag : boundary)
+          tags.push_back(std::abs(dim_tag.second));
+        std::sort(tags.begin(), tags.end());
+        tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+        return tags;
+      }
+
+      /** Coordinates of the corners of the (plane) surface @p surface. */
+      std::vector<Point<3>>
+      surface_corners(const int surface)
+      {
+        gmsh::vectorpair points;
+        gmsh::model::getBoundary({{2, surface}}, points, false, false, true);
+        std::vector<Point<3>> corners;
+        for (const auto &point : points)
+          {
+            std::vector<double> xyz;
+            gmsh::model::getValue(0, std::abs(point.second), {}, xyz);
+            corners.emplace_back(xyz[0], xyz[1], xyz[2]);
+          }
+        return corners;
+      }
+    } // namespace
+
+
+
+    MeshDescription<3>
+    make_wedge_mesh(const parameters::GeometryParameters::Wedge &wedge)
+    {
+      namespace occ                        = gmsh::model::occ;
+      const std::string             name   = "Geometry/Wedge";
+      const std::array<Point<3>, 4> apexes = wedge.corners(); // or throws
+      const std::vector<Point<3>>   corners(apexes.begin(), apexes.end());
+      const Point<3>                crest   = wedge.crest_point();
+      const Tensor<1, 3>            n_face  = wedge.slope_face.upward_normal();
+      const Tensor<1, 3>            n_upper = wedge.upper_slope.upward_normal();
+      const Tensor<1, 3>            n_a     = wedge.plane_a.upward_normal();
+      const Tensor<1, 3>            n_b     = wedge.plane_b.upward_normal();
+      const double                  extent  = wedge.rock_extent;
+      Assert(wedge.slope_face.dip > 0 && wedge.upper_slope.dip < 90,
+             ExcMessage("parse_parameters() checks the dips."));
+      // OpenCASCADE's Boolean operations should give one rock body and the
+      // wedge, bounded by the planes as expected; say so if they do not.
+      const std::string unexpected =
+        name + ": OpenCASCADE did not cut the wedge out of the rock as "
+               "expected; try slightly different orientations.";
+
+      // The frame of the face's strike: e_r horizontal towards the dip
+      // direction (out of the slope), e_s along the strike, e_s x e_r = e_z.
+      const double alpha = wedge.slope_face.dip_direction * numbers::PI / 180;
+      const Tensor<1, 3> e_r({std::sin(alpha), std::cos(alpha), 0.});
+      const Tensor<1, 3> e_s({std::cos(alpha), -std::sin(alpha), 0.});
+      const Tensor<1, 3> e_z({0., 0., 1.});
+      const auto point = [&](const double s, const double r, const double z) {
+        return Point<3>(s * e_s + r * e_r + z * e_z);
+      };
+
+      // The box reaches the extent beyond the wedge along the strike, behind
+      // it and below it (the apex is the lowest point, at z = 0), and in
+      // front of the toe (the apex is the foremost point, at r = 0).
+      double s_min = 0, s_max = 0, r_min = 0;
+      for (const Point<3> &p : corners)
+        {
+          s_min = std::min(s_min, p * e_s);
+          s_max = std::max(s_max, p * e_s);
+          r_min = std::min(r_min, p * e_r);
+        }
+      const double s_low = s_min - extent, s_high = s_max + extent;
+      const double r_back = r_min - extent, r_front = extent;
+      const double z_base = -extent;
+      // The box's top lies above the upper slope everywhere.
+      double z_top = crest[2];
+      for (const double s : {s_low, s_high})
+        for (const double r : {r_back, r_front})
+          {
+            const Point<3> p = point(s, r, 0);
+            z_top            = std::max(z_top,
+                             crest[2] - (n_upper[0] * (p[0] - crest[0]) +
+                                         n_upper[1] * (p[1] - crest[1])) /
+                                          n_upper[2]);
+          }
+      z_top += extent;
+      const double size = (s_high - s_low) + (r_front - r_back) +
+                          (z_top - z_base) + crest.distance(Point<3>());
+      const double tolerance = 1e-9 * size;
+
+      GmshSession session;
+      gmsh::model::add("wedge");
+      int              wedge_volume = 0;
+      std::vector<int> rock_volumes;
+      GmshSession::run(name + ": Gmsh could not build the model", [&]() {
+        const int box = add_occ_hexahedron({{point(s_low, r_back, z_base),
+                                             point(s_high, r_back, z_base),
+                                             point(s_low, r_front, z_base),
+                                             point(s_high, r_front, z_base),
+                                             point(s_low, r_back, z_top),
+                                             point(s_high, r_back, z_top),
+                                             point(s_low, r_front, z_top),
+                                             point(s_high, r_front, z_top)}});
+
+        // Everything above the upper slope: a large box on it.
+        Tensor<1, 3> t_1 = cross_product_3d(e_z, n_upper);
+        t_1              = (t_1.norm() > 1e-12) ? t_1 / t_1.norm() : e_s;
+        const Tensor<1, 3>      t_2 = cross_product_3d(n_upper, t_1);
+        std::array<Point<3>, 8> above;
+        for (unsigned int i = 0; i < 8; ++i)
+          above[i] =
+            crest + 2 * size *
+                      (((i & 1) ? 1. : -1.) * t_1 + ((i & 2) ? 1. : -1.) * t_2 +
+                       ((i & 4) ? 1. : 0.) * n_upper);
+        const int above_upper_slope = add_occ_hexahedron(above);
+
+        // Everything in front of the slope face and above the toe: a prism
+        // along the strike on the section toe, front, front top, face top.
+        const double cot_psi =
+          1 / std::tan(wedge.slope_face.dip * numbers::PI / 180);
+        const double            z_high = 2 * size;
+        std::array<Point<3>, 8> front;
+        for (const unsigned int i : {0u, 1u})
+          {
+            const double s = (i == 0) ? s_low - size : s_high + size;
+            front[i]       = point(s, 0, 0);
+            front[i + 2]   = point(s, r_front + size, 0);
+            front[i + 4]   = point(s, -z_high * cot_psi, z_high);
+            front[i + 6]   = point(s, r_front + size, z_high);
+          }
+        const int in_front = add_occ_hexahedron(front);
+
+        gmsh::vectorpair              slope, pieces;
+        std::vector<gmsh::vectorpair> origin;
+        occ::cut({{3, box}},
+                 {{3, above_upper_slope}, {3, in_front}},
+                 slope,
+                 origin);
+        AssertThrow(slope.size() == 1, ExcMessage(unexpected));
+
+        const int tetrahedron =
+          add_occ_polyhedron(corners,
+                             {{0, 2, 3}, {1, 2, 3}, {0, 1, 2}, {0, 1, 3}});
+        // Fragmenting makes the faces on A and B shared by both volumes.
+        occ::fragment(slope, {{3, tetrahedron}}, pieces, origin);
+        occ::synchronize();
+        AssertThrow(origin.size() == 2 && origin[1].size() == 1,
+                    ExcMessage(unexpected));
+        wedge_volume = origin[1][0].second;
+        for (const auto &piece : pieces)
+          if (piece.first == 3 && piece.second != wedge_volume)
+            rock_volumes.push_back(piece.second);
+      });
+      AssertThrow(!rock_volumes.empty(), ExcMessage(unexpected));
+
+      // Sort the surfaces by the plane they lie in.
+      std::vector<int> wedge_surfaces;
+      double           inradius = 0;
+      GmshSession::run(name + ": Gmsh could not build the model", [&]() {
+        const auto on_plane = [&](const std::vector<Point<3>> &points,
+                                  const Tensor<1, 3>          &normal,
+                                  const Point<3>              &origin) {
+          return std::all_of(points.begin(),
+                             points.end(),
+                             [&](const Point<3> &p) {
+                               return std::abs(normal * (p - origin)) <
+                                      tolerance;
+                             });
+        };
+        wedge_surfaces = boundary_tags(3, wedge_volume);
+        std::vector<int> rock_surfaces;
+        for (const int volume : rock_volumes)
+          for (const int surface : boundary_tags(3, volume))
+            rock_surfaces.push_back(surface);
+        std::sort(rock_surfaces.begin(), rock_surfaces.end());
+        std::vector<int> all_surfaces;
+        std::set_union(wedge_surfaces.begin(),
+                       wedge_surfaces.end(),
+                       rock_surfaces.begin(),
+                       rock_surfaces.end(),
+                       std::back_inserter(all_surfaces));
+
+        enum Group
+        {
+          plane_a,
+          plane_b,
+          slope_face,
+          upper_slope,
+          base,
+          sides,
+          n_groups
+        };
+        const std::array<std::string, n_groups> group_names = {
+          {"plane A", "plane B", "slope face", "upper slope", "base", "sides"}};
+        std::array<std::vector<int>, n_groups> groups;
+        unsigned int                           n_wedge_faces = 0;
+        for (const int surface : all_surfaces)
+          {
+            const std::vector<Point<3>> points = surface_corners(surface);
+            const bool of_wedge = std::binary_search(wedge_surfaces.begin(),
+                                                     wedge_surfaces.end(),
+                                                     surface);
+            const bool of_rock  = std::binary_search(rock_surfaces.begin(),
+                                                    rock_surfaces.end(),
+                                                    surface);
+            Group      group    = sides;
+            if (of_wedge && of_rock)
+              {
+                AssertThrow(on_plane(points, n_a, Point<3>()) ||
+                              on_plane(points, n_b, Point<3>()),
+                            ExcMessage(unexpected));
+                group = on_plane(points, n_a, Point<3>()) ? plane_a : plane_b;
+              }
+            else if (on_plane(points, n_face, Point<3>()))
+              group = slope_face;
+            else if (on_plane(points, n_upper, crest))
+              group = upper_slope;
+            else if (on_plane(points, e_z, Point<3>()))
+              group = slope_face; // the ground in front of the toe
+            else if (on_plane(points, e_z, Point<3>(0, 0, z_base)))
+              group = base;
+            AssertThrow(!of_wedge || group < base, ExcMessage(unexpected));
+            n_wedge_faces += of_wedge;
+            groups[group].push_back(surface);
+          }
+        AssertThrow(n_wedge_faces == 4, ExcMessage(unexpected));
+
+        add_group(3, {wedge_volume}, "wedge");
+        add_group(3, rock_volumes, "rock");
+        for (unsigned int g = 0; g < n_groups; ++g)
+          {
+            AssertThrow(!groups[g].empty(), ExcMessage(unexpected));
+            add_group(2, groups[g], group_names[g]);
+          }
+
+        // The inradius 3 V / A: no point of the wedge lies further from
+        // its faces.
+        double area = 0;
+        for (const int surface : wedge_surfaces)
+          {
+            double mass;
+            occ::getMass(2, surface, mass);
+            area += mass;
+          }
+        double volume;
+        occ::getMass(3, wedge_volume, volume);
+        inradius = 3 * volume / area;
+      });
+
+      // Tetrahedra of twice the mesh size in the wedge and up to its
+      // inradius from its faces, growing by a quarter of the further
+      // distance up to 5 times that size; each is then split into four
+      // hexahedra.
+      GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
+        namespace field       = gmsh::model::mesh::field;
+        const double near     = 2 * wedge.mesh_size;
+        const double far      = 5 * near;
+        const int    distance = field::add("Distance");
+        field::setNumbers(distance,
+                          "SurfacesList",
+                          std::vector<double>(wedge_surfaces.begin(),
+                                              wedge_surfaces.end()));
+        // The faces are sampled by points 1/100 of their size apart.
+        field::setNumber(distance, "NumPointsPerCurve", 100);
+        const int threshold = field::add("Threshold");
+        field::setNumber(threshold, "InField", distance);
+        field::setNumber(threshold, "SizeMin", near);
+        field::setNumber(threshold, "SizeMax", far);
+        field::setNumber(threshold, "DistMin", inradius);
+        field::setNumber(threshold, "DistMax", inradius + (far - near) / 0.25);
+        field::setAsBackgroundMesh(threshold);
+        gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+
+        // Delaunay tetrahedra, all split into hexahedra (and the triangles
+        // of the surfaces into quadrilaterals, conformingly).
+        gmsh::option::setNumber("Mesh.Algorithm", 6);
+        gmsh::option::setNumber("Mesh.Algorithm3D", 1);
+        gmsh::option::setNumber("Mesh.RecombineAll", 0);
+        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 2);
+        gmsh::model::mesh::generate(3);
+      });
+      return extract_current_gmsh_model<3>(name);
+    }
+
+
+
+    MeshDescription<3>
+    make_block_on_plane_mesh(
+      const parameters::GeometryParameters::BlockOnPlane &block_on_plane)
+    {
+      const auto        &b         = block_on_plane;
+      const double       length    = b.block_length;
+      const double       width     = b.block_width;
+      const double       height    = b.block_height;
+      const double       overhang  = b.foundation_overhang;
+      const double       thickness = b.foundation_thickness;
+      const unsigned int n_length  = b.n_elements_along_length;
+      const unsigned int n_width   = b.n_elements_along_width;
+      const unsigned int n_height  = b.n_elements_across_height;
+      // The foundation gets elements of the block's size.
+      const auto n_elements = [](const double distance, const double size) {
+        return static_cast<unsigned int>(
+          std::max<long>(1, std::lround(distance / size)));
+      };
+      const unsigned int n_overhang_x = n_elements(overhang, length / n_length);
+      const unsigned int n_overhang_y = n_elements(overhang, width / n_width);
+      const unsigned int n_thickness = n_elements(thickness, height / n_height);
+
+      // Coordinates of the grid lines in the plane's frame.
+      const auto grid = [](const std::vector<double>       &breaks,
+                           const std::vector<unsigned int> &n_segments) {
+        std::vector<double> ticks = {breaks[0]};
+        for (unsigned int i = 0; i < n_segments.size(); ++i)
+          for (unsigned int j = 1; j <= n_segments[i]; ++j)
+            ticks.push_back((j == n_segments[i]) ?
+                              breaks[i + 1] :
+                              breaks[i] + (breaks[i + 1] - breaks[i]) * j /
+                                            n_segments[i]);
+        return ticks;
+      };
+      const std::vector<double> x =
+        grid({-overhang, 0, length, length + overhang},
+             {n_overhang_x, n_length, n_overhang_x});
+      const std::vector<double> y = grid(
+        {-width / 2 - overhang, -width / 2, width / 2, width / 2 + overhang},
+        {n_overhang_y, n_width, n_overhang_y});
+      const std::vector<double> z_foundation =
+        grid({-thickness, 0}, {n_thickness});
+      const std::vector<double> z_block = grid({0, height}, {n_height});
+      const unsigned int        n_x = x.size(), n_y = y.size();
+
+      MeshDescription<3> mesh;
+      mesh.source                 = "Geometry/Block on plane";
+      mesh.block_names            = {"block", "foundation"};
+      mesh.face_group_names       = {"sliding surface",
+                                     "block surface",
+                                     "foundation surface",
+                                     "foundation base",
+                                     "foundation ends"};
+      const Tensor<2, 3> rotation = b.rotation();
+      const auto         add_vertex =
+        [&](const double xi, const double eta, const double zeta) {
+          mesh.vertices.emplace_back(rotation * Tensor<1, 3>({xi, eta, zeta}));
+          return static_cast<unsigned int>(mesh.vertices.size() - 1);
+        };
+
+      // Foundation vertices (i, j, k), then the block's above its top.
+      std::vector<unsigned int> foundation_vertex;
+      for (const double zeta : z_foundation)
+        for (const double eta : y)
+          for (const double xi : x)
+            foundation_vertex.push_back(add_vertex(xi, eta, zeta));
+      const auto foundation_index =
+        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+          return foundation_vertex[(k * n_y + j) * n_x + i];
+        };
+      std::vector<unsigned int> block_vertex;
+      for (unsigned int k = 0; k < z_block.size(); ++k)
+        for (unsigned int j = 0; j <= n_width; ++j)
+          for (unsigned int i = 0; i <= n_length; ++i)
+            block_vertex.push_back((k == 0) ? foundation_index(i + n_overhang_x,
+                                                               j + n_overhang_y,
+                                                               n_thickness) :
+                                              add_vertex(x[i + n_overhang_x],
+                                                         y[j + n_overhang_y],
+                                                         z_block[k]));
+      const auto block_index =
+        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+          return block_vertex[(k * (n_width + 1) + j) * (n_length + 1) + i];
+        };
+
+      // Cells and faces of a structured n[0] x n[1] x n[2] grid of
+      // vertices index(i, j, k). Face (d, side) is the grid's face normal
+      // to direction d at its lower (0) or upper (1) end; group_of() gives
+      // the group of a cell's face there, or none.
+      constexpr unsigned int none = numbers::invalid_unsigned_int;
+      const auto add_grid         = [&](const std::array<unsigned int, 3> &n,
+                                const auto                        &index,
+                                const types::material_id           block,
+                                const auto                        &group_of) {
+        for (unsigned int k = 0; k < n[2]; ++k)
+          for (unsigned int j = 0; j < n[1]; ++j)
+            for (unsigned int i = 0; i < n[0]; ++i)
+              {
+                CellData<3> cell;
+                for (unsigned int v = 0; v < 8; ++v)
+                  cell.vertices[v] =
+                    index(i + (v & 1), j + ((v >> 1) & 1), k + (v >> 2));
+                cell.material_id = block;
+                mesh.cells.push_back(cell);
+
+                const std::array<unsigned int, 3> ijk = {{i, j, k}};
+                for (unsigned int d = 0; d < 3; ++d)
+                  for (const unsigned int side : {0u, 1u})
+                    {
+                      if (ijk[d] + side != (side ? n[d] : 0))
+                        continue;
+                      const unsigned int group = group_of(d, side, i, j);
+                      if (group == none)
+                        continue;
+                      // The face's corners in lexicographic order of the
+                      // other two directions.
+                      const unsigned int a = (d == 0) ? 1 : 0;
+                      const unsigned int c = (d == 2) ? 1 : 2;
+                      CellData<2>        face;
+                      for (unsigned int f = 0; f < 4; ++f)
+                        face.vertices[f] =
+                          cell.vertices[(side << d) | ((f & 1) << a) |
+                                        (((f >> 1) & 1) << c)];
+                      face.boundary_id = group;
+                      mesh.faces.push_back(face);
+                    }
+              }
+      };
+
+      enum Group
+      {
+        sliding_surface,
+        block_surface,
+        foundation_surface,
+        foundation_base,
+        foundation_ends
+      };
+      add_grid({{n_length, n_width, n_height}},
+               block_index,
+               0,
+               [&](const unsigned int d,
+                   const unsigned int side,
+                   unsigned int,
+                   unsigned int) {
+                 return (d == 2 && side == 0) ? sliding_surface : block_surface;
+               });
+      add_grid({{n_x - 1, n_y - 1, n_thickness}},
+               foundation_index,
+               1,
+               [&](const unsigned int d,
+                   const unsigned int side,
+                   const unsigned int i,
+                   const unsigned int j) -> unsigned int {
+                 if (d < 2)
+                   return foundation_ends;
+                 if (side == 0)
+                   return foundation_base;
+                 const bool under_block =
+                   i >= n_overhang_x && i < n_overhang_x + n_length &&
+                   j >= n_overhang_y && j < n_overhang_y + n_width;
+                 return under_block ?
+                          none :
+                          static_cast<unsigned int>(foundation_surface);
+               });
+      return mesh;
+    }
+  } // namespace geometry
+} // namespace fdem
