@@ -19,19 +19,6 @@ namespace fdem
   {
     namespace
     {
-      /** Physical group of @p entities (of dimension @p structdim) named @p name. */
-      void
-      add_group(const int               structdim,
-                const std::vector<int> &entities,
-                const std::string      &name)
-      {
-        if (!entities.empty())
-          gmsh::model::setPhysicalName(structdim,
-                                       gmsh::model::addPhysicalGroup(structdim,
-                                                                     entities),
-                                       name);
-      }
-
       /**
        * Element size @p size_near on @p curves and up to @p fine_distance
        * from them, then growing linearly with the distance to @p size_far.
@@ -278,13 +265,13 @@ namespace fdem
       AssertThrow(!sliding.empty() && mass_on_ground,
                   ExcMessage(not_separated));
 
-      add_group(2, {mass}, "sliding mass");
-      add_group(2, {foundation}, "foundation");
-      add_group(1, sliding, "sliding surface");
-      add_group(1, ground_curves, "ground");
-      add_group(1, left, "left");
-      add_group(1, right, "right");
-      add_group(1, bottom, "bottom");
+      add_physical_group(2, {mass}, "sliding mass");
+      add_physical_group(2, {foundation}, "foundation");
+      add_physical_group(1, sliding, "sliding surface");
+      add_physical_group(1, ground_curves, "ground");
+      add_physical_group(1, left, "left");
+      add_physical_group(1, right, "right");
+      add_physical_group(1, bottom, "bottom");
 
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
         set_size_field(sliding,
@@ -378,15 +365,15 @@ namespace fdem
           for (const int curve : contact_curves)
             gmsh::model::mesh::setTransfiniteCurve(curve, 2);
 
-          add_group(2, {cylinder}, "cylinder");
-          add_group(2, {foundation}, "foundation");
-          add_group(1, contact_curves, "contact surface");
-          add_group(1, {load}, "load");
-          add_group(1, {cylinder_axis, foundation_axis}, "symmetry");
-          add_group(1, {bottom}, "bottom");
-          add_group(1, {cylinder_surface}, "cylinder surface");
-          add_group(1, {foundation_surface}, "foundation surface");
-          add_group(1, {foundation_side}, "foundation side");
+          add_physical_group(2, {cylinder}, "cylinder");
+          add_physical_group(2, {foundation}, "foundation");
+          add_physical_group(1, contact_curves, "contact surface");
+          add_physical_group(1, {load}, "load");
+          add_physical_group(1, {cylinder_axis, foundation_axis}, "symmetry");
+          add_physical_group(1, {bottom}, "bottom");
+          add_physical_group(1, {cylinder_surface}, "cylinder surface");
+          add_physical_group(1, {foundation_surface}, "foundation surface");
+          add_physical_group(1, {foundation_side}, "foundation side");
 
           // The contact stresses reach about one contact width into both
           // bodies: keep the mesh as fine as the contact zone there, so that
@@ -510,13 +497,13 @@ namespace fdem
             quadrilateral({top[1], block_right, block_top, block_left});
           geo::synchronize();
 
-          add_group(2, {block}, "block");
-          add_group(2, foundation, "foundation");
-          add_group(1, {top[1]}, "sliding surface");
-          add_group(1, {block_right, block_top, block_left}, "block surface");
-          add_group(1, {top[0], top[2]}, "foundation surface");
-          add_group(1, base, "foundation base");
-          add_group(1, {across[0], across[3]}, "foundation ends");
+          add_physical_group(2, {block}, "block");
+          add_physical_group(2, foundation, "foundation");
+          add_physical_group(1, {top[1]}, "sliding surface");
+          add_physical_group(1, {block_right, block_top, block_left}, "block surface");
+          add_physical_group(1, {top[0], top[2]}, "foundation surface");
+          add_physical_group(1, base, "foundation base");
+          add_physical_group(1, {across[0], across[3]}, "foundation ends");
           gmsh::model::mesh::generate(2);
         });
       return extract_current_gmsh_model<2>(name);

@@ -25,16 +25,6 @@ namespace fdem
   {
     namespace
     {
-      /** Physical group of @p entities (of dimension @p structdim) named @p name. */
-      void
-      add_group(const int               structdim,
-                const std::vector<int> &entities,
-                const std::string      &name)
-      {
-        gmsh::model::setPhysicalName(
-          structdim, gmsh::model::addPhysicalGroup(structdim, entities), name);
-      }
-
       /**
        * OpenCASCADE solid bounded by plane polygons: @p faces lists, for
        * each face, the indices of its corners in @p corners, in order
@@ -314,12 +304,12 @@ namespace fdem
           }
         AssertThrow(n_wedge_faces == 4, ExcMessage(unexpected));
 
-        add_group(3, {wedge_volume}, "wedge");
-        add_group(3, rock_volumes, "rock");
+        add_physical_group(3, {wedge_volume}, "wedge");
+        add_physical_group(3, rock_volumes, "rock");
         for (unsigned int g = 0; g < n_groups; ++g)
           {
             AssertThrow(!groups[g].empty(), ExcMessage(unexpected));
-            add_group(2, groups[g], group_names[g]);
+            add_physical_group(2, groups[g], group_names[g]);
           }
 
         // The inradius 3 V / A: no point of the wedge lies further from

@@ -462,5 +462,16 @@ namespace fdem
     write_gmsh_file<2>(const MeshDescription<2> &, const std::string &);
     template void
     write_gmsh_file<3>(const MeshDescription<3> &, const std::string &);
+    void
+    add_physical_group(const int               structdim,
+                       const std::vector<int> &entities,
+                       const std::string      &name)
+    {
+      if (!entities.empty())
+        gmsh::model::setPhysicalName(structdim,
+                                     gmsh::model::addPhysicalGroup(structdim, entities),
+                                     name);
+    }
+
   } // namespace geometry
 } // namespace fdem

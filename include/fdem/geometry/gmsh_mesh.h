@@ -5,6 +5,7 @@
 #include <fdem/geometry/mesh_description.h>
 
 #include <string>
+#include <vector>
 
 namespace fdem
 {
@@ -89,5 +90,13 @@ namespace fdem
     void
     write_gmsh_file(const MeshDescription<dim> &mesh,
                     const std::string          &file_name);
+    /**
+     * Adds a physical group of the model's entities @p entities (of
+     * dimension @p structdim) named @p name; nothing for an empty list.
+     */
+    void
+    add_physical_group(const int               structdim,
+                       const std::vector<int> &entities,
+                       const std::string      &name);
   } // namespace geometry
 } // namespace fdem
