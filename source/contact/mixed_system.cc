@@ -109,6 +109,16 @@ namespace fdem
     }
 
     template <int dim>
+    double
+    MixedSystem<dim>::tangential_stiffness(const unsigned int p) const
+    {
+      double sum = 0;
+      for (unsigned int i = 1; i < dim; ++i)
+        sum += flexibility(dim * p + i, dim * p + i);
+      return sum > 0 ? (dim - 1) / sum : 0.0;
+    }
+
+    template <int dim>
     ContactSolution
     MixedSystem<dim>::solve_all_stick() const
     {
@@ -141,6 +151,37 @@ namespace fdem
           matrix(row, n_forces + j) = -rigid_coupling(row, j);
         rhs[row] = external_gap[row];
       };
+      // A slipping pair in 3D: with d the slip direction of the previous
+      // iterate, e the tangent normal to it, alpha = s/|z| and r the pair's
+      // augmentation, the linearised f_t = s z/|z| reads
+      //   d . f_t + mu f_n = c A                 (the limit along d)
+      //   (1 - alpha) e . f_t - alpha r e . g_t = 0  (turning towards g_t).
+      // At a fixed point e . f_t = e . g_t = 0: force and slip are parallel.
+      const auto slip_rows_3d = [&](const unsigned int    normal,
+                                    const PairState<dim> &state,
+                                    const PairStrength &  strength) {
+        const double d1 = state.slip_direction[0];
+        const double d2 = dim == 3 ? state.slip_direction[dim - 2] : 0.0;
+        const double e1 = -d2, e2 = d1;
+        const unsigned int along = normal + 1, across = normal + dim - 1;
+        matrix(along, along)  = d1;
+        matrix(along, across) = d2;
+        matrix(along, normal) = strength.friction_coefficient;
+        rhs[along]            = strength.cohesion_force;
+
+        const double alpha = state.direction_weight;
+        const double ar    = alpha * tangential_stiffness(normal / dim);
+        // - alpha r e . g_t = alpha r e . (C f - W gamma - g_bar)
+        for (unsigned int j = 0; j < n_forces; ++j)
+          matrix(across, j) =
+            ar * (e1 * flexibility(along, j) + e2 * flexibility(across, j));
+        for (unsigned int j = 0; j < n_rigid; ++j)
+          matrix(across, n_forces + j) =
+            -ar * (e1 * rigid_coupling(along, j) + e2 * rigid_coupling(across, j));
+        matrix(across, along) += (1 - alpha) * e1;
+        matrix(across, across) += (1 - alpha) * e2;
+        rhs[across] = ar * (e1 * external_gap[along] + e2 * external_gap[across]);
+      };
       for (unsigned int p = 0; p < pairs.size(); ++p)
         {
           const PairState<dim> &state    = states[p];
@@ -166,6 +207,11 @@ namespace fdem
             }
           else
             gap_row(normal);
+          if (dim == 3 && state.status == PairStatus::slip)
+            {
+              slip_rows_3d(normal, state, strength);
+              continue;
+            }
           for (unsigned int i = 1; i < dim; ++i)
             {
               const unsigned int row = normal + i;

@@ -56,6 +56,24 @@ namespace fdem
         return d;
       }
 
+      /**
+       * Whether a pair's state differs from the previous one: its status, or
+       * in 3D its slip direction by more than a round-off angle.
+       */
+      template <int dim>
+      bool
+      changed(const PairState<dim> &next, const PairState<dim> &previous)
+      {
+        if (next.status != previous.status || next.at_cutoff != previous.at_cutoff)
+          return true;
+        if (next.status != PairStatus::slip)
+          return false;
+        double distance = 0;
+        for (unsigned int i = 0; i < dim - 1; ++i)
+          distance += std::pow(next.slip_direction[i] - previous.slip_direction[i], 2);
+        return std::sqrt(distance) > 1e-10;
+      }
+
       /** Pairs may be frozen in a state to break a cycle. */
       enum class Freeze
       {
@@ -137,6 +155,26 @@ namespace fdem
           const Vector<double> &f = solution.forces;
           const Vector<double> &g = solution.relative_displacements;
 
+          // 3D: the slip direction follows z = f_t + r g_t (the Newton step
+          // of the Alart-Curnier projection, see PairState). At the fixed
+          // point z, f_t and g_t are parallel.
+          const auto turn_slip_direction = [&](PairState<dim> &state, const unsigned int p) {
+            const double r = system.tangential_stiffness(p);
+            double       z[dim - 1], norm = 0;
+            for (unsigned int i = 1; i < dim; ++i)
+              {
+                z[i - 1] = f[dim * p + i] + r * g[dim * p + i];
+                norm += z[i - 1] * z[i - 1];
+              }
+            norm = std::sqrt(norm);
+            if (norm == 0)
+              return;
+            const double capacity = std::max(strengths[p].shear_capacity(f[dim * p]), 0.0);
+            for (unsigned int i = 0; i < dim - 1; ++i)
+              state.slip_direction[i] = z[i] / norm;
+            state.direction_weight = std::min(capacity / norm, 1.0);
+          };
+
           std::vector<PairState<dim>> next = states;
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
@@ -158,11 +196,13 @@ namespace fdem
                         if (tangential_norm<dim>(f, p) >
                             strength.shear_capacity(f_n) + force_tolerance)
                           {
-                            state.status         = PairStatus::slip;
-                            state.slip_direction = tangential_direction<dim>(f, p);
+                            state.status           = PairStatus::slip;
+                            state.slip_direction   = tangential_direction<dim>(f, p);
+                            state.direction_weight = std::max(strength.shear_capacity(f_n), 0.0) /
+                                                     tangential_norm<dim>(f, p);
                           }
                       }
-                    else if (frozen[p] != Freeze::slipping)
+                    else
                       {
                         double along = 0;
                         for (unsigned int i = 1; i < dim; ++i)
@@ -171,8 +211,11 @@ namespace fdem
                                                   strength.cohesion_force > 0;
                         // Slip against the force: the pair sticks. (A
                         // frictionless pair has no force to slip against.)
-                        if (along < -gap_tolerance && has_strength)
+                        if (frozen[p] != Freeze::slipping && along < -gap_tolerance &&
+                            has_strength)
                           state.status = PairStatus::stick;
+                        else if (dim == 3)
+                          turn_slip_direction(state, p);
                       }
                     break;
                   case PairStatus::open:
@@ -184,8 +227,9 @@ namespace fdem
                                                   strength.cohesion_force == 0;
                         if (frictionless || tangential_norm<dim>(g, p) > gap_tolerance)
                           {
-                            state.status         = PairStatus::slip;
-                            state.slip_direction = tangential_direction<dim>(g, p);
+                            state.status           = PairStatus::slip;
+                            state.slip_direction   = tangential_direction<dim>(g, p);
+                            state.direction_weight = 0;
                           }
                         else
                           state.status = PairStatus::stick;
@@ -196,7 +240,7 @@ namespace fdem
 
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
-              record.n_changes += (next[p] == states[p]) ? 0 : 1;
+              record.n_changes += changed(next[p], states[p]) ? 1 : 0;
               record.n_stick += next[p].status == PairStatus::stick;
               record.n_slip += next[p].status == PairStatus::slip;
               record.n_open += next[p].status == PairStatus::open;
@@ -221,12 +265,14 @@ namespace fdem
                 if (states[p].status == PairStatus::slip &&
                     tangential_norm<dim>(g, p) > gap_tolerance)
                   {
-                    double along = 0;
-                    for (unsigned int i = 1; i < dim; ++i)
-                      along += states[p].slip_direction[i - 1] * g[dim * p + i];
-                    const double cosine = std::clamp(along / tangential_norm<dim>(g, p), -1.0, 1.0);
+                    // atan2 of the sine and cosine: acos would floor at
+                    // 1e-6 degrees in round-off.
+                    const auto  &d     = states[p].slip_direction;
+                    const double along = d[0] * g[dim * p + 1] + (dim == 3 ? d[dim - 2] * g[dim * p + dim - 1] : 0.0);
+                    const double across = dim == 3 ? d[0] * g[dim * p + dim - 1] - d[dim - 2] * g[dim * p + 1] : 0.0;
                     outcome.max_slip_angle =
-                      std::max(outcome.max_slip_angle, std::acos(cosine) * 180 / numbers::PI);
+                      std::max(outcome.max_slip_angle,
+                               std::atan2(std::abs(across), along) * 180 / numbers::PI);
                   }
               break;
             }

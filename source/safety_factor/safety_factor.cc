@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/safety_factor/safety_factor.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 
@@ -41,6 +42,28 @@ namespace fdem
       return s;
     }
 
+    namespace
+    {
+      /**
+       * The next K after a solved step at K with K* = K + h. Near the limit
+       * h(K) = K* - K can fall off faster than linearly (a wedge whose pairs
+       * all slip: h ~ (K_limit - K)^1.75 measured), and plain substitution
+       * K <- K* then creeps (design/formulation.md 6.5). A secant step on h
+       * through the previous solved step extrapolates to h = 0; it is taken
+       * only when h has decreased as K rose, and never beyond a K already
+       * known to fail (bisect instead).
+       */
+      double
+      next_factor(const double K, const double h, const double previous_K,
+                  const double previous_h, const double K_low, const double K_high)
+      {
+        double next = K + h; // eq. (12): K* itself
+        if (previous_K < K && previous_h > h && h > 0)
+          next = std::max(next, K + h * (K - previous_K) / (previous_h - h));
+        return next < K_high ? next : 0.5 * (K_low + K_high);
+      }
+    } // namespace
+
     Result
     iterate(const std::function<ReducedStrengthSolution(double K)> &solve,
             const parameters::SafetyFactorParameters &              parameters,
@@ -49,7 +72,8 @@ namespace fdem
       Result       result;
       const double tolerance = parameters.tolerance;
       double       K         = parameters.initial_factor;
-      double       previous_K_star = std::numeric_limits<double>::quiet_NaN();
+      const double nan       = std::numeric_limits<double>::quiet_NaN();
+      double       previous_K = nan, previous_h = nan, previous_step = nan;
       double &     K_low = result.bracket_low, &K_high = result.bracket_high;
       result.reason = "iteration limit reached";
       for (unsigned int i = 0; i < parameters.max_iterations; ++i)
@@ -59,10 +83,9 @@ namespace fdem
           double                         K_star = 0;
           if (s.converged && s.sliding_force > 0)
             {
-              K_star = K * s.resisting_force / s.sliding_force; // eq. (12)
-              K_low  = std::isnan(K_low) ? K : std::max(K_low, K);
-              // Never step into K's already known to have no static solution.
-              step.K_next = K_star < K_high ? K_star : 0.5 * (K_low + K_high);
+              K_star      = K * s.resisting_force / s.sliding_force; // eq. (12)
+              K_low       = std::isnan(K_low) ? K : std::max(K_low, K);
+              step.K_next = next_factor(K, K_star - K, previous_K, previous_h, K_low, K_high);
             }
           else if (!s.converged)
             {
@@ -83,8 +106,15 @@ namespace fdem
               result.reason = "no sliding force on the sliding surface";
               break;
             }
-          // Eq. (13), as two successive K* (design/formulation.md 6.5).
-          if (s.converged && std::abs(K_star - previous_K_star) <= tolerance * K_star)
+          // Eq. (13): K* reproduces K (two successive K* agree), and the
+          // distance left to the fixed point is as small. Where the steps
+          // shrink geometrically by rho, that distance is the step over
+          // (1 - rho), not the step.
+          double distance_left = std::abs(step.K_next - K);
+          if (s.converged && previous_step > 0)
+            distance_left /= 1 - std::min(distance_left / previous_step, 0.99);
+          if (s.converged && std::abs(K_star - K) <= tolerance * K_star &&
+              distance_left <= tolerance * K_star)
             {
               result.converged     = true;
               result.safety_factor = K_star;
@@ -92,7 +122,13 @@ namespace fdem
               break;
             }
           if (s.converged)
-            previous_K_star = K_star;
+            {
+              previous_K    = K;
+              previous_h    = K_star - K;
+              previous_step = std::abs(step.K_next - K);
+            }
+          else
+            previous_step = nan;
           if (!std::isnan(K_low) && K_high - K_low <= tolerance * K_low)
             {
               // The largest K with a static solution, to the tolerance.

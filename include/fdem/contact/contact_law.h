@@ -51,13 +51,20 @@ namespace fdem
      * the admissible set, design/formulation.md Sec. 3 and 6.2): a closed
      * pair whose normal force is fixed at sigma_t A while its tangential
      * status still applies.
+     *
+     * In 3D the slip direction is itself an unknown: the tangential force
+     * must lie along the slip. A slipping pair's rows are the Newton
+     * linearisation of f_t = s z/|z|, z = f_t + r g_t (Alart-Curnier), about
+     * the previous iterate; @p direction_weight is alpha = s/|z| there. With
+     * alpha = 0 the direction is held fixed (the first slipping iterate).
      */
     template <int dim>
     struct PairState
     {
       PairStatus                  status = PairStatus::stick;
       std::array<double, dim - 1> slip_direction{};
-      bool                        at_cutoff = false;
+      bool                        at_cutoff        = false;
+      double                      direction_weight = 0;
 
       bool
       operator==(const PairState &other) const

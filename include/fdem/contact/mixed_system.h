@@ -89,6 +89,14 @@ namespace fdem
         return *pairs[p];
       }
 
+      /**
+       * The augmentation r of pair @p p in z = f_t + r g_t (3D slip rows):
+       * the reciprocal of its mean tangential self-flexibility, so that r g_t
+       * is a force of the size of f_t; 0 if the pair is held tangentially.
+       */
+      double
+      tangential_stiffness(const unsigned int p) const;
+
       /** Number of pairs over all interfaces. */
       unsigned int
       n_pairs() const
