@@ -205,18 +205,24 @@ namespace fdem
         // A node on two interfaces (the line of intersection of a wedge) is
         // paired once, in the interface listed first: two pairs of the same
         // two nodes would constrain one relative displacement twice.
-        auto &pairs = interfaces.back().pairs;
+        auto &     pairs         = interfaces.back().pairs;
+        auto &     shared_nodes  = interfaces.back().shared_nodes;
         const auto paired_before = [&](const contact::NodePair<dim> &pair) {
           for (unsigned int i = 0; i + 1 < interfaces.size(); ++i)
-            for (const auto &other : interfaces[i].pairs)
-              if (interfaces[i].block_I == sides[0] && interfaces[i].block_J == sides[1] &&
-                  other.dofs_I == pair.dofs_I && other.dofs_J == pair.dofs_J)
-                return true;
+            for (unsigned int k = 0; k < interfaces[i].pairs.size(); ++k)
+              {
+                const auto &other = interfaces[i].pairs[k];
+                if (interfaces[i].block_I == sides[0] && interfaces[i].block_J == sides[1] &&
+                    other.dofs_I == pair.dofs_I && other.dofs_J == pair.dofs_J)
+                  {
+                    shared_nodes.push_back({i, k, pair.area});
+                    return true;
+                  }
+              }
           return false;
         };
-        const auto n_before = pairs.size();
         pairs.erase(std::remove_if(pairs.begin(), pairs.end(), paired_before), pairs.end());
-        interfaces.back().n_shared_nodes = n_before - pairs.size();
+        interfaces.back().n_shared_nodes = shared_nodes.size();
         AssertThrow(!pairs.empty(),
                     ExcMessage("Interfaces/" + name + ": all its node pairs belong to "
                                "interfaces listed before it."));
@@ -263,6 +269,23 @@ namespace fdem
               }
             strength.tensile_force = p.tensile_strength * pair.area;
             strengths.push_back(strength);
+          }
+      }
+    // Nodes paired in an earlier interface add this interface's strength
+    // over their area here to that pair.
+    std::vector<unsigned int> first_pair(interfaces.size(), 0);
+    for (unsigned int i = 1; i < interfaces.size(); ++i)
+      first_pair[i] = first_pair[i - 1] + interfaces[i - 1].pairs.size();
+    for (const auto &interface : interfaces)
+      {
+        const parameters::InterfaceParameters &p = parameters.interfaces.at(interface.name);
+        for (const auto &shared : interface.shared_nodes)
+          {
+            contact::PairStrength &strength = strengths[first_pair[shared.interface] + shared.pair];
+            if (!p.frictionless)
+              strength.cohesion_force +=
+                p.cohesion * shared.area / (p.sliding_surface ? K : 1.0);
+            strength.tensile_force += p.tensile_strength * shared.area;
           }
       }
     return strengths;
@@ -492,7 +515,10 @@ namespace fdem
            {"block_J", blocks[interfaces[i].block_J]->name},
            {"n_pairs", interfaces[i].pairs.size()},
            {"area", std::accumulate(results[i].begin(), results[i].end(), 0.0,
-                                    [](const double a, const auto &r) { return a + r.area; })},
+                                    [](const double a, const auto &r) { return a + r.area; }) +
+                      std::accumulate(interfaces[i].shared_nodes.begin(),
+                                      interfaces[i].shared_nodes.end(), 0.0,
+                                      [](const double a, const auto &n) { return a + n.area; })},
            {"n_unpaired_nodes", interfaces[i].n_unpaired_I + interfaces[i].n_unpaired_J},
            {"n_nodes_paired_in_an_earlier_interface", interfaces[i].n_shared_nodes},
            {"n_stick", n_status[0]},

@@ -74,12 +74,63 @@ namespace fdem
         return std::sqrt(distance) > 1e-10;
       }
 
-      /** Pairs may be frozen in a state to break a cycle. */
-      enum class Freeze
+      /**
+       * Statuses alike: in 2D also the slip direction (+1 or -1); in 3D,
+       * where slip directions vary continuously, status and cut-off only.
+       */
+      template <int dim>
+      bool
+      same_statuses(const std::vector<PairState<dim>> &a, const std::vector<PairState<dim>> &b)
       {
-        none,
-        at_cutoff,
-        slipping
+        for (unsigned int p = 0; p < a.size(); ++p)
+          if (a[p].status != b[p].status || a[p].at_cutoff != b[p].at_cutoff ||
+              (dim == 2 && a[p].slip_direction != b[p].slip_direction))
+            return false;
+        return true;
+      }
+
+      /**
+       * The start of a cycle that @p next closes: the first earlier set of
+       * statuses equal to next's with a different set somewhere after it.
+       * (In 3D statuses stay alike for several iterations while the slip
+       * directions converge: that is no cycle.)
+       */
+      template <int dim>
+      typename std::vector<std::vector<PairState<dim>>>::const_iterator
+      find_cycle(const std::vector<std::vector<PairState<dim>>> &history,
+                 const std::vector<PairState<dim>> &              next)
+      {
+        bool differs_after = false;
+        for (auto h = history.end(); h != history.begin();)
+          {
+            --h;
+            if (!same_statuses(*h, next))
+              differs_after = true;
+            else if (differs_after)
+              {
+                // Rewind to the first of a run of alike sets.
+                while (h != history.begin() && same_statuses(*(h - 1), next))
+                  --h;
+                return h;
+              }
+          }
+        return history.end();
+      }
+
+      /** Angle between two unit tangential directions (degrees). */
+      template <std::size_t n>
+      double
+      turn_angle(const std::array<double, n> &a, const std::array<double, n> &b)
+      {
+        const double cosine = a[0] * b[0] + (n == 2 ? a[n - 1] * b[n - 1] : 0.0);
+        const double sine   = n == 2 ? a[0] * b[n - 1] - a[n - 1] * b[0] : 0.0;
+        return std::atan2(std::abs(sine), cosine) * 180 / numbers::PI;
+      }
+
+      /** How a pair is held to break a cycle (both may apply). */
+      struct Freeze
+      {
+        bool at_cutoff = false, slipping = false;
       };
     } // namespace
 
@@ -110,7 +161,7 @@ namespace fdem
     {
       const unsigned int n_pairs = system.n_pairs();
       ContactOutcome<dim> outcome;
-      std::vector<Freeze> frozen(n_pairs, Freeze::none);
+      std::vector<Freeze> frozen(n_pairs);
       std::vector<std::vector<PairState<dim>>> history;
 
       // Scales for the checks: forces by the pairs' strengths and loads,
@@ -211,7 +262,7 @@ namespace fdem
                                                   strength.cohesion_force > 0;
                         // Slip against the force: the pair sticks. (A
                         // frictionless pair has no force to slip against.)
-                        if (frozen[p] != Freeze::slipping && along < -gap_tolerance &&
+                        if (!frozen[p].slipping && along < -gap_tolerance &&
                             has_strength)
                           state.status = PairStatus::stick;
                         else if (dim == 3)
@@ -241,6 +292,11 @@ namespace fdem
           for (unsigned int p = 0; p < n_pairs; ++p)
             {
               record.n_changes += changed(next[p], states[p]) ? 1 : 0;
+              if (dim == 3 && next[p].status == PairStatus::slip &&
+                  states[p].status == PairStatus::slip)
+                record.max_turn = std::max(record.max_turn,
+                                           turn_angle(next[p].slip_direction,
+                                                      states[p].slip_direction));
               record.n_stick += next[p].status == PairStatus::stick;
               record.n_slip += next[p].status == PairStatus::slip;
               record.n_open += next[p].status == PairStatus::open;
@@ -252,7 +308,11 @@ namespace fdem
               << record.n_open << " open";
           if (record.n_at_cutoff > 0)
             log << " (" << record.n_at_cutoff << " at the tension cut-off)";
-          log << ", " << record.n_changes << " changed" << std::endl;
+          log << ", " << record.n_changes << " changed";
+          if (dim == 3)
+            log << ", slip directions turned up to " << std::setprecision(3) << record.max_turn
+                << " deg" << std::setprecision(6);
+          log << std::endl;
 
           if (record.n_changes == 0)
             {
@@ -285,7 +345,7 @@ namespace fdem
             }
 
           // A state seen before closes a cycle: break it (Sec. 6.2, 6.3).
-          const auto seen = std::find(history.begin(), history.end(), next);
+          const auto seen = find_cycle(history, next);
           if (seen != history.end())
             {
               unsigned int n_frozen = 0;
@@ -301,17 +361,17 @@ namespace fdem
                       was_stick |= s == PairStatus::stick;
                       was_slip |= s == PairStatus::slip;
                     }
-                  if (was_open && was_closed && frozen[p] != Freeze::at_cutoff)
+                  if (was_open && was_closed && !frozen[p].at_cutoff)
                     {
-                      frozen[p]         = Freeze::at_cutoff;
+                      frozen[p].at_cutoff = true;
                       next[p].at_cutoff = true;
                       if (next[p].status == PairStatus::open)
                         next[p].status = PairStatus::stick;
                       ++n_frozen;
                     }
-                  else if (was_stick && was_slip && frozen[p] == Freeze::none)
+                  else if (was_stick && was_slip && !frozen[p].slipping)
                     {
-                      frozen[p]      = Freeze::slipping;
+                      frozen[p].slipping = true;
                       next[p].status = PairStatus::slip;
                       next[p].slip_direction = tangential_direction<dim>(f, p);
                       ++n_frozen;
@@ -320,6 +380,9 @@ namespace fdem
               ++outcome.n_cycles_broken;
               log << "    status cycle of length " << history.end() - seen
                   << " broken: " << n_frozen << " pairs held" << std::endl;
+              // Cycles are looked for from here on: the held pairs changed
+              // the problem.
+              history.clear();
             }
           states = next;
         }

@@ -16,6 +16,14 @@
   run_checks.py deterministic EXE CASE.prm
                                          two runs give the same summary.json,
                                          byte for byte, timings aside
+  run_checks.py wedge EXE CASE.prm [TOL] a rock wedge (Geometry/Source = wedge):
+                                         K must match the vector limit
+                                         equilibrium of wedge_reference.py
+                                         (weight and plane areas from the
+                                         run's summary) to TOL relative
+                                         (default 1e-5); where a plane lifts
+                                         off, it must carry under 5 % of the
+                                         normal force
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -155,6 +163,54 @@ def check_deterministic(exe, prm):
     assert texts[0] == texts[1], "two runs of the same input differ"
 
 
+def read_prm(prm):
+    """The entries of a .prm file as {"Section/Sub/Entry": "value"}."""
+    entries, path = {}, []
+    for line in open(prm):
+        words = line.split("#")[0].strip()
+        if words.startswith("subsection "):
+            path.append(words[len("subsection "):].strip())
+        elif words == "end":
+            path.pop()
+        elif words.startswith("set "):
+            key, value = words[4:].split("=", 1)
+            entries["/".join(path + [key.strip()])] = value.strip()
+    return entries
+
+
+def check_wedge(exe, prm, tolerance="1e-5"):
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from wedge_reference import safety_factor
+    entries = read_prm(prm)
+    with tempfile.TemporaryDirectory() as workdir:
+        result = run(exe, prm, workdir)
+        assert result.returncode == 0, result.stderr
+        case = os.path.splitext(os.path.basename(prm))[0]
+        summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
+    wedge = next(b for b in summary["blocks"] if b["free_rigid_modes"] == 6)
+    weight = float(entries[f"Blocks/{wedge['name']}/Unit weight"]) * wedge["volume"]
+    planes = {i["name"]: i for i in summary["interfaces"]}
+    data = []
+    for name, entry in (("plane A", "Plane A"), ("plane B", "Plane B")):
+        dip, direction = (float(x) for x in entries[f"Geometry/Wedge/{entry}"].split(","))
+        data.append((dip, direction, planes[name]["area"],
+                     float(entries.get(f"Interfaces/{name}/Friction angle", "0")),
+                     float(entries.get(f"Interfaces/{name}/Cohesion", "0"))))
+    (dip_a, dir_a, area_a, phi_a, c_a), (dip_b, dir_b, area_b, phi_b, c_b) = data
+    exact, mode = safety_factor(dip_a, dir_a, dip_b, dir_b, weight, area_a, area_b,
+                                phi_a, phi_b, c_a, c_b)
+    K = summary["safety_factor"]
+    print(f"K = {K!r}, limit equilibrium {exact!r} ({mode}), relative error {K / exact - 1:.3e}")
+    assert summary["converged"], summary["safety_factor_reason"]
+    assert abs(K / exact - 1) <= float(tolerance), "K differs from the limit equilibrium"
+    if mode != "both planes":
+        lifted = planes["plane B" if mode == "plane A only" else "plane A"]
+        sliding = planes["plane A" if mode == "plane A only" else "plane B"]
+        share = lifted["total_normal_force"] / sliding["total_normal_force"]
+        print(f"normal force on the lifted plane: {share:.3%} of the sliding plane's")
+        assert share < 0.05, "the plane that lifts off still carries the wedge"
+
+
 def parameters_doc(exe, doc, write=False):
     listing = subprocess.run([exe, "--print-parameters"], capture_output=True,
                              text=True, check=True).stdout
@@ -178,5 +234,6 @@ if __name__ == "__main__":
     else:
         {"vtu": check_vtu, "bad-input": check_bad_input,
          "no-equilibrium": check_no_equilibrium,
-         "deterministic": check_deterministic}[command](exe, path)
+         "deterministic": check_deterministic,
+         "wedge": check_wedge}[command](exe, path, *sys.argv[4:])
     print("passed")

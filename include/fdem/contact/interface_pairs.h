@@ -49,6 +49,20 @@ namespace fdem
       unsigned int n_unpaired_I = 0, n_unpaired_J = 0;
       /** Nodes also on an interface listed before, and paired there. */
       unsigned int n_shared_nodes = 0;
+
+      /**
+       * A node of this interface paired in an interface listed before (the
+       * line of intersection of a wedge): that pair carries the node's
+       * contact, and this interface's cohesion and tensile strength over
+       * the node's tributary area here, so that the strength of each
+       * interface is that of its whole area.
+       */
+      struct SharedNode
+      {
+        unsigned int interface = 0, pair = 0;
+        double       area = 0;
+      };
+      std::vector<SharedNode> shared_nodes;
     };
 
     /**
