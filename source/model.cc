@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace fdem
 {
@@ -79,8 +80,9 @@ namespace fdem
 
     progress("done");
     timer.print_summary();
-    log << "Peak memory: " << std::fixed << std::setprecision(1)
-        << postprocess::peak_memory_mib() << " MiB" << std::defaultfloat << std::endl;
+    std::ostringstream memory; // not to leave the log's format changed
+    memory << std::fixed << std::setprecision(1) << postprocess::peak_memory_mib();
+    log << "Peak memory: " << memory.str() << " MiB" << std::endl;
   }
 
   template <int dim>
