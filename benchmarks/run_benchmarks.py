@@ -379,9 +379,17 @@ def plot(case, rows, quantities, path):
 
 
 def write_csv(path, rows):
+    """One row per run; columns: the run, then each quantity with its exact
+    value and error, then the phases in run order, then the totals."""
     fields = []
     for r in rows:
         fields += [k for k in r if k not in fields]
+    times = ["time " + p for p in ordered_phases(rows)]
+    quantities = [k for k in fields if k + "_exact" in fields]
+    measured = [f for q in quantities for f in (q, q + "_exact", q + "_error")]
+    first = [f for f in fields if f not in measured and not f.startswith("time ")
+             and f not in ("wall time outside", "peak_memory_MiB", "cost_ratio")]
+    fields = first + measured + times + [f for f in fields if f not in first + measured + times]
     with open(path, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=fields, restval="")
         writer.writeheader()
