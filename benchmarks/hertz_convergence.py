@@ -10,15 +10,14 @@ far-field size (1200/N mm) together. Writes doc/hertz_convergence.md, .csv
 and .png. Needs Debian's python3-matplotlib.
 """
 import csv
-import json
 import os
-import subprocess
 import sys
-import tempfile
-import time
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
-EXE = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "fdem-slope"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+ROOT = common.ROOT
+EXE = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else common.DEFAULT_EXE)
 # Q2 at N = 240 takes minutes (0.9 M dofs) and adds nothing the table needs.
 LEVELS = {1: [30, 60, 120, 240], 2: [30, 60, 120]}
 DEGREES = [1, 2]
@@ -26,26 +25,19 @@ PAPER = {"a": 6.63, "q_max": 1881.25}  # Liu et al. (2012), 20 pairs
 
 
 def run(degree, n):
-    with tempfile.TemporaryDirectory() as workdir:
-        prm = os.path.join(workdir, "hertz.prm")
-        with open(prm, "w") as f:
-            f.write(f"include {os.path.join(ROOT, 'prm', 'hertz.prm')}\n"
-                    f"set Finite element degree = {degree}\n"
-                    "subsection Geometry\n  subsection Hertz\n"
-                    f"    set Elements in contact zone = {n}\n"
-                    f"    set Mesh size = {1200 / n}\n  end\nend\n"
-                    "subsection Output\n  set Write VTU = false\nend\n")
-        start = time.perf_counter()
-        subprocess.run([EXE, prm], cwd=workdir, check=True, capture_output=True)
-        wall = time.perf_counter() - start
-        summary = json.load(open(os.path.join(workdir, "hertz-output", "summary.json")))
+    result = common.run_case(EXE, "hertz.prm", {"Finite element degree": degree,
+                                                "Geometry/Hertz/Elements in contact zone": n,
+                                                "Geometry/Hertz/Mesh size": 1200 / n})
+    if not result.ok:
+        sys.exit(f"hertz_convergence.py: Q{degree}, N = {n}: {result.failure()}")
+    summary = result.summary
     h = summary["hertz"]
     interface = summary["interfaces"][0]
     return {"degree": degree, "contact_zone_elements": n, "n_dofs": summary["n_dofs"],
             "pairs_in_contact": interface["n_stick"] + interface["n_slip"],
             "a": h["contact_half_width"], "a_error": h["contact_half_width_error"],
             "q_max": h["max_pressure"], "q_max_error": h["max_pressure_error"],
-            "seconds": wall, "a_exact": h["contact_half_width_exact"],
+            "seconds": result.wall, "a_exact": h["contact_half_width_exact"],
             "q_max_exact": h["max_pressure_exact"]}
 
 

@@ -9,33 +9,26 @@ the sensitivity to Poisson's ratio, which the paper does not give.
 Writes doc/paper_slope.md and doc/paper_slope_convergence.csv.
 """
 import csv
-import json
 import os
-import subprocess
 import sys
-import tempfile
-import time
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
-EXE = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "fdem-slope"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+ROOT = common.ROOT
+EXE = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else common.DEFAULT_EXE)
 MESH_SIZES = [2.0, 1.0, 0.5, 0.25]
 
 
 def run(mesh_size, poissons_ratio=0.3):
-    with tempfile.TemporaryDirectory() as workdir:
-        prm = os.path.join(workdir, "paper_slope.prm")
-        blocks = "".join(f"  subsection {b}\n    set Poisson's ratio = {poissons_ratio}\n  end\n"
-                         for b in ["sliding mass", "foundation"])
-        with open(prm, "w") as f:
-            f.write(f"include {os.path.join(ROOT, 'prm', 'paper_slope.prm')}\n"
-                    "subsection Geometry\n  subsection Slope\n"
-                    f"    set Mesh size = {mesh_size}\n  end\nend\n"
-                    f"subsection Blocks\n{blocks}end\n"
-                    "subsection Output\n  set Write VTU = false\nend\n")
-        start = time.perf_counter()
-        subprocess.run([EXE, prm], cwd=workdir, check=True, capture_output=True)
-        wall = time.perf_counter() - start
-        return json.load(open(os.path.join(workdir, "paper_slope-output", "summary.json"))), wall
+    settings = {"Geometry/Slope/Mesh size": mesh_size}
+    for block in ["sliding mass", "foundation"]:
+        settings[f"Blocks/{block}/Poisson's ratio"] = poissons_ratio
+    result = common.run_case(EXE, "paper_slope.prm", settings)
+    if not result.ok:
+        sys.exit(f"paper_slope_convergence.py: mesh size {mesh_size}, nu = {poissons_ratio}: "
+                 f"{result.failure()}")
+    return result.summary, result.wall
 
 
 def main():

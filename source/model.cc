@@ -6,6 +6,7 @@
 #include <fdem/postprocess/block_output.h>
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/output_files.h>
+#include <fdem/postprocess/run_cost.h>
 
 #include <algorithm>
 #include <iomanip>
@@ -13,9 +14,23 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace fdem
 {
+  namespace
+  {
+    template <int dim>
+    std::size_t
+    n_pairs_of(const std::vector<contact::Interface<dim>> &interfaces)
+    {
+      std::size_t n = 0;
+      for (const auto &interface : interfaces)
+        n += interface.pairs.size();
+      return n;
+    }
+  } // namespace
+
   template <int dim>
   Model<dim>::Model(const parameters::Parameters &parameters,
                     const std::string &           expanded_parameters,
@@ -39,18 +54,42 @@ namespace fdem
       out << expanded_parameters;
     }
 
+    // A progress line at the start of each phase: on a long run the screen
+    // says what the program is doing and how long it has taken so far.
+    progress("mesh");
     make_geometry();
+    progress("blocks: dofs, constraints, free rigid modes");
     setup_blocks();
+    progress("assembly and factorisation");
     assemble_and_factorize();
+    progress("node pairs of the interfaces");
     build_interfaces();
+    progress("flexibility C of " + std::to_string(n_pairs_of(interfaces)) + " node pairs");
     compute_flexibility();
     if (parameters.safety_factor.compute)
       compute_safety_factor();
     else
-      solve_contact();
+      {
+        progress("contact problem");
+        solve_contact();
+      }
     if (contact_outcome.converged())
       recover_block_displacements();
+    progress("output");
     output_results();
+
+    progress("done");
+    timer.print_summary();
+    std::ostringstream memory; // not to leave the log's format changed
+    memory << std::fixed << std::setprecision(1) << postprocess::peak_memory_mib();
+    log << "Peak memory: " << memory.str() << " MiB" << std::endl;
+  }
+
+  template <int dim>
+  void
+  Model<dim>::progress(const std::string &what) const
+  {
+    log << postprocess::progress_stamp(run_timer.wall_time()) << what << std::endl;
   }
 
   template <int dim>
@@ -165,11 +204,16 @@ namespace fdem
   void
   Model<dim>::assemble_and_factorize()
   {
-    TimerOutput::Scope scope(timer, "assembly and factorisation");
     external_displacements.clear();
     for (const auto &block : blocks)
       {
-        block->assemble_and_factorize(parameters.loads, parameters.solver.direct_solver);
+        {
+          TimerOutput::Scope scope(timer, "assembly and factorisation");
+          block->assemble_and_factorize(parameters.loads, parameters.solver.direct_solver);
+        }
+        // Timed on its own: the cost of one linear solve of the model is the
+        // yardstick of the benchmarks (doc/benchmarks.md).
+        TimerOutput::Scope scope(timer, "one solve");
         external_displacements.push_back(block->solve(block->load_vector));
       }
   }
@@ -350,15 +394,23 @@ namespace fdem
                            "'Sliding surface = true' on one, or Safety factor/"
                            "Compute = false."));
     log << "Safety factor (eqs. 10-13):" << std::endl;
-    const auto solve = [&](const double K) {
+    unsigned int n_steps = 0;
+    const auto   solve   = [&](const double K) {
+      std::ostringstream what;
+      what << "safety factor step " << ++n_steps << ": K = " << std::setprecision(8) << K;
+      progress(what.str());
       solve_contact(K);
-      const auto solution =
-        safety_factor::resisting_and_sliding_forces(*mixed_system, contact_outcome,
-                                                    pair_strengths(K), on_surface);
+      safety_factor::ReducedStrengthSolution solution;
+      {
+        TimerOutput::Scope scope(timer, "safety factor");
+        solution = safety_factor::resisting_and_sliding_forces(*mixed_system, contact_outcome,
+                                                               pair_strengths(K), on_surface);
+      }
       // Each step with a static solution can be looked at in ParaView.
       if (solution.converged && parameters.output.write_vtu)
         {
           recover_block_displacements();
+          TimerOutput::Scope scope(timer, "output");
           const unsigned int step = step_files.empty() ? 0 : step_files.back().time + 1;
           write_vtu("-step" + Utilities::int_to_string(step, 3), step, step_files);
         }
@@ -457,6 +509,16 @@ namespace fdem
         if (!step_files.empty())
           postprocess::write_pvd(directory + "/safety_factor_steps.pvd", step_files);
       }
+    // Reactions at the minimal support, zero at equilibrium: a pass over all
+    // cells, timed as output.
+    std::vector<double> reactions(blocks.size(), 0.0);
+    if (converged)
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        {
+          const Vector<double> residual = blocks[b]->nodal_residual(displacements[b]);
+          for (const auto dof : blocks[b]->support_dofs)
+            reactions[b] = std::max(reactions[b], std::abs(residual[dof]));
+        }
     scope.stop();
 
     summary                = nlohmann::json::object();
@@ -469,14 +531,6 @@ namespace fdem
       {
         const auto &block = *blocks[b];
         n_dofs += block.dof_handler.n_dofs();
-        // Reactions at the minimal support: zero at equilibrium.
-        double reaction = 0;
-        if (converged)
-          {
-            const Vector<double> residual = block.nodal_residual(displacements[b]);
-            for (const auto dof : block.support_dofs)
-              reaction = std::max(reaction, std::abs(residual[dof]));
-          }
         double volume = 0;
         for (const auto &cell : block.triangulation.active_cell_iterators())
           volume += cell->measure();
@@ -485,7 +539,7 @@ namespace fdem
                                      {"n_cells", block.triangulation.n_active_cells()},
                                      {"n_dofs", block.dof_handler.n_dofs()},
                                      {"free_rigid_modes", block.n_free_rigid_modes()},
-                                     {"max_support_reaction", reaction},
+                                     {"max_support_reaction", reactions[b]},
                                      {"max_load", block.load_vector.linfty_norm()}});
       }
     summary["n_dofs"]     = n_dofs;
@@ -576,10 +630,9 @@ namespace fdem
                              1.0 :
                              contact_outcome.iterations.back().reciprocal_condition},
                           {"iterations", iterations}};
-    nlohmann::json timings = nlohmann::json::object();
-    for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
-      timings[section] = seconds;
-    summary["timings"] = timings;
+    // The only entries that differ between two runs of the same input.
+    summary["timings"]         = postprocess::section_wall_times(timer, run_timer.wall_time());
+    summary["peak_memory_MiB"] = postprocess::peak_memory_mib();
     if (!contact_outcome.converged())
       summary["status"] = "no static equilibrium: " +
                           (parameters.safety_factor.compute ?

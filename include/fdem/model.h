@@ -82,7 +82,10 @@ namespace fdem
     /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
     void
     recover_block_displacements();
-    /** VTU/PVD, interface CSV, summary.json. */
+    /**
+     * VTU/PVD, interface CSV, summary.json (with the wall time of each phase
+     * and the peak memory).
+     */
     void
     output_results();
 
@@ -120,7 +123,17 @@ namespace fdem
 
     std::string   expanded_parameters;
     std::ostream &log;
+    /**
+     * Wall time of the phases of a run, one section each and none nested so
+     * that they add up: summary.json's "timings" and the table at the end.
+     */
     TimerOutput   timer;
+    /** Wall time since the model was made: the "total" of the timings. */
+    Timer         run_timer;
+
+    /** A progress line: elapsed time, peak memory and @p what. */
+    void
+    progress(const std::string &what) const;
 
     /**
      * For the Hertz generator's model: the exact contact half-width and

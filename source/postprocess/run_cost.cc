@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/postprocess/run_cost.h>
+
+#include <sys/resource.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace fdem
+{
+  namespace postprocess
+  {
+    double
+    peak_memory_mib()
+    {
+      rusage usage;
+      if (getrusage(RUSAGE_SELF, &usage) != 0)
+        return 0;
+      // Linux gives ru_maxrss in KiB.
+      return usage.ru_maxrss / 1024.0;
+    }
+
+    nlohmann::json
+    section_wall_times(const TimerOutput &timer, const double total_seconds)
+    {
+      nlohmann::json times = nlohmann::json::object();
+      for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
+        times[section] = seconds;
+      times["total"] = total_seconds;
+      return times;
+    }
+
+    std::string
+    progress_stamp(const double elapsed_seconds)
+    {
+      std::ostringstream stamp;
+      stamp << "[" << std::fixed << std::setprecision(1) << std::setw(8) << elapsed_seconds
+            << " s " << std::setprecision(0) << std::setw(6) << peak_memory_mib() << " MiB] ";
+      return stamp.str();
+    }
+  } // namespace postprocess
+} // namespace fdem
