@@ -84,6 +84,25 @@ def priest_geo(h):
     return text
 
 
+def wedge_exact(run):
+    """Vector limit equilibrium of the wedge (tests/scripts/wedge_reference.py)
+    with the run's planes, strengths, wedge weight and plane areas."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                    "..", "tests", "scripts"))
+    from wedge_reference import safety_factor as wedge_k
+    p, s = run.parameters, run.summary
+    wedge = next(b for b in s["blocks"] if b["free_rigid_modes"] == 6)
+    weight = number(p, f"Blocks/{wedge['name']}/Unit weight") * wedge["volume"]
+    area = {i["name"]: i["area"] for i in s["interfaces"]}
+    planes = [[float(x) for x in p[f"Geometry/Wedge/Plane {n}"].split(",")] for n in "AB"]
+    strength = [(number(p, f"Interfaces/plane {n}/Friction angle"),
+                 float(p.get(f"Interfaces/plane {n}/Cohesion", 0))) for n in "AB"]
+    K, _ = wedge_k(planes[0][0], planes[0][1], planes[1][0], planes[1][1], weight,
+                   area["plane A"], area["plane B"], strength[0][0], strength[1][0],
+                   strength[0][1], strength[1][1])
+    return {"K": K}
+
+
 def safety_factor(run):
     K = run.summary.get("safety_factor")
     return {"K": K if K is not None else math.nan}
@@ -128,6 +147,13 @@ CASES = [
          "`prm/paper_slope.prm` (Q2, circular sliding surface). No exact value: "
          "the error is against the finest mesh of this table (its own row "
          "shows 0)."),
+    Case("rock_wedge", "Symmetric rock wedge (3D, Hoek & Bray)", "rock_wedge.prm",
+         "mesh size (m)", [8.0, 6.0, 4.0, 3.0, 2.5], [8.0, 6.0],
+         lambda h: ({"Geometry/Wedge/Mesh size": h}, {}),
+         safety_factor, wedge_exact,
+         "`prm/rock_wedge.prm` (3D, Q1 hexahedra), planes 50/140 and 50/220, "
+         "phi = 30 deg. Exact: the vector limit equilibrium of "
+         "tests/scripts/wedge_reference.py, K = 0.726602."),
 ]
 
 

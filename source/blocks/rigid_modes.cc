@@ -86,27 +86,38 @@ namespace fdem
     {
       const unsigned int n_free  = free_modes.n();
       const unsigned int n_modes = free_modes.m();
-      std::vector<Vector<double>>          accepted; // orthonormal rows
+      // The motion of each candidate dof under each free mode (O(1): the
+      // modes are scaled by the block's size).
+      std::vector<Vector<double>> rows(candidates.size(), Vector<double>(n_free));
+      for (unsigned int c = 0; c < candidates.size(); ++c)
+        for (unsigned int k = 0; k < n_free; ++k)
+          for (unsigned int m = 0; m < n_modes; ++m)
+            rows[c][k] += modes_at_dofs(candidates[c], m) * free_modes(m, k);
+
+      // Gram-Schmidt with pivoting: each time take the dof whose motion is
+      // least explained by those already taken, for a well-conditioned
+      // support. (Taking the first acceptable dof in order can leave the
+      // last mode with no well independent dof on a coarse mesh.)
       std::vector<types::global_dof_index> support;
-      for (const types::global_dof_index dof : candidates)
+      std::vector<bool>                    taken(candidates.size(), false);
+      while (support.size() < n_free)
         {
-          if (support.size() == n_free)
-            break;
-          // The motion of this dof under each free mode.
-          Vector<double> row(n_free);
-          for (unsigned int k = 0; k < n_free; ++k)
-            for (unsigned int m = 0; m < n_modes; ++m)
-              row[k] += modes_at_dofs(dof, m) * free_modes(m, k);
-          const double norm = row.l2_norm();
-          for (const Vector<double> &q : accepted)
-            row.add(-(row * q), q);
-          // Accept only a well independent row, for a well-conditioned support.
-          if (norm > 1e-3 && row.l2_norm() > 0.3 * norm)
-            {
-              row /= row.l2_norm();
-              accepted.push_back(row);
-              support.push_back(dof);
-            }
+          unsigned int best = candidates.size();
+          double       best_norm = 1e-8;
+          for (unsigned int c = 0; c < candidates.size(); ++c)
+            if (!taken[c] && rows[c].l2_norm() > best_norm)
+              {
+                best      = c;
+                best_norm = rows[c].l2_norm();
+              }
+          if (best == candidates.size())
+            break; // the candidates cannot hold the block
+          taken[best] = true;
+          support.push_back(candidates[best]);
+          const Vector<double> q = Vector<double>(rows[best]) /= best_norm;
+          for (unsigned int c = 0; c < candidates.size(); ++c)
+            if (!taken[c])
+              rows[c].add(-(rows[c] * q), q);
         }
       return support;
     }

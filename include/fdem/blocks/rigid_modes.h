@@ -44,8 +44,9 @@ namespace fdem
 
     /**
      * Chooses a minimal, statically determinate support for the free modes
-     * @p free_modes: dofs, tried in the order of @p candidates, whose rigid
-     * motion rows are independent, until they remove every free mode.
+     * @p free_modes: dofs of @p candidates whose rigid motion rows are
+     * independent, each time the one least explained by those chosen
+     * (pivoted Gram-Schmidt), until they remove every free mode.
      * Returns the chosen dofs (as many as free modes), or fewer if the
      * candidates cannot hold the block.
      */
