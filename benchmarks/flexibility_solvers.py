@@ -1,0 +1,132 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
+# Copyright (C) 2026 the fdem-slope authors
+"""Direct solvers and flexibility methods on the paper's slope.
+
+For each mesh size and each value of Solver/Direct solver, runs the whole
+safety-factor computation (fdem-slope, no VTU) and the yardstick, one
+factorisation and one solve of the plain FE model of the same slope with
+the same solver (fdem-fe-solve-time), and writes a markdown table:
+
+  /usr/bin/python3 benchmarks/flexibility_solvers.py --build build \
+      --mesh-sizes 1.0 0.6 0.45 --output doc/flexibility_solvers.md
+
+Times are wall seconds of one run each on the machine it runs on.
+"""
+import argparse
+import json
+import os
+import platform
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SOLVERS = ["MUMPS_Schur", "MUMPS", "Amesos_Klu", "Amesos_Mumps"]
+METHOD = {"MUMPS_Schur": "Schur complement"}
+
+
+def case_file(folder, mesh_size, solver, name):
+    """paper_slope.prm with another mesh size, solver and output folder."""
+    with open(os.path.join(ROOT, "prm", "paper_slope.prm")) as f:
+        text = f.read()
+    text, n = re.subn(r"(set Mesh size\s*=\s*)[0-9.eE+-]+", r"\g<1>%g" % mesh_size, text)
+    if n != 1:
+        sys.exit("prm/paper_slope.prm: expected one 'set Mesh size' line")
+    out = os.path.join(folder, name + "-output")
+    text += ("\nsubsection Solver\n  set Direct solver = %s\nend\n"
+             "subsection Output\n  set Directory = %s\n  set Write VTU = false\nend\n"
+             % (solver, out))
+    path = os.path.join(folder, name + ".prm")
+    with open(path, "w") as f:
+        f.write(text)
+    return path, out
+
+
+def run(command):
+    start = time.perf_counter()
+    result = subprocess.run(command, capture_output=True, text=True)
+    seconds = time.perf_counter() - start
+    if result.returncode != 0:
+        sys.exit("%s failed:\n%s%s" % (" ".join(command), result.stdout, result.stderr))
+    return result.stdout, seconds
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--mesh-sizes", type=float, nargs="+", default=[1.0, 0.6, 0.45])
+    parser.add_argument("--solvers", nargs="+", default=SOLVERS)
+    parser.add_argument("--output", default=os.path.join(ROOT, "doc", "flexibility_solvers.md"))
+    args = parser.parse_args()
+    slope = os.path.join(args.build, "fdem-slope")
+    yardstick = os.path.join(args.build, "fdem-fe-solve-time")
+
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        for h in args.mesh_sizes:
+            for solver in args.solvers:
+                name = "h%g-%s" % (h, solver)
+                prm, out = case_file(folder, h, solver, name)
+                _, whole = run([slope, prm])
+                with open(os.path.join(out, "summary.json")) as f:
+                    summary = json.load(f)
+                fe_out, _ = run([yardstick, prm])
+                fe = json.loads(fe_out.strip().splitlines()[-1])
+                timings = summary["timings"]
+                row = {
+                    "mesh_size": h,
+                    "dofs": summary["n_dofs"],
+                    "pairs": sum(i["n_pairs"] for i in summary["interfaces"]),
+                    "solver": solver,
+                    "method": METHOD.get(solver, "blocked solves (64 RHS)"),
+                    "assembly_factorisation": timings.get("assembly and factorisation"),
+                    "flexibility": timings.get("flexibility"),
+                    "whole": whole,
+                    "fe_dofs": fe["n_dofs"],
+                    "fe_factorisation": fe["factorization"],
+                    "fe_solve": fe["solve"],
+                    "safety_factor": summary.get("safety_factor"),
+                }
+                row["ratio"] = whole / (fe["factorization"] + fe["solve"])
+                rows.append(row)
+                print(json.dumps(row), flush=True)
+
+    lines = [
+        "# Direct solvers and the interface flexibility (paper's slope)",
+        "",
+        "Written by `/usr/bin/python3 benchmarks/flexibility_solvers.py %s` on %s "
+        "(%s, %d cores shared with other work); one run per row, wall seconds."
+        % (" ".join(sys.argv[1:]), time.strftime("%Y-%m-%d"), platform.machine(),
+           os.cpu_count()),
+        "",
+        "- *dofs*: all blocks of the mixed model; *pairs*: node pairs on the sliding surface.",
+        "- *assembly + factorisation*, *flexibility*: the run's timer sections (summary.json);",
+        "  with MUMPS_Schur the Schur complement is formed inside the factorisation and",
+        "  *flexibility* is its dense inverse (LAPACK potri) and the mixed system's assembly.",
+        "- *whole run*: wall time of `fdem-slope` on the case (mesh, safety-factor",
+        "  iteration, CSV and summary output; no VTU).",
+        "- *FE factorise*, *FE solve*: `fdem-fe-solve-time`, one factorisation and one",
+        "  solve of the plain FE model of the same slope (the blocks merged, nodes shared,",
+        "  *FE dofs*) with the same solver.",
+        "- *ratio* = whole run / (FE factorise + FE solve).",
+        "",
+        "| mesh size (m) | dofs | pairs | solver | method | assembly + factorisation (s) "
+        "| flexibility (s) | whole run (s) | FE dofs | FE factorise (s) | FE solve (s) "
+        "| ratio | safety factor |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for r in rows:
+        lines.append("| %g | %d | %d | %s | %s | %.2f | %.2f | %.2f | %d | %.2f | %.3f | %.2f | %.6f |" % (
+            r["mesh_size"], r["dofs"], r["pairs"], r["solver"], r["method"],
+            r["assembly_factorisation"], r["flexibility"], r["whole"], r["fe_dofs"],
+            r["fe_factorisation"], r["fe_solve"], r["ratio"], r["safety_factor"]))
+    with open(args.output, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote", args.output)
+
+
+if __name__ == "__main__":
+    main()
