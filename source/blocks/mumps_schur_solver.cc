@@ -139,28 +139,16 @@ namespace fdem
         }
       run(4, "analysis and factorisation");
 
-      // MUMPS returns one triangle of the symmetric S: mirror it. The array
-      // is S by rows; read as column-major it is S^T, the same matrix.
+      // For a symmetric matrix MUMPS returns the lower triangle of S by rows
+      // (ICNTL(19) = 1); the other triangle is workspace, not zero, on
+      // larger problems. Read column-major, the array holds S^T: keep its
+      // upper triangle and mirror it.
       if (n_schur > 0)
         {
           std::vector<double> &S = data->schur;
-          double upper = 0, lower = 0;
           for (unsigned int j = 0; j < n_schur; ++j)
             for (unsigned int i = 0; i < j; ++i)
-              {
-                upper += std::abs(S[i + std::size_t(j) * n_schur]);
-                lower += std::abs(S[j + std::size_t(i) * n_schur]);
-              }
-          for (unsigned int j = 0; j < n_schur; ++j)
-            for (unsigned int i = 0; i < j; ++i)
-              {
-                double &u = S[i + std::size_t(j) * n_schur];
-                double &l = S[j + std::size_t(i) * n_schur];
-                if (lower == 0)
-                  l = u;
-                else if (upper == 0)
-                  u = l;
-              }
+              S[j + std::size_t(i) * n_schur] = S[i + std::size_t(j) * n_schur];
           // Cholesky factor of S: with MUMPS's factor of K_II, a complete
           // factorisation of K.
           schur_factor.swap(S);
