@@ -64,6 +64,7 @@ def main():
     slope = os.path.join(args.build, "fdem-slope")
     yardstick = os.path.join(args.build, "fdem-fe-solve-time")
 
+    load_before = os.getloadavg()[0]
     rows = []
     with tempfile.TemporaryDirectory() as folder:
         for h in args.mesh_sizes:
@@ -84,13 +85,17 @@ def main():
                     "method": METHOD.get(solver, "blocked solves (64 RHS)"),
                     "assembly_factorisation": timings.get("assembly and factorisation"),
                     "flexibility": timings.get("flexibility"),
+                    "contact": timings.get("contact"),
+                    "sections": sum(timings.values()),
                     "whole": whole,
                     "fe_dofs": fe["n_dofs"],
+                    "fe_assembly": fe["assembly"],
                     "fe_factorisation": fe["factorization"],
                     "fe_solve": fe["solve"],
                     "safety_factor": summary.get("safety_factor"),
                 }
                 row["ratio"] = whole / (fe["factorization"] + fe["solve"])
+                row["ratio_sections"] = row["sections"] / (fe["factorization"] + fe["solve"])
                 rows.append(row)
                 print(json.dumps(row), flush=True)
 
@@ -98,31 +103,40 @@ def main():
         "# Direct solvers and the interface flexibility (paper's slope)",
         "",
         "Written by `/usr/bin/python3 benchmarks/flexibility_solvers.py %s` on %s "
-        "(%s, %d cores shared with other work); one run per row, wall seconds."
+        "(%s, %d cores shared with other work, load average %.1f before and %.1f "
+        "after the runs); one run per row, wall seconds."
         % (" ".join(sys.argv[1:]), time.strftime("%Y-%m-%d"), platform.machine(),
-           os.cpu_count()),
+           os.cpu_count(), load_before, os.getloadavg()[0]),
         "",
         "- *dofs*: all blocks of the mixed model; *pairs*: node pairs on the sliding surface.",
         "- *assembly + factorisation*, *flexibility*: the run's timer sections (summary.json);",
         "  with MUMPS_Schur the Schur complement is formed inside the factorisation and",
         "  *flexibility* is its dense inverse (LAPACK potri) and the mixed system's assembly.",
+        "- *contact*: the run's contact solves (the dense mixed system, all status",
+        "  iterations of all safety-factor steps).",
         "- *whole run*: wall time of `fdem-slope` on the case (mesh, safety-factor",
-        "  iteration, CSV and summary output; no VTU).",
-        "- *FE factorise*, *FE solve*: `fdem-fe-solve-time`, one factorisation and one",
-        "  solve of the plain FE model of the same slope (the blocks merged, nodes shared,",
-        "  *FE dofs*) with the same solver.",
-        "- *ratio* = whole run / (FE factorise + FE solve).",
+        "  iteration, CSV and summary output; no VTU), process start (MPI, libraries)",
+        "  included; *timed*: the sum of the run's timer sections, without the start.",
+        "- *FE assembly*, *FE factorise*, *FE solve*: `fdem-fe-solve-time`, the assembly,",
+        "  one factorisation and one solve of the plain FE model of the same slope (the",
+        "  blocks merged, nodes shared, *FE dofs*) with the same solver.",
+        "- *ratio* = whole run / (FE factorise + FE solve); *ratio timed* = timed /",
+        "  (FE factorise + FE solve).",
         "",
         "| mesh size (m) | dofs | pairs | solver | method | assembly + factorisation (s) "
-        "| flexibility (s) | whole run (s) | FE dofs | FE factorise (s) | FE solve (s) "
-        "| ratio | safety factor |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "| flexibility (s) | contact (s) | whole run (s) | timed (s) | FE dofs "
+        "| FE assembly (s) | FE factorise (s) | FE solve (s) | ratio | ratio timed "
+        "| safety factor |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in rows:
-        lines.append("| %g | %d | %d | %s | %s | %.2f | %.2f | %.2f | %d | %.2f | %.3f | %.2f | %.6f |" % (
+        lines.append("| %g | %d | %d | %s | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.2f "
+                     "| %.2f | %.3f | %.2f | %.2f | %.12f |" % (
             r["mesh_size"], r["dofs"], r["pairs"], r["solver"], r["method"],
-            r["assembly_factorisation"], r["flexibility"], r["whole"], r["fe_dofs"],
-            r["fe_factorisation"], r["fe_solve"], r["ratio"], r["safety_factor"]))
+            r["assembly_factorisation"], r["flexibility"], r["contact"], r["whole"],
+            r["sections"], r["fe_dofs"], r["fe_assembly"], r["fe_factorisation"],
+            r["fe_solve"], r["ratio"],
+            r["ratio_sections"], r["safety_factor"]))
     with open(args.output, "w") as f:
         f.write("\n".join(lines) + "\n")
     print("wrote", args.output)

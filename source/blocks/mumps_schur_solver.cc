@@ -161,7 +161,6 @@ namespace fdem
                                  "on its interface dofs is not positive definite: "
                                  "the block is not held (check its constraints)."));
         }
-      schur_inverse.clear();
     }
 
     void
@@ -255,23 +254,22 @@ namespace fdem
       return Vector<double>(x.begin(), x.end());
     }
 
-    const std::vector<double> &
+    std::vector<double>
     MumpsSchurSolver::inverse_on_schur_dofs() const
     {
-      if (schur_inverse.empty() && !schur.empty())
+      std::vector<double> inverse = schur_factor;
+      if (!schur.empty())
         {
-          schur_inverse             = schur_factor;
-          const types::blas_int n_s = schur.size();
+          const types::blas_int n_s  = schur.size();
           types::blas_int       info = 0;
-          potri("L", &n_s, schur_inverse.data(), &n_s, &info);
+          potri("L", &n_s, inverse.data(), &n_s, &info);
           AssertThrow(info == 0, ExcMessage("Inverting the Schur complement of a "
                                             "block stiffness matrix failed."));
           for (types::blas_int j = 0; j < n_s; ++j)
             for (types::blas_int i = 0; i < j; ++i)
-              schur_inverse[i + std::size_t(j) * n_s] =
-                schur_inverse[j + std::size_t(i) * n_s];
+              inverse[i + std::size_t(j) * n_s] = inverse[j + std::size_t(i) * n_s];
         }
-      return schur_inverse;
+      return inverse;
     }
   } // namespace blocks
 } // namespace fdem

@@ -247,6 +247,9 @@ namespace fdem
         FullMatrix<double>                   matrix;
         Vector<double>                       rhs;
         std::vector<types::global_dof_index> dofs;
+        /** Strains and divergences of the shape functions at one point. */
+        std::vector<SymmetricTensor<2, dim>> strains;
+        std::vector<double>                  divergences;
       };
 
       /** Element stiffness K_e and load F_e (gravity and pressures) into @p scratch. */

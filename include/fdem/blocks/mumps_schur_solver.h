@@ -63,9 +63,10 @@ namespace fdem
 
       /**
        * (K^{-1})_SS = S^{-1} on the Schur dofs, n_S x n_S column-major,
-       * computed from the dense factor at the first call (LAPACK potri).
+       * from the dense factor (LAPACK potri). Not kept: the flexibility is
+       * built once, and in 3D n_S^2 numbers are many.
        */
-      const std::vector<double> &
+      std::vector<double>
       inverse_on_schur_dofs() const;
 
     private:
@@ -77,7 +78,6 @@ namespace fdem
       std::vector<int> schur_index;
       /** Cholesky factor of S (lower triangle, column-major). */
       std::vector<double> schur_factor;
-      mutable std::vector<double> schur_inverse;
 
       /** MUMPS solve of the interior: x_I = K_II^{-1} b_I, x_S = 0. */
       void
