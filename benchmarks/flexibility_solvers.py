@@ -137,8 +137,15 @@ def main():
             r["sections"], r["fe_dofs"], r["fe_assembly"], r["fe_factorisation"],
             r["fe_solve"], r["ratio"],
             r["ratio_sections"], r["safety_factor"]))
+    # A hand-written "## Reading" section of the previous file is kept.
+    reading = ""
+    if os.path.exists(args.output):
+        with open(args.output) as f:
+            previous = f.read()
+        if "\n## Reading" in previous:
+            reading = previous[previous.index("\n## Reading"):]
     with open(args.output, "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines) + "\n" + reading)
     print("wrote", args.output)
 
 
