@@ -2,9 +2,10 @@
 // Copyright (C) 2026 the fdem-slope authors
 //
 // The interface flexibility C_b = (K^{-1}) on the pair dofs: the inverse
-// Schur complement of MUMPS_Schur against the blocked multi-RHS solves with
-// KLU (the reference path), in 2D and 3D, for a floating block (held at its
-// minimal support) and a fixed one, with constrained dofs in the list.
+// Schur complement of MUMPS_Schur, and the blocked solves of MUMPS and
+// UMFPACK, against the blocked multi-RHS solves with KLU (the reference
+// path), in 2D and 3D, for a floating block (held at its minimal support)
+// and a fixed one, with constrained dofs in the list.
 #include "test_helpers.h"
 
 #include <deal.II/dofs/dof_tools.h>
@@ -113,6 +114,7 @@ namespace
     const auto reference = factorised_model<dim>(parameters, "Amesos_Klu", extra_constraint);
     const auto schur     = factorised_model<dim>(parameters, "MUMPS_Schur", extra_constraint);
     const auto mumps     = factorised_model<dim>(parameters, "MUMPS", extra_constraint);
+    const auto umfpack   = factorised_model<dim>(parameters, "UMFPACK", extra_constraint);
     ASSERT_EQ(reference->blocks.size(), schur->blocks.size());
 
     unsigned int n_floating = 0, n_constrained_pair_dofs = 0;
@@ -144,6 +146,8 @@ namespace
         // they agree to round-off times the condition, far below 1e-10.
         EXPECT_LT(relative_difference(C_schur, C_reference), 1e-10) << block.name;
         EXPECT_LT(relative_difference(mumps->blocks[b]->flexibility(dofs), C_reference), 1e-10)
+          << block.name;
+        EXPECT_LT(relative_difference(umfpack->blocks[b]->flexibility(dofs), C_reference), 1e-10)
           << block.name;
         // Constrained dofs: a fixed or support dof has zero flexibility.
         for (unsigned int r = 0; r < dofs.size(); ++r)

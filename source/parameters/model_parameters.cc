@@ -423,7 +423,7 @@ namespace fdem
       prm.enter_subsection("Solver");
       prm.declare_entry("Direct solver",
                         "MUMPS_Schur",
-                        Patterns::Selection("MUMPS_Schur|MUMPS|Amesos_Klu|Amesos_Mumps"),
+                        Patterns::Selection("MUMPS_Schur|MUMPS|Amesos_Klu|Amesos_Mumps|UMFPACK"),
                         "Sparse direct solver that factorises each block's "
                         "stiffness matrix once. MUMPS_Schur: MUMPS (C "
                         "interface, L D L^T) with the interface dofs eliminated "
@@ -431,6 +431,8 @@ namespace fdem
                         "dense Schur complement (no solves). MUMPS: the same "
                         "factorisation without the Schur complement. "
                         "Amesos_Klu, Amesos_Mumps: Trilinos Amesos (LU). "
+                        "UMFPACK: deal.II's SparseDirectUMFPACK (LU, one "
+                        "right-hand side at a time). "
                         "Except for MUMPS_Schur the interface flexibility is "
                         "solved with blocks of 64 right-hand sides. See "
                         "doc/flexibility_solvers.md for timings.");

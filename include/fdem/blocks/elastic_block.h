@@ -100,7 +100,8 @@ namespace fdem
 
       /**
        * Assembles K and F, and factorises K with @p solver_type: an Amesos
-       * class name ("Amesos_Klu", "Amesos_Mumps"), "MUMPS" (MUMPS's C
+       * class name ("Amesos_Klu", "Amesos_Mumps"), "UMFPACK" (deal.II's
+       * SparseDirectUMFPACK), "MUMPS" (MUMPS's C
        * interface, L D L^T) or "MUMPS_Schur" (the same, with the interface
        * dofs eliminated last and their Schur complement kept, see
        * MumpsSchurSolver).
