@@ -24,7 +24,7 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SOLVERS = ["MUMPS_Schur", "MUMPS", "Amesos_Klu", "Amesos_Mumps"]
+SOLVERS = ["MUMPS_Schur", "MUMPS", "Amesos_Klu", "Amesos_Mumps", "UMFPACK"]
 METHOD = {"MUMPS_Schur": "Schur complement"}
 
 
@@ -60,12 +60,18 @@ def main():
     parser.add_argument("--mesh-sizes", type=float, nargs="+", default=[1.0, 0.6, 0.45])
     parser.add_argument("--solvers", nargs="+", default=SOLVERS)
     parser.add_argument("--output", default=os.path.join(ROOT, "doc", "flexibility_solvers.md"))
+    parser.add_argument("--from-log", help="write the table from the JSON lines a previous "
+                        "run printed, instead of running")
     args = parser.parse_args()
     slope = os.path.join(args.build, "fdem-slope")
     yardstick = os.path.join(args.build, "fdem-fe-solve-time")
 
     load_before = os.getloadavg()[0]
     rows = []
+    if args.from_log:
+        with open(args.from_log) as f:
+            rows = [json.loads(line) for line in f if line.startswith("{")]
+        args.mesh_sizes = []
     with tempfile.TemporaryDirectory() as folder:
         for h in args.mesh_sizes:
             for solver in args.solvers:
@@ -103,10 +109,11 @@ def main():
         "# Direct solvers and the interface flexibility (paper's slope)",
         "",
         "Written by `/usr/bin/python3 benchmarks/flexibility_solvers.py %s` on %s "
-        "(%s, %d cores shared with other work, load average %.1f before and %.1f "
-        "after the runs); one run per row, wall seconds."
+        "(%s, %d cores shared with other work%s); one run per row, wall seconds."
         % (" ".join(sys.argv[1:]), time.strftime("%Y-%m-%d"), platform.machine(),
-           os.cpu_count(), load_before, os.getloadavg()[0]),
+           os.cpu_count(),
+           "" if args.from_log else ", load average %.1f before and %.1f after the runs"
+           % (load_before, os.getloadavg()[0])),
         "",
         "- *dofs*: all blocks of the mixed model; *pairs*: node pairs on the sliding surface.",
         "- *assembly + factorisation*, *flexibility*: the run's timer sections (summary.json);",
