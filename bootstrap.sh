@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 packages=(cmake make g++ libdeal.ii-dev gmsh libgmsh-dev nlohmann-json3-dev
-          libgtest-dev numdiff python3-vtk9 python3-numpy python3-matplotlib)
+          libmumps-dev libgtest-dev numdiff python3-vtk9 python3-numpy python3-matplotlib)
 
 missing=()
 for p in "${packages[@]}"; do

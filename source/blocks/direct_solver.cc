@@ -3,9 +3,11 @@
 #include <fdem/blocks/direct_solver.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 
@@ -23,6 +25,34 @@ namespace fdem
     DirectSolver::factorize(const TrilinosWrappers::SparseMatrix &A)
     {
       matrix = &A;
+      if (solver_type == "UMFPACK")
+        {
+          const Epetra_CrsMatrix &crs = A.trilinos_matrix();
+          DynamicSparsityPattern  dsp(crs.NumMyRows());
+          for (int row = 0; row < crs.NumMyRows(); ++row)
+            {
+              int     n_entries;
+              double *values;
+              int *   indices;
+              crs.ExtractMyRowView(row, n_entries, values, indices);
+              for (int e = 0; e < n_entries; ++e)
+                dsp.add(row, crs.GCID(indices[e]));
+            }
+          umfpack_pattern.copy_from(dsp);
+          umfpack_matrix.reinit(umfpack_pattern);
+          for (int row = 0; row < crs.NumMyRows(); ++row)
+            {
+              int     n_entries;
+              double *values;
+              int *   indices;
+              crs.ExtractMyRowView(row, n_entries, values, indices);
+              for (int e = 0; e < n_entries; ++e)
+                umfpack_matrix.set(row, crs.GCID(indices[e]), values[e]);
+            }
+          umfpack = std::make_unique<SparseDirectUMFPACK>();
+          umfpack->factorize(umfpack_matrix);
+          return;
+        }
       problem =
         std::make_unique<Epetra_LinearProblem>(const_cast<Epetra_CrsMatrix *>(
                                                  &A.trilinos_matrix()),
@@ -45,6 +75,19 @@ namespace fdem
     void
     DirectSolver::solve(Epetra_MultiVector &x, Epetra_MultiVector &b) const
     {
+      if (umfpack)
+        {
+          Vector<double> column(x.MyLength());
+          for (int c = 0; c < b.NumVectors(); ++c)
+            {
+              for (unsigned int i = 0; i < column.size(); ++i)
+                column[i] = b[c][i];
+              umfpack->solve(column);
+              for (unsigned int i = 0; i < column.size(); ++i)
+                x[c][i] = column[i];
+            }
+          return;
+        }
       Assert(solver != nullptr, ExcMessage("factorize() first."));
       problem->SetLHS(&x);
       problem->SetRHS(&b);

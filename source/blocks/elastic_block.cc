@@ -291,21 +291,27 @@ namespace fdem
       cell_matrix = 0;
       cell_rhs    = 0;
       const unsigned int n = fe.n_dofs_per_cell();
+      // The shape functions' strains once per point, not once per pair
+      // (same operations per entry, so the same K bit for bit).
+      std::vector<SymmetricTensor<2, dim>> &eps = scratch.strains;
+      std::vector<double> &                 div = scratch.divergences;
+      eps.resize(n);
+      div.resize(n);
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
           const double JxW = fe_values.JxW(q);
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              eps[j] = fe_values[displacement].symmetric_gradient(j, q);
+              div[j] = trace(eps[j]);
+            }
           for (unsigned int i = 0; i < n; ++i)
             {
-              const auto eps_i = fe_values[displacement].symmetric_gradient(i, q);
-              const double div_i = trace(eps_i);
+              const SymmetricTensor<2, dim> &eps_i = eps[i];
+              const double                   div_i = div[i];
               for (unsigned int j = 0; j < n; ++j)
-                {
-                  const auto eps_j =
-                    fe_values[displacement].symmetric_gradient(j, q);
-                  cell_matrix(i, j) +=
-                    (lambda * div_i * trace(eps_j) + 2 * mu * (eps_i * eps_j)) *
-                    JxW;
-                }
+                cell_matrix(i, j) +=
+                  (lambda * div_i * div[j] + 2 * mu * (eps_i * eps[j])) * JxW;
               cell_rhs(i) +=
                 fe_values[displacement].value(i, q) * body_force * JxW;
             }
@@ -346,6 +352,7 @@ namespace fdem
       const std::string &               solver_type)
     {
       loads = load_parameters;
+      const auto start = std::chrono::steady_clock::now();
       DynamicSparsityPattern dsp(dof_handler.n_dofs());
       DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
       stiffness_matrix.reinit(dsp);
@@ -362,9 +369,46 @@ namespace fdem
           load_vector.add(scratch.dofs, scratch.rhs);
         }
       stiffness_matrix.compress(VectorOperation::add);
+      const auto assembled = std::chrono::steady_clock::now();
+      assembly_seconds = std::chrono::duration<double>(assembled - start).count();
 
-      direct_solver = std::make_unique<DirectSolver>(solver_type);
-      direct_solver->factorize(stiffness_matrix);
+      direct_solver.reset();
+      mumps_solver.reset();
+      if (solver_type == "MUMPS" || solver_type == "MUMPS_Schur")
+        {
+          mumps_solver = std::make_unique<MumpsSchurSolver>();
+          mumps_solver->factorize(stiffness_matrix,
+                                  solver_type == "MUMPS_Schur" ?
+                                    interface_schur_dofs() :
+                                    std::vector<types::global_dof_index>());
+        }
+      else
+        {
+          direct_solver = std::make_unique<DirectSolver>(solver_type);
+          direct_solver->factorize(stiffness_matrix);
+        }
+      factorization_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - assembled).count();
+    }
+
+    template <int dim>
+    std::vector<types::global_dof_index>
+    ElasticBlock<dim>::interface_schur_dofs() const
+    {
+      if (interface_ids.empty())
+        return {};
+      const std::set<types::boundary_id> interfaces(interface_ids.begin(),
+                                                    interface_ids.end());
+      const IndexSet on_interface =
+        DoFTools::extract_boundary_dofs(dof_handler, ComponentMask(), interfaces);
+      std::set<types::global_dof_index> schur;
+      for (const types::global_dof_index dof : on_interface)
+        if (!constraints.is_constrained(dof))
+          schur.insert(dof);
+        else
+          for (const auto &[master, weight] : *constraints.get_constraint_entries(dof))
+            schur.insert(master);
+      return {schur.begin(), schur.end()};
     }
 
     template <int dim>
@@ -373,9 +417,79 @@ namespace fdem
     {
       Vector<double> rhs = nodal_forces;
       constraints.condense(rhs);
-      Vector<double> u = direct_solver->solve(rhs);
+      Vector<double> u = mumps_solver ? mumps_solver->solve(rhs) :
+                                        direct_solver->solve(rhs);
       constraints.distribute(u);
       return u;
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::solve_columns(std::vector<double> &b,
+                                     const unsigned int   n_rhs) const
+    {
+      if (mumps_solver)
+        {
+          mumps_solver->solve(b, n_rhs);
+          return;
+        }
+      const Epetra_Map & map = stiffness_matrix.trilinos_matrix().DomainMap();
+      const unsigned int n   = dof_handler.n_dofs();
+      Epetra_MultiVector rhs(map, n_rhs), x(map, n_rhs);
+      for (unsigned int c = 0; c < n_rhs; ++c)
+        for (unsigned int i = 0; i < n; ++i)
+          rhs[c][i] = b[i + std::size_t(c) * n];
+      direct_solver->solve(x, rhs);
+      for (unsigned int c = 0; c < n_rhs; ++c)
+        for (unsigned int i = 0; i < n; ++i)
+          b[i + std::size_t(c) * n] = x[c][i];
+    }
+
+    template <int dim>
+    bool
+    ElasticBlock<dim>::flexibility_from_schur(
+      const std::vector<types::global_dof_index> &dofs,
+      FullMatrix<double> &                        C) const
+    {
+      if (!mumps_solver || mumps_solver->schur_dofs().empty())
+        return false;
+      // Row r of the constraint map P (u = P u_free): the unconstrained
+      // dofs dof r follows, as positions in the Schur list, with weights.
+      const auto &                                   schur = mumps_solver->schur_dofs();
+      std::vector<std::vector<std::pair<unsigned int, double>>> rows(dofs.size());
+      for (unsigned int r = 0; r < dofs.size(); ++r)
+        {
+          const auto entry = [&](const types::global_dof_index dof, const double w) {
+            const auto it = std::lower_bound(schur.begin(), schur.end(), dof);
+            if (it == schur.end() || *it != dof)
+              return false;
+            rows[r].emplace_back(it - schur.begin(), w);
+            return true;
+          };
+          if (!constraints.is_constrained(dofs[r]))
+            {
+              if (!entry(dofs[r], 1.0))
+                return false;
+            }
+          else
+            for (const auto &[master, weight] :
+                 *constraints.get_constraint_entries(dofs[r]))
+              if (!entry(master, weight))
+                return false;
+        }
+      // C = P (K^{-1})_SS P^T; a fixed dof has an empty row, so zero.
+      const std::vector<double> inverse = mumps_solver->inverse_on_schur_dofs();
+      const std::size_t          n_s     = schur.size();
+      for (unsigned int r = 0; r < dofs.size(); ++r)
+        for (unsigned int c = 0; c < dofs.size(); ++c)
+          {
+            double value = 0;
+            for (const auto &[i, wi] : rows[r])
+              for (const auto &[j, wj] : rows[c])
+                value += wi * wj * inverse[i + j * n_s];
+            C(r, c) = value;
+          }
+      return true;
     }
 
     template <int dim>
@@ -385,27 +499,31 @@ namespace fdem
     {
       const unsigned int n = dofs.size();
       FullMatrix<double> C(n, n);
-      const Epetra_Map & map = stiffness_matrix.trilinos_matrix().DomainMap();
+      if (flexibility_from_schur(dofs, C))
+        return C;
       // Blocks of right-hand sides: one pass through the factors for many.
-      const unsigned int block_size = 64;
-      Vector<double>     column(dof_handler.n_dofs());
+      const unsigned int  block_size = 64;
+      const unsigned int  n_dofs     = dof_handler.n_dofs();
+      Vector<double>      column(n_dofs);
+      std::vector<double> columns;
       for (unsigned int first = 0; first < n; first += block_size)
         {
           const unsigned int n_columns = std::min(block_size, n - first);
-          Epetra_MultiVector rhs(map, n_columns), x(map, n_columns);
+          columns.assign(std::size_t(n_dofs) * n_columns, 0.0);
           for (unsigned int c = 0; c < n_columns; ++c)
             {
-              column             = 0;
+              column                  = 0;
               column[dofs[first + c]] = 1;
               constraints.condense(column);
-              for (unsigned int i = 0; i < column.size(); ++i)
-                rhs[c][i] = column[i];
+              std::copy(column.begin(), column.end(),
+                        columns.begin() + std::size_t(c) * n_dofs);
             }
-          direct_solver->solve(x, rhs);
+          solve_columns(columns, n_columns);
           for (unsigned int c = 0; c < n_columns; ++c)
             {
-              for (unsigned int i = 0; i < column.size(); ++i)
-                column[i] = x[c][i];
+              std::copy(columns.begin() + std::size_t(c) * n_dofs,
+                        columns.begin() + std::size_t(c + 1) * n_dofs,
+                        column.begin());
               constraints.distribute(column);
               for (unsigned int r = 0; r < n; ++r)
                 C(r, first + c) = column[dofs[r]];

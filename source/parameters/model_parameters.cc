@@ -422,10 +422,20 @@ namespace fdem
     {
       prm.enter_subsection("Solver");
       prm.declare_entry("Direct solver",
-                        "Amesos_Klu",
-                        Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
-                        "Trilinos Amesos direct solver that factorises each "
-                        "block's stiffness matrix once.");
+                        "MUMPS_Schur",
+                        Patterns::Selection("MUMPS_Schur|MUMPS|Amesos_Klu|Amesos_Mumps|UMFPACK"),
+                        "Sparse direct solver that factorises each block's "
+                        "stiffness matrix once. MUMPS_Schur: MUMPS (C "
+                        "interface, L D L^T) with the interface dofs eliminated "
+                        "last, so their flexibility is the inverse of the "
+                        "dense Schur complement (no solves). MUMPS: the same "
+                        "factorisation without the Schur complement. "
+                        "Amesos_Klu, Amesos_Mumps: Trilinos Amesos (LU). "
+                        "UMFPACK: deal.II's SparseDirectUMFPACK (LU, one "
+                        "right-hand side at a time). "
+                        "Except for MUMPS_Schur the interface flexibility is "
+                        "solved with blocks of 64 right-hand sides. See "
+                        "doc/flexibility_solvers.md for timings.");
       prm.leave_subsection();
     }
 

@@ -2,6 +2,9 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -19,15 +22,16 @@ namespace fdem
     using namespace dealii;
 
     /**
-     * A sparse direct solver from Trilinos Amesos that factorises a matrix
-     * once and then solves for any number of right-hand sides, one or many
-     * at a time. The FE part of the method is linear, so each block's
-     * stiffness is factorised exactly once per run.
+     * A sparse direct solver from Trilinos Amesos, or UMFPACK through
+     * deal.II's SparseDirectUMFPACK (on a copy of the matrix), that
+     * factorises a matrix once and then solves for any number of
+     * right-hand sides, one or many at a time. The FE part of the method is
+     * linear, so each block's stiffness is factorised exactly once per run.
      */
     class DirectSolver
     {
     public:
-      /** @p solver_type is an Amesos class name, e.g. "Amesos_Klu". */
+      /** @p solver_type is an Amesos class name, e.g. "Amesos_Klu", or "UMFPACK". */
       explicit DirectSolver(const std::string &solver_type);
       ~DirectSolver();
 
@@ -48,6 +52,10 @@ namespace fdem
       const TrilinosWrappers::SparseMatrix *matrix = nullptr;
       std::unique_ptr<Epetra_LinearProblem> problem;
       std::unique_ptr<Amesos_BaseSolver>    solver;
+      /** UMFPACK: deal.II's copy of the matrix and its factorisation. */
+      SparsityPattern                       umfpack_pattern;
+      SparseMatrix<double>                  umfpack_matrix;
+      std::unique_ptr<SparseDirectUMFPACK>  umfpack;
     };
   } // namespace blocks
 } // namespace fdem

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/blocks/direct_solver.h>
+#include <fdem/blocks/mumps_schur_solver.h>
 #include <fdem/geometry/mesh_description.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -18,6 +19,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <chrono>
 #include <map>
 #include <memory>
 #include <string>
@@ -96,7 +98,14 @@ namespace fdem
       void
       find_free_rigid_modes();
 
-      /** Assembles K and F, and factorises K with the Amesos @p solver_type. */
+      /**
+       * Assembles K and F, and factorises K with @p solver_type: an Amesos
+       * class name ("Amesos_Klu", "Amesos_Mumps"), "UMFPACK" (deal.II's
+       * SparseDirectUMFPACK), "MUMPS" (MUMPS's C
+       * interface, L D L^T) or "MUMPS_Schur" (the same, with the interface
+       * dofs eliminated last and their Schur complement kept, see
+       * MumpsSchurSolver).
+       */
       void
       assemble_and_factorize(const parameters::LoadParameters &loads,
                              const std::string &               solver_type);
@@ -110,11 +119,25 @@ namespace fdem
 
       /**
        * Flexibility matrix C(i,j) = (K^{-1})_{ij} restricted to @p dofs: the
-       * displacement at dof i due to a unit force at dof j. Solved with
-       * blocks of right-hand sides, the factorisation reused.
+       * displacement at dof i due to a unit force at dof j, through the
+       * constraints (a force on a constrained dof acts on the dofs it
+       * follows; a fixed dof does not move). With "MUMPS_Schur" it comes
+       * from the inverse Schur complement on the interface dofs when they
+       * hold every dof of @p dofs and its constraint's dofs; otherwise it is
+       * solved with blocks of right-hand sides, the factorisation reused.
        */
       FullMatrix<double>
       flexibility(const std::vector<types::global_dof_index> &dofs) const;
+
+      /**
+       * The flexibility of @p dofs into @p C (n x n) from the inverse Schur
+       * complement, if the block was factorised with "MUMPS_Schur" and its
+       * Schur dofs hold every dof of @p dofs and its constraint's dofs;
+       * false (and @p C untouched) otherwise.
+       */
+      bool
+      flexibility_from_schur(const std::vector<types::global_dof_index> &dofs,
+                             FullMatrix<double> &                        C) const;
 
       /** The nodes of this block on the face group @p group. */
       std::vector<InterfaceNode<dim>>
@@ -173,13 +196,18 @@ namespace fdem
       double                         length_scale = 1;
       /** External nodal forces F (before constraints). */
       Vector<double>                 load_vector;
+      /** Wall time of the assembly and of the factorisation of K (s). */
+      double                         assembly_seconds      = 0;
+      double                         factorization_seconds = 0;
 
     private:
       std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> pressures;
       std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> tractions;
       std::vector<types::boundary_id> interface_ids;
       TrilinosWrappers::SparseMatrix  stiffness_matrix;
-      std::unique_ptr<DirectSolver>   direct_solver;
+      /** Amesos solver, or MUMPS through its C interface: one of the two. */
+      std::unique_ptr<DirectSolver>     direct_solver;
+      std::unique_ptr<MumpsSchurSolver> mumps_solver;
       parameters::LoadParameters      loads;
 
       /** Support point and vector component of every dof. */
@@ -195,6 +223,18 @@ namespace fdem
       add_plate_constraints(const types::boundary_id id,
                             AffineConstraints<double> &plate) const;
 
+      /**
+       * The dofs whose Schur complement "MUMPS_Schur" keeps: the
+       * unconstrained dofs on the interfaces and the dofs that constrained
+       * ones follow.
+       */
+      std::vector<types::global_dof_index>
+      interface_schur_dofs() const;
+
+      /** Solves K X = B for the n_rhs columns of B (column-major, condensed). */
+      void
+      solve_columns(std::vector<double> &b, const unsigned int n_rhs) const;
+
       /** Values of every rigid mode at every dof (n_dofs x n_rigid_modes). */
       FullMatrix<double>
       rigid_modes_at_dofs() const;
@@ -208,6 +248,9 @@ namespace fdem
         FullMatrix<double>                   matrix;
         Vector<double>                       rhs;
         std::vector<types::global_dof_index> dofs;
+        /** Strains and divergences of the shape functions at one point. */
+        std::vector<SymmetricTensor<2, dim>> strains;
+        std::vector<double>                  divergences;
       };
 
       /** Element stiffness K_e and load F_e (gravity and pressures) into @p scratch. */

@@ -180,8 +180,11 @@ namespace fdem
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      /** Amesos direct solver that factorises each block stiffness once. */
-      std::string direct_solver = "Amesos_Klu";
+      /**
+       * Direct solver that factorises each block stiffness once:
+       * "MUMPS_Schur", "MUMPS" or an Amesos class name.
+       */
+      std::string direct_solver = "MUMPS_Schur";
     };
 
     /** What the run writes: subsection "Output". */

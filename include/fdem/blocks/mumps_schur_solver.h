@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <deal.II/base/types.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace fdem
+{
+  namespace blocks
+  {
+    using namespace dealii;
+
+    /**
+     * MUMPS (through its C interface) for a symmetric positive definite
+     * block stiffness K, factorised once as L D L^T with a list of "Schur"
+     * dofs eliminated last: MUMPS factorises the rest, K_II, and returns the
+     * dense Schur complement S = K_SS - K_SI K_II^{-1} K_IS, which is then
+     * Cholesky-factorised here. Together that is a full factorisation of K
+     * for the cost of one, and (K^{-1})_SS = S^{-1} follows from the dense
+     * factor alone: the interface flexibility needs no sparse solves
+     * (MUMPS user's guide, ICNTL(19)).
+     *
+     * A solve K x = b is y_I = K_II^{-1} b_I, x_S = S^{-1} (b_S - K_SI y_I),
+     * x_I = K_II^{-1} (b_I - K_IS x_S): two MUMPS solves of the interior.
+     */
+    class MumpsSchurSolver
+    {
+    public:
+      MumpsSchurSolver();
+      ~MumpsSchurSolver();
+      MumpsSchurSolver(const MumpsSchurSolver &) = delete;
+      MumpsSchurSolver &
+      operator=(const MumpsSchurSolver &) = delete;
+
+      /**
+       * Analysis and factorisation of @p matrix (kept by reference; only its
+       * upper triangle is read) with @p schur_dofs (distinct) eliminated
+       * last, and the Cholesky factorisation of their Schur complement.
+       */
+      void
+      factorize(const TrilinosWrappers::SparseMatrix &       matrix,
+                const std::vector<types::global_dof_index> &schur_dofs);
+
+      /** Solves K x = b for the columns of @p b (n x n_rhs, column-major). */
+      void
+      solve(std::vector<double> &b, const unsigned int n_rhs) const;
+
+      /** Solves K x = b for one right-hand side. */
+      Vector<double>
+      solve(const Vector<double> &b) const;
+
+      /** The Schur dofs, in the order given to factorize(). */
+      const std::vector<types::global_dof_index> &
+      schur_dofs() const
+      {
+        return schur;
+      }
+
+      /**
+       * (K^{-1})_SS = S^{-1} on the Schur dofs, n_S x n_S column-major,
+       * from the dense factor (LAPACK potri). Not kept: the flexibility is
+       * built once, and in 3D n_S^2 numbers are many.
+       */
+      std::vector<double>
+      inverse_on_schur_dofs() const;
+
+    private:
+      struct Data;
+      std::unique_ptr<Data>                 data;
+      const TrilinosWrappers::SparseMatrix *matrix = nullptr;
+      std::vector<types::global_dof_index>  schur;
+      /** Per dof: its index in the Schur list, or -1. */
+      std::vector<int> schur_index;
+      /** Cholesky factor of S (lower triangle, column-major). */
+      std::vector<double> schur_factor;
+
+      /** MUMPS solve of the interior: x_I = K_II^{-1} b_I, x_S = 0. */
+      void
+      solve_interior(std::vector<double> &b, const unsigned int n_rhs) const;
+
+      /** Runs one MUMPS phase and throws with INFOG(1..2) on failure. */
+      void
+      run(const int job, const char *what) const;
+    };
+  } // namespace blocks
+} // namespace fdem
