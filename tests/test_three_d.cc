@@ -131,7 +131,9 @@ TEST(ThreeD, HertzSphereContactRadiusAndPeakPressure)
           ++n_inner;
         }
       if (rho > 1.2 * a_exact)
-        EXPECT_EQ(states[k].status, contact::PairStatus::open) << x;
+        {
+          EXPECT_EQ(states[k].status, contact::PairStatus::open) << x;
+        }
     }
   // Measured: 1.65 % of p0 at worst over the 13 pairs inside 0.8 a (the
   // nodal lumping error h^2 p'' of this coarse mesh); bound 2 %.

@@ -129,22 +129,26 @@ namespace fdem
           return (k * n_xy + j) * n_xy + i;
         };
       // Sphere vertices, k = 0 on its surface; the origin is shared.
-      const unsigned int n_height = height.size();
-      const unsigned int first    = mesh.vertices.size();
+      const unsigned int        n_height = height.size();
+      std::vector<unsigned int> sphere_vertex;
       for (unsigned int k = 0; k < n_height; ++k)
         for (unsigned int j = 0; j < n_sphere_xy; ++j)
           for (unsigned int i = 0; i < n_sphere_xy; ++i)
             {
+              if (i == 0 && j == 0 && k == 0)
+                {
+                  sphere_vertex.push_back(foundation_index(0, 0, n_depth - 1));
+                  continue;
+                }
               const double z_s = surface(xy[i], xy[j]);
               const double z =
                 z_s + height[k] / p.load_height * (p.load_height - z_s);
+              sphere_vertex.push_back(mesh.vertices.size());
               mesh.vertices.emplace_back(xy[i], xy[j], z);
             }
       const auto sphere_index =
         [&](const unsigned int i, const unsigned int j, const unsigned int k) {
-          if (i == 0 && j == 0 && k == 0)
-            return foundation_index(0, 0, n_depth - 1);
-          return first + (k * n_sphere_xy + j) * n_sphere_xy + i;
+          return sphere_vertex[(k * n_sphere_xy + j) * n_sphere_xy + i];
         };
 
       // Cells of a grid of n[0] x n[1] x n[2] cells, and their faces on the
