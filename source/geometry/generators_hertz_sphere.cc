@@ -66,7 +66,8 @@ namespace fdem
       const unsigned int n     = p.n_contact_zone_elements;
       const double       ratio = p.growth_ratio;
 
-      // Lines in x and y (both blocks): n_s of them up to S, all up to W.
+      // Lines in x and y (both blocks): the first n_sphere_xy up to S, all
+      // up to W.
       std::vector<double> xy;
       for (unsigned int i = 0; i <= n; ++i)
         xy.push_back(lc * i / n);
@@ -82,7 +83,7 @@ namespace fdem
       const unsigned int n_xy = xy.size();
 
       // Depths below z = 0 and heights above the sphere's surface: the
-      // element size h down to Lc, then growing.
+      // element size Lc/n down to Lc, then growing.
       std::vector<double> depth;
       for (unsigned int i = 0; i <= n; ++i)
         depth.push_back(lc * i / n);
