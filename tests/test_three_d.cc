@@ -100,7 +100,7 @@ TEST(ThreeD, HertzSphereContactRadiusAndPeakPressure)
   EXPECT_NEAR(p_exact, 1801.0245, 1e-3);
   // This coarse mesh (n = 6 elements along the contact zone, a over about
   // 4) measures +0.68 % (a, from the fit of p^2) and -0.24 % (p0) in
-  // doc/hertz_sphere_convergence.md (n = 12: -0.07 % and -0.12 %); the
+  // doc/hertz_sphere_convergence.md (n = 16: +0.24 % and -0.08 %); the
   // truncated bodies change them by at most 0.012 %. The bounds 0.75 % and
   // 0.3 % leave room for round-off, not for a regression.
   EXPECT_LT(std::abs(hertz["contact_radius_error"].get<double>()), 7.5e-3);
