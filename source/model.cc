@@ -4,6 +4,7 @@
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/block_output.h>
+#include <fdem/postprocess/hertz_sphere.h>
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_cost.h>
@@ -655,15 +656,20 @@ namespace fdem
     // example 4.A, its ref. [12]): a = sqrt(4 p r / (pi E')), q_max =
     // 2 p / (pi a), 1/E' = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, and
     // q(x) = q_max sqrt(1 - (x/a)^2). The generator's model is a half model,
-    // so p is twice the normal force on its interface.
-    if (dim != 2 ||
-        parameters.geometry.source != parameters::GeometryParameters::Source::hertz ||
+    // so p is twice the normal force on its interface. In 3D, the Hertz
+    // sphere generator's quarter model: see postprocess/hertz_sphere.h.
+    using Source = parameters::GeometryParameters::Source;
+    if (parameters.geometry.source != (dim == 2 ? Source::hertz : Source::hertz_sphere) ||
         interfaces.size() != 1 || !contact_outcome.converged())
       return {};
     const auto &cylinder   = parameters.materials.at(blocks[interfaces[0].block_I]->name);
     const auto &foundation = parameters.materials.at(blocks[interfaces[0].block_J]->name);
     const double inverse_E = (1 - std::pow(cylinder.poissons_ratio, 2)) / cylinder.youngs_modulus +
                              (1 - std::pow(foundation.poissons_ratio, 2)) / foundation.youngs_modulus;
+    if constexpr (dim == 3)
+      return postprocess::hertz_sphere_reference(
+        results[0], inverse_E,
+        parameters.geometry.hertz_sphere.radius * parameters.geometry.scale_factor);
     double half_load = 0;
     for (const auto &r : results[0])
       half_load -= r.normal_force;

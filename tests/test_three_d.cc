@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 using namespace fdem;
 using dealii::numbers::PI;
@@ -78,4 +79,66 @@ TEST(ThreeD, BlockOnPlaneMatchesThePlanarFormula)
       EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
         << "phi = " << phi << ", c = " << cohesion;
     }
+}
+
+TEST(ThreeD, HertzSphereContactRadiusAndPeakPressure)
+{
+  // prm/hertz_sphere.prm: Hertz point contact, quarter model, frictionless.
+  std::ostringstream log;
+  Model<3> model(test_support::case_parameters("hertz_sphere.prm"), "", log);
+  model.run();
+  ASSERT_EQ(model.summary["status"], "completed");
+  const auto  &hertz   = model.summary["hertz"];
+  const double P       = hertz["load"];
+  const double a_exact = hertz["contact_radius_exact"];
+  const double p_exact = hertz["max_pressure_exact"];
+  // The sphere's one free mode (along z) is balanced by the contact forces
+  // alone: P = 4 x 10 N/mm^2 x 50 mm x 50 mm, up to round-off.
+  EXPECT_NEAR(P, 1.0e5, 1e-8 * 1.0e5);
+  // a = (3PR/(4E*))^(1/3), E* = E/(2(1 - nu^2)); p0 = 3P/(2 pi a^2).
+  EXPECT_NEAR(a_exact, 5.148858, 1e-6);
+  EXPECT_NEAR(p_exact, 1801.0245, 1e-3);
+  // This coarse mesh (n = 6 elements along the contact zone, a over about
+  // 4) measures +0.68 % (a, from the fit of p^2) and -0.24 % (p0) in
+  // doc/hertz_sphere_convergence.md (n = 16: +0.24 % and -0.08 %); the
+  // truncated bodies change them by at most 0.012 %. The bounds 0.75 % and
+  // 0.3 % leave room for round-off, not for a regression.
+  EXPECT_LT(std::abs(hertz["contact_radius_error"].get<double>()), 7.5e-3);
+  EXPECT_LT(std::abs(hertz["max_pressure_error"].get<double>()), 3e-3);
+
+  // The pressure profile p0 sqrt(1 - rho^2/a^2) inside 0.8 a, the contact
+  // zone holds the whole contact (pairs beyond 1.2 a are open), and the
+  // solution is symmetric under x <-> y like the mesh (frictionless pairs:
+  // the tangent frames, which differ, carry no force).
+  const auto  &interface = model.interfaces[0];
+  const auto  &states    = model.contact_outcome.states;
+  std::map<std::pair<long, long>, double> pressure;
+  const auto  &sphere  = model.parameters.geometry.hertz_sphere;
+  const double spacing = sphere.contact_zone_width / sphere.n_contact_zone_elements;
+  double       worst   = 0;
+  unsigned int n_inner = 0;
+  for (unsigned int k = 0; k < interface.pairs.size(); ++k)
+    {
+      const dealii::Point<3> &x = interface.pairs[k].position_J;
+      const double    rho = std::hypot(x[0], x[1]);
+      const double    p =
+        -model.contact_outcome.solution.forces[3 * k] / interface.pairs[k].area;
+      pressure[{std::lround(x[0] / spacing), std::lround(x[1] / spacing)}] = p;
+      if (rho < 0.8 * a_exact)
+        {
+          const double exact = p_exact * std::sqrt(1 - std::pow(rho / a_exact, 2));
+          worst              = std::max(worst, std::abs(p - exact));
+          ++n_inner;
+        }
+      if (rho > 1.2 * a_exact)
+        {
+          EXPECT_EQ(states[k].status, contact::PairStatus::open) << x;
+        }
+    }
+  // Measured: 1.65 % of p0 at worst over the 13 pairs inside 0.8 a (the
+  // nodal lumping error h^2 p'' of this coarse mesh); bound 2 %.
+  EXPECT_GE(n_inner, 13u);
+  EXPECT_LT(worst, 0.02 * p_exact);
+  for (const auto &[ij, p] : pressure)
+    EXPECT_NEAR(pressure.at({ij.second, ij.first}), p, 1e-8 * p_exact);
 }

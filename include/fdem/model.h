@@ -136,9 +136,11 @@ namespace fdem
     progress(const std::string &what) const;
 
     /**
-     * For the Hertz generator's model: the exact contact half-width and
-     * maximum pressure and the relative errors of the computed ones; the
-     * exact pressure of each pair goes into @p results. Empty otherwise.
+     * For the Hertz generator's model (2D) and the Hertz sphere generator's
+     * (3D, postprocess::hertz_sphere_reference()): the exact contact
+     * half-width or radius and maximum pressure and the relative errors of
+     * the computed ones; the exact pressure of each pair goes into
+     * @p results. Empty otherwise.
      */
     nlohmann::json
     hertz_reference(std::vector<std::vector<postprocess::PairResult<dim>>> &results) const;

@@ -77,11 +77,13 @@ namespace fdem
         {
           AssertThrow(dim == 3,
                       ExcMessage("Geometry/Source: the built-in generators "
-                                 "wedge and block on plane are 3D only; set "
-                                 "Dimension = 3."));
+                                 "wedge, block on plane and hertz sphere are "
+                                 "3D only; set Dimension = 3."));
           if constexpr (dim == 3)
             mesh = (geometry.source == Source::wedge) ?
                      make_wedge_mesh(geometry.wedge) :
+                   (geometry.source == Source::hertz_sphere) ?
+                     make_hertz_sphere_mesh(geometry.hertz_sphere) :
                      make_block_on_plane_mesh(geometry.block_on_plane);
         }
       else
@@ -89,8 +91,8 @@ namespace fdem
           AssertThrow(dim == 2,
                       ExcMessage("Geometry/Source: the built-in generators "
                                  "slope, hertz and inclined block are 2D "
-                                 "only; in 3D use wedge, block on plane or a "
-                                 "mesh file."));
+                                 "only; in 3D use wedge, block on plane, hertz "
+                                 "sphere or a mesh file."));
           if constexpr (dim == 2)
             mesh = (geometry.source == Source::slope) ?
                      make_slope_mesh(geometry.slope) :

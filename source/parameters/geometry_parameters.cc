@@ -57,7 +57,8 @@ namespace fdem
           {"hertz", Source::hertz},
           {"inclined block", Source::inclined_block},
           {"wedge", Source::wedge},
-          {"block on plane", Source::block_on_plane}};
+          {"block on plane", Source::block_on_plane},
+          {"hertz sphere", Source::hertz_sphere}};
         return sources.at(name);
       }
 
@@ -159,11 +160,12 @@ namespace fdem
           "Source",
           "slope",
           Patterns::Selection(
-            "mesh file|slope|hertz|inclined block|wedge|block on plane"),
+            "mesh file|slope|hertz|inclined block|wedge|block on plane|"
+            "hertz sphere"),
           "Where the mesh comes from: a Gmsh file (see Mesh file) or one of "
           "the built-in generators, whose data are in the subsection of the "
           "same name: slope, hertz and inclined block build 2D models "
-          "(Dimension = 2), wedge and block on plane 3D models "
+          "(Dimension = 2), wedge, block on plane and hertz sphere 3D models "
           "(Dimension = 3).");
         prm.declare_entry(
           "Mesh file",
@@ -443,6 +445,69 @@ namespace fdem
                             "height.");
         }
         prm.leave_subsection();
+
+        prm.enter_subsection("Hertz sphere");
+        {
+          prm.declare_entry(
+            "Radius",
+            "100",
+            Patterns::Double(0),
+            "Radius R of the sphere (model length unit, e.g. mm). 3D quarter "
+            "model x >= 0, y >= 0, z up: the sphere touches the foundation's "
+            "top z = 0 at the origin; x = 0 and y = 0 are symmetry planes.");
+          prm.declare_entry(
+            "Load height",
+            "60",
+            Patterns::Double(0),
+            "Height H of the sphere's flat top above the origin, where the "
+            "load is applied (model length unit); at most Radius, and above "
+            "the sphere's surface at the corner (S, S) of its plan.");
+          prm.declare_entry(
+            "Cap half width",
+            "50",
+            Patterns::Double(0),
+            "Half width S of the sphere's square plan: the sphere is cut by "
+            "the planes x = S and y = S (free faces) (model length unit); "
+            "larger than Contact zone width, S sqrt(2) < Radius.");
+          prm.declare_entry("Foundation width",
+                            "100",
+                            Patterns::Double(0),
+                            "Width W of the foundation [0, W] x [0, W] in "
+                            "plan (model length unit); larger than Cap half "
+                            "width.");
+          prm.declare_entry("Foundation depth",
+                            "100",
+                            Patterns::Double(0),
+                            "Depth D of the foundation below z = 0 (model "
+                            "length unit).");
+          prm.declare_entry(
+            "Contact zone width",
+            "7.5",
+            Patterns::Double(0),
+            "Side Lc of the square [0, Lc]^2 in plan in which the sphere and "
+            "the foundation get nodes at the same (x, y), so that pairs are "
+            "found along the vertical (model length unit). It should exceed "
+            "the contact radius; the elements keep its size Lc/n down to the "
+            "depth Lc and up to the height Lc.");
+          prm.declare_entry(
+            "Elements in contact zone",
+            "6",
+            Patterns::Integer(1, 200),
+            "Number n of equal elements along each side of the contact zone "
+            "(dimensionless).");
+          prm.declare_entry(
+            "Growth ratio",
+            "1.4",
+            Patterns::Double(1, 2),
+            "Ratio of the sizes of neighbouring elements outside the contact "
+            "zone, in plan and in depth (dimensionless, 1 to 2).");
+          prm.declare_entry("Mesh size",
+                            "25",
+                            Patterns::Double(0),
+                            "Largest element size, far from the contact "
+                            "(model length unit).");
+        }
+        prm.leave_subsection();
       }
       prm.leave_subsection();
     }
@@ -553,6 +618,22 @@ namespace fdem
             prm.get_integer("Elements across height");
         }
         prm.leave_subsection();
+
+        prm.enter_subsection("Hertz sphere");
+        {
+          auto &sphere              = hertz_sphere;
+          sphere.radius             = prm.get_double("Radius");
+          sphere.load_height        = prm.get_double("Load height");
+          sphere.cap_half_width     = prm.get_double("Cap half width");
+          sphere.foundation_width   = prm.get_double("Foundation width");
+          sphere.foundation_depth   = prm.get_double("Foundation depth");
+          sphere.contact_zone_width = prm.get_double("Contact zone width");
+          sphere.n_contact_zone_elements =
+            prm.get_integer("Elements in contact zone");
+          sphere.growth_ratio = prm.get_double("Growth ratio");
+          sphere.mesh_size    = prm.get_double("Mesh size");
+        }
+        prm.leave_subsection();
       }
       prm.leave_subsection();
 
@@ -654,6 +735,36 @@ namespace fdem
                   "Geometry/Block on plane/Foundation thickness and overhang: "
                   "must be positive.");
         }
+      else if (source == Source::hertz_sphere)
+        {
+          const std::string path = "Geometry/Hertz sphere/";
+          const auto       &sphere = hertz_sphere;
+          const double      r = sphere.radius, s = sphere.cap_half_width;
+          require(r > 0, path + "Radius: must be positive.");
+          require(sphere.contact_zone_width > 0 &&
+                    sphere.contact_zone_width < s,
+                  path + "Contact zone width: must be positive and smaller "
+                         "than Cap half width.");
+          require(s * std::sqrt(2.0) < r,
+                  path + "Cap half width: S sqrt(2) must be smaller than "
+                         "Radius, so that the sphere's surface spans the "
+                         "square plan.");
+          require(sphere.load_height <= r &&
+                    sphere.load_height >
+                      r - std::sqrt(r * r - 2 * s * s) +
+                        sphere.contact_zone_width,
+                  path + "Load height: must be at most Radius and exceed "
+                         "the height of the sphere's surface at the corner "
+                         "(S, S) of its plan by more than Contact zone "
+                         "width.");
+          require(sphere.foundation_width > s,
+                  path + "Foundation width: must be larger than Cap half "
+                         "width.");
+          require(sphere.foundation_depth > sphere.contact_zone_width,
+                  path + "Foundation depth: must be larger than Contact "
+                         "zone width.");
+          require(sphere.mesh_size > 0, path + "Mesh size: must be positive.");
+        }
     }
 
 
@@ -661,7 +772,8 @@ namespace fdem
     bool
     GeometryParameters::source_is_3d() const
     {
-      return source == Source::wedge || source == Source::block_on_plane;
+      return source == Source::wedge || source == Source::block_on_plane ||
+             source == Source::hertz_sphere;
     }
 
 

@@ -75,6 +75,34 @@ namespace fdem
     make_block_on_plane_mesh(
       const parameters::GeometryParameters::BlockOnPlane &block_on_plane);
 
+    /**
+     * Quarter model (x >= 0, y >= 0) of a sphere of radius R on a
+     * foundation, for Hertz point contact, structured hexahedra. Blocks
+     * "sphere" (the ball of centre (0, 0, R) cut by the planes x = S,
+     * y = S and z = H: points of the ball with x, y in [0, S] and z <= H)
+     * and "foundation" ([0, W] x [0, W] x [-D, 0]); they share the vertex
+     * at the origin.
+     *
+     * Both blocks use the same grid lines in x and y: Lc/n apart on
+     * [0, Lc] (the contact zone), then growing by the growth ratio up to
+     * the mesh size, to S (sphere) and on to W (foundation). The
+     * foundation's layers are Lc/n thick down to z = -Lc, then grow to D;
+     * the sphere's layers follow its surface z = R - sqrt(R^2 - x^2 - y^2)
+     * with the same sizes up to the top z = H. So every node of the
+     * sphere's surface in the contact zone lies straight above a node of
+     * the foundation's top, at the initial gap of the sphere's surface.
+     *
+     * Face groups, in this order: "contact surface" (the sphere's surface
+     * and the foundation's top over [0, Lc]^2), "load" (z = H), "symmetry"
+     * (x = 0 and y = 0, both blocks), "bottom" (z = -D), "sphere surface"
+     * (the rest of the sphere's surface and its faces x = S, y = S),
+     * "foundation surface" (the rest of z = 0) and "foundation side"
+     * (x = W, y = W).
+     */
+    MeshDescription<3>
+    make_hertz_sphere_mesh(
+      const parameters::GeometryParameters::HertzSphere &hertz_sphere);
+
     /** @} */
   } // namespace geometry
 } // namespace fdem

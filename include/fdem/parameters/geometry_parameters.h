@@ -65,7 +65,8 @@ namespace fdem
         hertz,
         inclined_block,
         wedge,
-        block_on_plane
+        block_on_plane,
+        hertz_sphere
       };
 
       /** Shape of the sliding surface of the slope generator. */
@@ -214,6 +215,37 @@ namespace fdem
         rotation() const;
       };
 
+      /**
+       * Subsection "Hertz sphere": a sphere of radius R pressed onto a
+       * foundation (3D), as the quarter model x >= 0, y >= 0 with two
+       * symmetry planes. The sphere touches the foundation's top z = 0 at
+       * the origin; it is truncated by the planes x = S, y = S (free) and
+       * z = H (loaded). Lengths in the user's unit (e.g. mm).
+       */
+      struct HertzSphere
+      {
+        /** Radius R of the sphere. */
+        double radius;
+        /** Height H of the sphere's flat, loaded top above the origin. */
+        double load_height;
+        /** Half width S of the sphere's square plan (x, y <= S). */
+        double cap_half_width;
+        /** Foundation [0, W] x [0, W] x [-D, 0]. */
+        double foundation_width;
+        double foundation_depth;
+        /**
+         * The square [0, Lc]^2 in plan in which both sides have nodes at
+         * the same (x, y), n elements along each side, and the depth and
+         * height Lc under and above it with elements of the same size.
+         */
+        double       contact_zone_width;
+        unsigned int n_contact_zone_elements;
+        /** Ratio of neighbouring element sizes outside that zone. */
+        double growth_ratio;
+        /** Largest element size. */
+        double mesh_size;
+      };
+
       Source source = Source::slope;
       /** The mesh file as written in the .prm file: see mesh_file_path(). */
       std::string mesh_file;
@@ -235,6 +267,7 @@ namespace fdem
       InclinedBlock inclined_block;
       Wedge         wedge;
       BlockOnPlane  block_on_plane;
+      HertzSphere   hertz_sphere;
 
       /** Whether the selected source builds 3D models (only). */
       bool

@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+
+#include <fdem/geometry/generators_3d.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    namespace
+    {
+      /**
+       * Grid lines from @p from to @p to (either direction), after an
+       * element of size @p previous: sizes growing by @p ratio up to
+       * @p max_size, their number the one whose sum comes nearest the
+       * length, then all scaled to fill it exactly.
+       */
+      std::vector<double>
+      graded_lines(const double from,
+                   const double to,
+                   const double previous,
+                   const double ratio,
+                   const double max_size)
+      {
+        const double        length = std::abs(to - from);
+        std::vector<double> sizes;
+        double              sum = 0, size = previous;
+        while (true)
+          {
+            size = std::min(size * ratio, std::max(max_size, previous));
+            if (!sizes.empty() &&
+                std::abs(sum + size - length) > std::abs(sum - length))
+              break;
+            sizes.push_back(size);
+            sum += size;
+          }
+        std::vector<double> lines;
+        double              position = 0;
+        for (unsigned int i = 0; i + 1 < sizes.size(); ++i)
+          {
+            position += sizes[i] * length / sum;
+            lines.push_back(from + (to > from ? position : -position));
+          }
+        lines.push_back(to);
+        return lines;
+      }
+    } // namespace
+
+
+
+    MeshDescription<3>
+    make_hertz_sphere_mesh(
+      const parameters::GeometryParameters::HertzSphere &hertz_sphere)
+    {
+      const auto        &p     = hertz_sphere;
+      const double       r     = p.radius;
+      const double       lc    = p.contact_zone_width;
+      const unsigned int n     = p.n_contact_zone_elements;
+      const double       ratio = p.growth_ratio;
+
+      // Lines in x and y (both blocks): the first n_sphere_xy up to S, all
+      // up to W.
+      std::vector<double> xy;
+      for (unsigned int i = 0; i <= n; ++i)
+        xy.push_back(lc * i / n);
+      const auto append = [&](std::vector<double> &lines, const double to) {
+        const double previous = lines.back() - lines[lines.size() - 2];
+        for (const double x :
+             graded_lines(lines.back(), to, previous, ratio, p.mesh_size))
+          lines.push_back(x);
+      };
+      append(xy, p.cap_half_width);
+      const unsigned int n_sphere_xy = xy.size();
+      append(xy, p.foundation_width);
+      const unsigned int n_xy = xy.size();
+
+      // Depths below z = 0 and heights above the sphere's surface: the
+      // element size Lc/n down to Lc, then growing.
+      std::vector<double> depth;
+      for (unsigned int i = 0; i <= n; ++i)
+        depth.push_back(lc * i / n);
+      append(depth, p.foundation_depth);
+      // The sphere's layers as fractions of its height H - z_s(x, y) over
+      // the axis, where that height is H.
+      std::vector<double> height;
+      for (unsigned int i = 0; i <= n; ++i)
+        height.push_back(lc * i / n);
+      append(height, p.load_height);
+      const auto surface = [&](const double x, const double y) {
+        return r - std::sqrt(r * r - x * x - y * y);
+      };
+
+      MeshDescription<3> mesh;
+      mesh.source           = "Geometry/Hertz sphere";
+      mesh.block_names      = {"sphere", "foundation"};
+      mesh.face_group_names = {"contact surface",
+                               "load",
+                               "symmetry",
+                               "bottom",
+                               "sphere surface",
+                               "foundation surface",
+                               "foundation side"};
+      enum Group
+      {
+        contact_surface,
+        load,
+        symmetry,
+        bottom,
+        sphere_surface,
+        foundation_surface,
+        foundation_side
+      };
+
+      // Foundation vertices (i, j, k) with k = 0 at the bottom.
+      const unsigned int n_depth = depth.size();
+      for (unsigned int k = 0; k < n_depth; ++k)
+        for (unsigned int j = 0; j < n_xy; ++j)
+          for (unsigned int i = 0; i < n_xy; ++i)
+            mesh.vertices.emplace_back(xy[i], xy[j], -depth[n_depth - 1 - k]);
+      const auto foundation_index =
+        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+          return (k * n_xy + j) * n_xy + i;
+        };
+      // Sphere vertices, k = 0 on its surface; the origin is shared.
+      const unsigned int        n_height = height.size();
+      std::vector<unsigned int> sphere_vertex;
+      for (unsigned int k = 0; k < n_height; ++k)
+        for (unsigned int j = 0; j < n_sphere_xy; ++j)
+          for (unsigned int i = 0; i < n_sphere_xy; ++i)
+            {
+              if (i == 0 && j == 0 && k == 0)
+                {
+                  sphere_vertex.push_back(foundation_index(0, 0, n_depth - 1));
+                  continue;
+                }
+              const double z_s = surface(xy[i], xy[j]);
+              const double z =
+                z_s + height[k] / p.load_height * (p.load_height - z_s);
+              sphere_vertex.push_back(mesh.vertices.size());
+              mesh.vertices.emplace_back(xy[i], xy[j], z);
+            }
+      const auto sphere_index =
+        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+          return sphere_vertex[(k * n_sphere_xy + j) * n_sphere_xy + i];
+        };
+
+      // Cells of a grid of n[0] x n[1] x n[2] cells, and their faces on the
+      // grid's boundary: face (d, side) is normal to direction d at the
+      // lower (0) or upper (1) end; group_of(d, side, i, j) names its group.
+      const auto add_grid = [&](const std::array<unsigned int, 3> &n_cells,
+                                const auto                        &index,
+                                const types::material_id           block,
+                                const auto                        &group_of) {
+        for (unsigned int k = 0; k < n_cells[2]; ++k)
+          for (unsigned int j = 0; j < n_cells[1]; ++j)
+            for (unsigned int i = 0; i < n_cells[0]; ++i)
+              {
+                CellData<3> cell;
+                for (unsigned int v = 0; v < 8; ++v)
+                  cell.vertices[v] =
+                    index(i + (v & 1), j + ((v >> 1) & 1), k + (v >> 2));
+                cell.material_id = block;
+                mesh.cells.push_back(cell);
+
+                const std::array<unsigned int, 3> ijk = {{i, j, k}};
+                for (unsigned int d = 0; d < 3; ++d)
+                  for (const unsigned int side : {0u, 1u})
+                    {
+                      if (ijk[d] + side != (side ? n_cells[d] : 0))
+                        continue;
+                      // The face's corners in lexicographic order of the
+                      // other two directions.
+                      const unsigned int a = (d == 0) ? 1 : 0;
+                      const unsigned int c = (d == 2) ? 1 : 2;
+                      CellData<2>        face;
+                      for (unsigned int f = 0; f < 4; ++f)
+                        face.vertices[f] =
+                          cell.vertices[(side << d) | ((f & 1) << a) |
+                                        (((f >> 1) & 1) << c)];
+                      face.boundary_id = group_of(d, side, i, j);
+                      mesh.faces.push_back(face);
+                    }
+              }
+      };
+
+      add_grid({{n_sphere_xy - 1, n_sphere_xy - 1, n_height - 1}},
+               sphere_index,
+               0,
+               [&](const unsigned int d,
+                   const unsigned int side,
+                   const unsigned int i,
+                   const unsigned int j) -> types::boundary_id {
+                 if (d < 2)
+                   return side == 0 ? symmetry : sphere_surface;
+                 if (side == 1)
+                   return load;
+                 return (i < n && j < n) ? contact_surface : sphere_surface;
+               });
+      add_grid({{n_xy - 1, n_xy - 1, n_depth - 1}},
+               foundation_index,
+               1,
+               [&](const unsigned int d,
+                   const unsigned int side,
+                   const unsigned int i,
+                   const unsigned int j) -> types::boundary_id {
+                 if (d < 2)
+                   return side == 0 ? symmetry : foundation_side;
+                 if (side == 0)
+                   return bottom;
+                 return (i < n && j < n) ? contact_surface :
+                                           foundation_surface;
+               });
+      return mesh;
+    }
+  } // namespace geometry
+} // namespace fdem
