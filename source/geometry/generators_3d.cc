@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 
 #include <fdem/geometry/generators_3d.h>
+#include <fdem/geometry/structured_grid.h>
 #include <fdem/geometry/gmsh_mesh.h>
 
 #include <deal.II/base/exceptions.h>
@@ -450,50 +451,6 @@ namespace fdem
           return block_vertex[(k * (n_width + 1) + j) * (n_length + 1) + i];
         };
 
-      // Cells and faces of a structured n[0] x n[1] x n[2] grid of
-      // vertices index(i, j, k). Face (d, side) is the grid's face normal
-      // to direction d at its lower (0) or upper (1) end; group_of() gives
-      // the group of a cell's face there, or none.
-      constexpr unsigned int none = numbers::invalid_unsigned_int;
-      const auto add_grid         = [&](const std::array<unsigned int, 3> &n,
-                                const auto                        &index,
-                                const types::material_id           block,
-                                const auto                        &group_of) {
-        for (unsigned int k = 0; k < n[2]; ++k)
-          for (unsigned int j = 0; j < n[1]; ++j)
-            for (unsigned int i = 0; i < n[0]; ++i)
-              {
-                CellData<3> cell;
-                for (unsigned int v = 0; v < 8; ++v)
-                  cell.vertices[v] =
-                    index(i + (v & 1), j + ((v >> 1) & 1), k + (v >> 2));
-                cell.material_id = block;
-                mesh.cells.push_back(cell);
-
-                const std::array<unsigned int, 3> ijk = {{i, j, k}};
-                for (unsigned int d = 0; d < 3; ++d)
-                  for (const unsigned int side : {0u, 1u})
-                    {
-                      if (ijk[d] + side != (side ? n[d] : 0))
-                        continue;
-                      const unsigned int group = group_of(d, side, i, j);
-                      if (group == none)
-                        continue;
-                      // The face's corners in lexicographic order of the
-                      // other two directions.
-                      const unsigned int a = (d == 0) ? 1 : 0;
-                      const unsigned int c = (d == 2) ? 1 : 2;
-                      CellData<2>        face;
-                      for (unsigned int f = 0; f < 4; ++f)
-                        face.vertices[f] =
-                          cell.vertices[(side << d) | ((f & 1) << a) |
-                                        (((f >> 1) & 1) << c)];
-                      face.boundary_id = group;
-                      mesh.faces.push_back(face);
-                    }
-              }
-      };
-
       enum Group
       {
         sliding_surface,
@@ -502,33 +459,35 @@ namespace fdem
         foundation_base,
         foundation_ends
       };
-      add_grid({{n_length, n_width, n_height}},
-               block_index,
-               0,
-               [&](const unsigned int d,
-                   const unsigned int side,
-                   unsigned int,
-                   unsigned int) {
-                 return (d == 2 && side == 0) ? sliding_surface : block_surface;
-               });
-      add_grid({{n_x - 1, n_y - 1, n_thickness}},
-               foundation_index,
-               1,
-               [&](const unsigned int d,
-                   const unsigned int side,
-                   const unsigned int i,
-                   const unsigned int j) -> unsigned int {
-                 if (d < 2)
-                   return foundation_ends;
-                 if (side == 0)
-                   return foundation_base;
-                 const bool under_block =
-                   i >= n_overhang_x && i < n_overhang_x + n_length &&
-                   j >= n_overhang_y && j < n_overhang_y + n_width;
-                 return under_block ?
-                          none :
-                          static_cast<unsigned int>(foundation_surface);
-               });
+      add_structured_grid(mesh,
+                          {{n_length, n_width, n_height}},
+                          block_index,
+                          0,
+                          [&](const unsigned int d,
+                              const unsigned int side,
+                              unsigned int,
+                              unsigned int) {
+                            return (d == 2 && side == 0) ? sliding_surface : block_surface;
+                          });
+      add_structured_grid(mesh,
+                          {{n_x - 1, n_y - 1, n_thickness}},
+                          foundation_index,
+                          1,
+                          [&](const unsigned int d,
+                              const unsigned int side,
+                              const unsigned int i,
+                              const unsigned int j) -> unsigned int {
+                            if (d < 2)
+                              return foundation_ends;
+                            if (side == 0)
+                              return foundation_base;
+                            const bool under_block =
+                              i >= n_overhang_x && i < n_overhang_x + n_length &&
+                              j >= n_overhang_y && j < n_overhang_y + n_width;
+                            return under_block ?
+                                     no_group :
+                                     static_cast<unsigned int>(foundation_surface);
+                          });
       return mesh;
     }
   } // namespace geometry

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 
 #include <fdem/geometry/generators_3d.h>
+#include <fdem/geometry/structured_grid.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
@@ -152,72 +153,35 @@ namespace fdem
           return sphere_vertex[(k * n_sphere_xy + j) * n_sphere_xy + i];
         };
 
-      // Cells of a grid of n[0] x n[1] x n[2] cells, and their faces on the
-      // grid's boundary: face (d, side) is normal to direction d at the
-      // lower (0) or upper (1) end; group_of(d, side, i, j) names its group.
-      const auto add_grid = [&](const std::array<unsigned int, 3> &n_cells,
-                                const auto                        &index,
-                                const types::material_id           block,
-                                const auto                        &group_of) {
-        for (unsigned int k = 0; k < n_cells[2]; ++k)
-          for (unsigned int j = 0; j < n_cells[1]; ++j)
-            for (unsigned int i = 0; i < n_cells[0]; ++i)
-              {
-                CellData<3> cell;
-                for (unsigned int v = 0; v < 8; ++v)
-                  cell.vertices[v] =
-                    index(i + (v & 1), j + ((v >> 1) & 1), k + (v >> 2));
-                cell.material_id = block;
-                mesh.cells.push_back(cell);
-
-                const std::array<unsigned int, 3> ijk = {{i, j, k}};
-                for (unsigned int d = 0; d < 3; ++d)
-                  for (const unsigned int side : {0u, 1u})
-                    {
-                      if (ijk[d] + side != (side ? n_cells[d] : 0))
-                        continue;
-                      // The face's corners in lexicographic order of the
-                      // other two directions.
-                      const unsigned int a = (d == 0) ? 1 : 0;
-                      const unsigned int c = (d == 2) ? 1 : 2;
-                      CellData<2>        face;
-                      for (unsigned int f = 0; f < 4; ++f)
-                        face.vertices[f] =
-                          cell.vertices[(side << d) | ((f & 1) << a) |
-                                        (((f >> 1) & 1) << c)];
-                      face.boundary_id = group_of(d, side, i, j);
-                      mesh.faces.push_back(face);
-                    }
-              }
-      };
-
-      add_grid({{n_sphere_xy - 1, n_sphere_xy - 1, n_height - 1}},
-               sphere_index,
-               0,
-               [&](const unsigned int d,
-                   const unsigned int side,
-                   const unsigned int i,
-                   const unsigned int j) -> types::boundary_id {
-                 if (d < 2)
-                   return side == 0 ? symmetry : sphere_surface;
-                 if (side == 1)
-                   return load;
-                 return (i < n && j < n) ? contact_surface : sphere_surface;
-               });
-      add_grid({{n_xy - 1, n_xy - 1, n_depth - 1}},
-               foundation_index,
-               1,
-               [&](const unsigned int d,
-                   const unsigned int side,
-                   const unsigned int i,
-                   const unsigned int j) -> types::boundary_id {
-                 if (d < 2)
-                   return side == 0 ? symmetry : foundation_side;
-                 if (side == 0)
-                   return bottom;
-                 return (i < n && j < n) ? contact_surface :
-                                           foundation_surface;
-               });
+      add_structured_grid(mesh,
+                          {{n_sphere_xy - 1, n_sphere_xy - 1, n_height - 1}},
+                          sphere_index,
+                          0,
+                          [&](const unsigned int d,
+                              const unsigned int side,
+                              const unsigned int i,
+                              const unsigned int j) -> types::boundary_id {
+                            if (d < 2)
+                              return side == 0 ? symmetry : sphere_surface;
+                            if (side == 1)
+                              return load;
+                            return (i < n && j < n) ? contact_surface : sphere_surface;
+                          });
+      add_structured_grid(mesh,
+                          {{n_xy - 1, n_xy - 1, n_depth - 1}},
+                          foundation_index,
+                          1,
+                          [&](const unsigned int d,
+                              const unsigned int side,
+                              const unsigned int i,
+                              const unsigned int j) -> types::boundary_id {
+                            if (d < 2)
+                              return side == 0 ? symmetry : foundation_side;
+                            if (side == 0)
+                              return bottom;
+                            return (i < n && j < n) ? contact_surface :
+                                                      foundation_surface;
+                          });
       return mesh;
     }
   } // namespace geometry
