@@ -9,8 +9,11 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
+# libopenblas0-serial: an optimised BLAS/LAPACK for MUMPS and the dense
+# mixed system; Debian's alternatives put it in place of the reference one.
 packages=(cmake make g++ libdeal.ii-dev gmsh libgmsh-dev nlohmann-json3-dev
-          libmumps-dev libgtest-dev numdiff python3-vtk9 python3-numpy python3-matplotlib)
+          libmumps-dev libgtest-dev numdiff python3-vtk9 python3-numpy python3-matplotlib
+          libopenblas0-serial)
 
 missing=()
 for p in "${packages[@]}"; do
