@@ -69,7 +69,9 @@ namespace
     const nlohmann::json &summary = model.summary;
     // Never a NaN where a number is reported.
     if (summary["safety_factor"].is_number())
-      EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>())) << v.name;
+      {
+        EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>())) << v.name;
+      }
     // A converged K always comes from a contact problem that converged.
     if (summary["converged"].get<bool>())
       {

@@ -152,9 +152,13 @@ namespace
     // contact problem that converged.
     const auto &summary = model->summary;
     if (summary["safety_factor"].is_number())
-      EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>()));
+      {
+        EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>()));
+      }
     if (summary["converged"].get<bool>())
-      EXPECT_TRUE(model->contact_outcome.converged());
+      {
+        EXPECT_TRUE(model->contact_outcome.converged());
+      }
     return model;
   }
 
@@ -214,8 +218,10 @@ TEST(StressGaps, UniformGapClosesUnderGravityOrFailsClearly)
       double             exact = 0;
       const auto model = run_uniform_gap(delta, log, &exact);
       if (exact_or_clear_failure(*model, exact, "delta " + std::to_string(delta)))
-        for (const auto &state : model->contact_outcome.states)
-          EXPECT_NE(state.status, contact::PairStatus::open) << "delta " << delta;
+        {
+          for (const auto &state : model->contact_outcome.states)
+            EXPECT_NE(state.status, contact::PairStatus::open) << "delta " << delta;
+        }
     }
 }
 

@@ -30,7 +30,9 @@ namespace
     Model<dim>         model(p, "", log);
     model.run();
     if (model.summary["converged"].template get<bool>())
-      EXPECT_TRUE(model.contact_outcome.converged());
+      {
+        EXPECT_TRUE(model.contact_outcome.converged());
+      }
     return model.summary;
   }
 } // namespace
