@@ -4,8 +4,13 @@
 #   bash bootstrap.sh run [case.prm]   install, build (Release), run a case
 #                                      (default prm/paper_slope.prm)
 #   bash bootstrap.sh test             install, build (Release), run ctest
-# Environment: BUILD_DIR (default build), JOBS (default nproc),
-#   CMAKE_ARGS (extra configure flags, e.g. -DFDEM_SANITIZE=ON).
+#                                      (without the tests labelled heavy)
+#   bash bootstrap.sh heavy            the same, then the heavy tests only
+#   bash bootstrap.sh sanitize         install, build with AddressSanitizer and
+#                                      UndefinedBehaviorSanitizer (Debug, -O1)
+#                                      in build-sanitize, run the whole ctest
+# Environment: BUILD_DIR (default build, build-sanitize for sanitize),
+#   JOBS (default nproc), CMAKE_ARGS (extra configure flags).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -26,19 +31,39 @@ if ((${#missing[@]})); then
   apt-get install -y -qq --no-install-recommends "${missing[@]}" > /dev/null
 fi
 
-build_dir=${BUILD_DIR:-build}
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release ${CMAKE_ARGS:-} > /dev/null
-cmake --build "$build_dir" -j "${JOBS:-$(nproc)}"
+mode=${1:-run}
+jobs=${JOBS:-$(nproc)}
+case "$mode" in
+  run|test|heavy)
+    build_dir=${BUILD_DIR:-build}
+    configure=(-DCMAKE_BUILD_TYPE=Release)
+    ;;
+  sanitize)
+    # deal.II knows only Debug and Release; Debug links its checked library,
+    # and CMakeLists.txt adds -O1 to our code. The test environment
+    # (ASAN/LSAN/UBSAN_OPTIONS, suppressions) is set by tests/CMakeLists.txt.
+    build_dir=${BUILD_DIR:-build-sanitize}
+    configure=(-DCMAKE_BUILD_TYPE=Debug -DFDEM_SANITIZE=ON)
+    ;;
+  *)
+    echo "usage: bash bootstrap.sh run [case.prm] | test | heavy | sanitize" >&2
+    exit 2
+    ;;
+esac
+cmake -S . -B "$build_dir" "${configure[@]}" ${CMAKE_ARGS:-} > /dev/null
+cmake --build "$build_dir" -j "$jobs"
 
-case "${1:-run}" in
+case "$mode" in
   run)
     "$build_dir/fdem-slope" "${2:-prm/paper_slope.prm}"
     ;;
   test)
-    cd "$build_dir" && ctest --output-on-failure -j "${JOBS:-$(nproc)}"
+    cd "$build_dir" && ctest --output-on-failure -j "$jobs" -LE heavy
     ;;
-  *)
-    echo "usage: bash bootstrap.sh run [case.prm] | test" >&2
-    exit 2
+  heavy)
+    cd "$build_dir" && ctest --output-on-failure -j "$jobs" -L heavy
+    ;;
+  sanitize)
+    cd "$build_dir" && ctest --output-on-failure -j "$jobs" --timeout 3600
     ;;
 esac

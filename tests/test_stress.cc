@@ -69,7 +69,9 @@ namespace
     const nlohmann::json &summary = model.summary;
     // Never a NaN where a number is reported.
     if (summary["safety_factor"].is_number())
-      EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>())) << v.name;
+      {
+        EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>())) << v.name;
+      }
     // A converged K always comes from a contact problem that converged.
     if (summary["converged"].get<bool>())
       {
@@ -167,4 +169,112 @@ TEST(StressSuite, FrictionlessPlaneHasNoEquilibrium)
   const auto summary = run_variant(v, &exact);
   EXPECT_FALSE(summary["converged"].get<bool>());
   EXPECT_NE(summary["status"], "completed");
+}
+
+namespace
+{
+  /** The inclined block without tensile strength: its heel pair may open. */
+  parameters::Parameters
+  heel_case(const unsigned int n_along, const double cohesion, const double friction_angle,
+            const double inclination)
+  {
+    auto p = test_support::case_parameters("inclined_block.prm");
+    auto &g                    = p.geometry.inclined_block;
+    g.n_elements_along_length  = n_along;
+    g.n_elements_across_height = n_along / 2;
+    g.inclination              = inclination;
+    auto &i                    = p.interfaces.at("sliding surface");
+    i.cohesion                 = cohesion;
+    i.friction_angle           = friction_angle;
+    i.tensile_strength         = 0;
+    return p;
+  }
+
+  /**
+   * The exact K for the final contact set: an open pair carries nothing and
+   * loses its cohesion; a pair held at the tension cut-off keeps it
+   * (doc/theory.md); equilibrium fixes sum f_n and sum f_t.
+   */
+  double
+  planar_factor_without_open(const Model<2> &model)
+  {
+    const auto & p      = model.parameters;
+    const auto & g      = p.geometry.inclined_block;
+    const auto & i      = p.interfaces.at("sliding surface");
+    const double theta  = g.inclination * PI / 180;
+    const double W      = p.materials.at("block").unit_weight * g.block_length * g.block_height;
+    double       closed = 0;
+    for (unsigned int k = 0; k < model.interfaces[0].pairs.size(); ++k)
+      if (model.contact_outcome.states[k].status != contact::PairStatus::open)
+        closed += model.interfaces[0].pairs[k].area;
+    return (i.cohesion * closed + W * std::cos(theta) * std::tan(i.friction_angle * PI / 180)) /
+           (W * std::sin(theta));
+  }
+} // namespace
+
+TEST(StressSuite, StatusCycleIsDetectedAndBroken)
+{
+  // The block of prm/inclined_block.prm with c = 5 kPa and no tensile
+  // strength. At K = 1 its heel opens, and K* = (c (L - A_heel) + W cos 30
+  // tan 35) / (W sin 30) with A_heel = 0.5. Warm-started from there, the
+  // solve at that K* cycles: the heel closes (penetration) and opens again
+  // (tension). The cycle must be found and broken (the heel held at the
+  // tension cut-off, f_n = sigma_t A = 0, shear strength kept) and the
+  // solve converge.
+  std::ostringstream log;
+  const auto p     = heel_case(10, 5, 35, 30);
+  auto       model = std::make_unique<Model<2>>(p, "", log);
+  model->make_geometry();
+  model->setup_blocks();
+  model->assemble_and_factorize();
+  model->build_interfaces();
+  model->compute_flexibility();
+  model->solve_contact(1.0);
+  ASSERT_TRUE(model->contact_outcome.converged()) << log.str();
+  const double W = 25.0 * 10 * 5, theta = PI / 6;
+  const double K_1 = (5 * (10 - 0.5) + W * std::cos(theta) * std::tan(35 * PI / 180)) /
+                     (W * std::sin(theta));
+  EXPECT_NEAR(planar_factor_without_open(*model), K_1, 1e-12 * K_1);
+  model->solve_contact(K_1);
+  const auto &outcome = model->contact_outcome;
+  ASSERT_TRUE(outcome.converged()) << log.str();
+  EXPECT_GT(outcome.n_cycles_broken, 0u) << log.str();
+  unsigned int n_at_cutoff = 0;
+  for (unsigned int k = 0; k < outcome.states.size(); ++k)
+    if (outcome.states[k].at_cutoff)
+      {
+        ++n_at_cutoff;
+        // f_n = sigma_t A = 0 exactly: the pair's row says so.
+        EXPECT_NEAR(outcome.solution.forces[2 * k], 0.0, 1e-12 * W);
+      }
+  EXPECT_EQ(n_at_cutoff, 1u);
+}
+
+TEST(StressSuite, SafetyFactorThroughStatusCyclesIsExact)
+{
+  // Cases (found by a sweep over c, phi, the inclination and the mesh of
+  // the block without tensile strength) whose safety-factor iteration meets
+  // status cycles. Each must end with the exact K of its final contact set
+  // (to round-off, 1e-8), never a K from a contact problem that failed.
+  struct Case
+  {
+    unsigned int n_along;
+    double       cohesion, friction_angle, inclination;
+  };
+  for (const Case &c : {Case{10, 5, 35, 30}, Case{20, 5, 20, 30}, Case{20, 20, 20, 40},
+                        Case{10, 20, 45, 40}})
+    {
+      const std::string name = std::to_string(c.n_along) + " elements, c " +
+                               std::to_string(c.cohesion) + ", phi " +
+                               std::to_string(c.friction_angle) + ", theta " +
+                               std::to_string(c.inclination);
+      std::ostringstream log;
+      Model<2>           model(heel_case(c.n_along, c.cohesion, c.friction_angle, c.inclination), "", log);
+      model.run();
+      EXPECT_NE(log.str().find("status cycle"), std::string::npos) << name;
+      ASSERT_EQ(model.summary["status"], "completed") << name << "\n" << log.str();
+      ASSERT_TRUE(model.contact_outcome.converged()) << name;
+      const double exact = planar_factor_without_open(model);
+      EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact) << name;
+    }
 }

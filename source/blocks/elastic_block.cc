@@ -243,9 +243,14 @@ namespace fdem
                   ExcMessage("Block '" + name +
                              "': cannot find a support that holds its free "
                              "rigid modes."));
+      // constraints is a copy of the closed Dirichlet constraints: lines
+      // cannot be added to it (close() would return at once and leave them
+      // unsorted; deal.II's debug library stops there). Merge them instead.
+      AffineConstraints<double> support;
       for (const types::global_dof_index dof : support_dofs)
-        constraints.add_line(dof);
-      constraints.close();
+        support.add_line(dof);
+      support.close();
+      constraints.merge(support);
     }
 
     template <int dim>
