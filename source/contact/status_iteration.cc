@@ -162,6 +162,7 @@ namespace fdem
       const unsigned int n_pairs = system.n_pairs();
       ContactOutcome<dim> outcome;
       std::vector<Freeze> frozen(n_pairs);
+      std::vector<bool>   tried_closed(n_pairs, false);
       std::vector<std::vector<PairState<dim>>> history;
 
       // Scales for the checks: forces by the pairs' strengths and loads,
@@ -174,6 +175,34 @@ namespace fdem
           ContactSolution solution = system.solve(states, strengths);
           StatusIterationRecord record;
           record.reciprocal_condition = solution.reciprocal_condition;
+          // With every pair open nothing holds a free block, e.g. one that
+          // starts above its gapped support: close them all (the gaps close
+          // under the load) and let tension reopen them. Once per pair. (With
+          // some pairs closed a singular system is a free mechanism, such as
+          // a rotation about one touching pair: closing every gap there would
+          // force contacts the block never reaches.)
+          const bool all_open =
+            std::all_of(states.begin(), states.end(), [](const PairState<dim> &state) {
+              return state.status == PairStatus::open;
+            });
+          if (!solution.solved && all_open)
+            {
+              unsigned int n_closed = 0;
+              for (unsigned int p = 0; p < n_pairs; ++p)
+                if (states[p].status == PairStatus::open && !tried_closed[p])
+                  {
+                    states[p].status = PairStatus::stick;
+                    tried_closed[p]  = true;
+                    ++n_closed;
+                  }
+              if (n_closed > 0)
+                {
+                  log << "    singular system with open pairs: " << n_closed
+                      << " of them closed to hold the blocks" << std::endl;
+                  history.clear();
+                  continue;
+                }
+            }
           if (!solution.solved)
             {
               outcome.result = ContactResult::singular;
