@@ -153,8 +153,10 @@ namespace
         for (unsigned int r = 0; r < dofs.size(); ++r)
           if (block.constraints.is_constrained(dofs[r]) &&
               block.constraints.get_constraint_entries(dofs[r])->empty())
-            for (unsigned int c = 0; c < dofs.size(); ++c)
-              EXPECT_EQ(C_schur(r, c), 0.0);
+            {
+              for (unsigned int c = 0; c < dofs.size(); ++c)
+                EXPECT_EQ(C_schur(r, c), 0.0);
+            }
 
         // An interior dof is not in the Schur list (the last one: the
         // first may be the one an interface dof was made to follow): solves
@@ -178,7 +180,9 @@ namespace
       }
     EXPECT_GT(n_floating, 0u);
     if (extra_constraint)
-      EXPECT_GT(n_constrained_pair_dofs, 0u);
+      {
+        EXPECT_GT(n_constrained_pair_dofs, 0u);
+      }
   }
 } // namespace
 

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/blocks/direct_solver.h>
 
+#include <fdem/blocks/crs_rows.h>
+
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
@@ -30,25 +32,15 @@ namespace fdem
           const Epetra_CrsMatrix &crs = A.trilinos_matrix();
           DynamicSparsityPattern  dsp(crs.NumMyRows());
           for (int row = 0; row < crs.NumMyRows(); ++row)
-            {
-              int     n_entries;
-              double *values;
-              int *   indices;
-              crs.ExtractMyRowView(row, n_entries, values, indices);
-              for (int e = 0; e < n_entries; ++e)
-                dsp.add(row, crs.GCID(indices[e]));
-            }
+            for_each_entry_in_row(crs, row, [&](const int column, double) {
+              dsp.add(row, column);
+            });
           umfpack_pattern.copy_from(dsp);
           umfpack_matrix.reinit(umfpack_pattern);
           for (int row = 0; row < crs.NumMyRows(); ++row)
-            {
-              int     n_entries;
-              double *values;
-              int *   indices;
-              crs.ExtractMyRowView(row, n_entries, values, indices);
-              for (int e = 0; e < n_entries; ++e)
-                umfpack_matrix.set(row, crs.GCID(indices[e]), values[e]);
-            }
+            for_each_entry_in_row(crs, row, [&](const int column, const double value) {
+              umfpack_matrix.set(row, column, value);
+            });
           umfpack = std::make_unique<SparseDirectUMFPACK>();
           umfpack->factorize(umfpack_matrix);
           return;

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/blocks/mumps_schur_solver.h>
 
+#include <fdem/blocks/crs_rows.h>
+
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/lapack_templates.h>
 
@@ -202,19 +204,11 @@ namespace fdem
       // r_S -= K_SI y_I: the rows of the Schur dofs, interior columns.
       const Epetra_CrsMatrix &crs = matrix->trilinos_matrix();
       for (unsigned int k = 0; k < n_schur; ++k)
-        {
-          int     n_entries;
-          double *values;
-          int *   indices;
-          crs.ExtractMyRowView(schur[k], n_entries, values, indices);
-          for (int e = 0; e < n_entries; ++e)
-            {
-              const int column = crs.GCID(indices[e]);
-              if (schur_index[column] < 0)
-                for (unsigned int c = 0; c < n_rhs; ++c)
-                  r[k + c * n_schur] -= values[e] * b[column + c * n];
-            }
-        }
+        for_each_entry_in_row(crs, schur[k], [&](const int column, const double value) {
+          if (schur_index[column] < 0)
+            for (unsigned int c = 0; c < n_rhs; ++c)
+              r[k + c * n_schur] -= value * b[column + c * n];
+        });
       // x_S = S^{-1} r_S with the Cholesky factor.
       const types::blas_int n_s = n_schur, n_r = n_rhs;
       types::blas_int       info = 0;
@@ -225,19 +219,11 @@ namespace fdem
       // the symmetry K_IS = K_SI^T (the rows of the Schur dofs again).
       std::vector<double> correction(n * n_rhs, 0.0);
       for (unsigned int k = 0; k < n_schur; ++k)
-        {
-          int     n_entries;
-          double *values;
-          int *   indices;
-          crs.ExtractMyRowView(schur[k], n_entries, values, indices);
-          for (int e = 0; e < n_entries; ++e)
-            {
-              const int column = crs.GCID(indices[e]);
-              if (schur_index[column] < 0)
-                for (unsigned int c = 0; c < n_rhs; ++c)
-                  correction[column + c * n] -= values[e] * r[k + c * n_schur];
-            }
-        }
+        for_each_entry_in_row(crs, schur[k], [&](const int column, const double value) {
+          if (schur_index[column] < 0)
+            for (unsigned int c = 0; c < n_rhs; ++c)
+              correction[column + c * n] -= value * r[k + c * n_schur];
+        });
       solve_interior(correction, n_rhs);
       for (std::size_t i = 0; i < n * n_rhs; ++i)
         b[i] += correction[i];
