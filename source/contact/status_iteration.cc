@@ -247,9 +247,15 @@ namespace fdem
                 norm += z[i - 1] * z[i - 1];
               }
             norm = std::sqrt(norm);
-            if (norm == 0)
+            // Beyond the apex of the Mohr-Coulomb cone (tension above c A /
+            // mu, allowed by a larger tensile strength) the capacity is
+            // negative and the force points against d: z says nothing about
+            // the slip there, and turning d by it flips d back and forth.
+            const double capacity = strengths[p].shear_capacity(f[dim * p]);
+            if (capacity <= 0)
+              state.direction_weight = 0; // no tie between e . g_t and e . f_t
+            if (norm == 0 || capacity <= 0)
               return;
-            const double capacity = std::max(strengths[p].shear_capacity(f[dim * p]), 0.0);
             for (unsigned int i = 0; i < dim - 1; ++i)
               state.slip_direction[i] = z[i] / norm;
             state.direction_weight = std::min(capacity / norm, 1.0);
