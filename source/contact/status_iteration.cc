@@ -284,8 +284,11 @@ namespace fdem
                           {
                             state.status           = PairStatus::slip;
                             state.slip_direction   = tangential_direction<dim>(f, p);
-                            state.direction_weight = std::max(strength.shear_capacity(f_n), 0.0) /
-                                                     tangential_norm<dim>(f, p);
+                            // alpha = s/|z| with z = f_t (no slip yet); 0 where
+                            // |f_t| is 0 (a capacity at or below zero).
+                            const double norm = tangential_norm<dim>(f, p);
+                            state.direction_weight =
+                              norm > 0 ? std::max(strength.shear_capacity(f_n), 0.0) / norm : 0.0;
                           }
                       }
                     else

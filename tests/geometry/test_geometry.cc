@@ -124,11 +124,13 @@ namespace
     return found - names.begin();
   }
 
-  std::vector<CellData<1>>
-  faces_of(const MeshDescription<2> &mesh, const std::string &group)
+  /** The faces of group @p group. */
+  template <int dim>
+  std::vector<CellData<dim - 1>>
+  faces_of(const MeshDescription<dim> &mesh, const std::string &group)
   {
-    const unsigned int       id = index_of(mesh.face_group_names, group);
-    std::vector<CellData<1>> faces;
+    const unsigned int             id = index_of(mesh.face_group_names, group);
+    std::vector<CellData<dim - 1>> faces;
     for (const auto &face : mesh.faces)
       if (face.boundary_id == id)
         faces.push_back(face);
@@ -162,14 +164,71 @@ namespace
       mesh.vertices[face.vertices[1]]);
   }
 
+  using Face3 = std::array<unsigned int, 4>;
+
+  Face3
+  sorted_face(const CellData<2> &face)
+  {
+    Face3 key = {
+      {face.vertices[0], face.vertices[1], face.vertices[2], face.vertices[3]}};
+    std::sort(key.begin(), key.end());
+    return key;
+  }
+
+  /** The faces of the cells of @p block (all blocks if it is invalid). */
+  std::set<Face3>
+  cell_faces(const MeshDescription<3> &mesh,
+             const unsigned int        block = numbers::invalid_unsigned_int)
+  {
+    std::set<Face3> faces;
+    for (const auto &cell : mesh.cells)
+      if (block == numbers::invalid_unsigned_int || cell.material_id == block)
+        for (const unsigned int f : GeometryInfo<3>::face_indices())
+          {
+            Face3 key;
+            for (unsigned int v = 0; v < 4; ++v)
+              key[v] =
+                cell.vertices[GeometryInfo<3>::face_to_cell_vertices(f, v)];
+            std::sort(key.begin(), key.end());
+            faces.insert(key);
+          }
+    return faces;
+  }
+
+  /** The cell boundaries of a mesh: edges in 2D, faces in 3D. */
+  std::set<Edge>
+  cell_boundaries(const MeshDescription<2> &mesh)
+  {
+    return cell_edges(mesh);
+  }
+
+  std::set<Face3>
+  cell_boundaries(const MeshDescription<3> &mesh)
+  {
+    return cell_faces(mesh);
+  }
+
+  Edge
+  boundary_key(const CellData<1> &face)
+  {
+    return edge(face.vertices[0], face.vertices[1]);
+  }
+
+  Face3
+  boundary_key(const CellData<2> &face)
+  {
+    return sorted_face(face);
+  }
+
   /**
-   * What every generated 2D mesh must satisfy: the given names in order,
-   * quadrilaterals of positive measure, every block and face group
-   * non-empty, every face an edge of a cell, every vertex used, and
-   * deal.II accepts it as a triangulation.
+   * What every generated mesh must satisfy: the given names in order,
+   * quadrilaterals (2D) or hexahedra (3D) of positive measure, every block
+   * and face group non-empty, every face a face of a cell, every vertex
+   * used, and deal.II accepts it as a triangulation.
    */
+  template <int dim>
   void
-  check_mesh(const MeshDescription<2>       &mesh,
+  check_mesh(const MeshDescription<dim>     &mesh,
              const std::vector<std::string> &blocks,
              const std::vector<std::string> &face_groups)
   {
@@ -180,19 +239,23 @@ namespace
     std::vector<bool> used(mesh.vertices.size());
     for (const auto &cell : mesh.cells)
       {
-        ASSERT_EQ(cell.vertices.size(), 4u);
+        ASSERT_EQ(cell.vertices.size(), GeometryInfo<dim>::vertices_per_cell);
         ASSERT_LT(cell.material_id, blocks.size());
         EXPECT_GT(measure(mesh, cell), 0);
         ++n_cells[cell.material_id];
         for (const unsigned int v : cell.vertices)
           used[v] = true;
       }
-    const std::set<Edge> edges = cell_edges(mesh);
+    const auto boundaries = cell_boundaries(mesh);
     for (const auto &face : mesh.faces)
       {
+        if constexpr (dim == 3)
+          {
+            ASSERT_EQ(face.vertices.size(), 4u);
+          }
         ASSERT_LT(face.boundary_id, face_groups.size());
         ++n_faces[face.boundary_id];
-        EXPECT_TRUE(edges.count(edge(face.vertices[0], face.vertices[1])));
+        EXPECT_TRUE(boundaries.count(boundary_key(face)));
       }
     for (unsigned int b = 0; b < blocks.size(); ++b)
       EXPECT_GT(n_cells[b], 0u) << blocks[b];
@@ -200,10 +263,14 @@ namespace
       EXPECT_GT(n_faces[g], 0u) << face_groups[g];
     EXPECT_EQ(std::count(used.begin(), used.end(), false), 0);
 
-    Triangulation<2> triangulation;
+    Triangulation<dim> triangulation;
     EXPECT_NO_THROW(triangulation.create_triangulation(mesh.vertices,
                                                        mesh.cells,
                                                        SubCellData()));
+    if constexpr (dim == 3)
+      {
+        EXPECT_EQ(triangulation.n_active_cells(), mesh.cells.size());
+      }
   }
 
   /**
@@ -1088,48 +1155,6 @@ TEST(GeometryParameters, MeshFilePath)
 
 namespace
 {
-  using Face3 = std::array<unsigned int, 4>;
-
-  Face3
-  sorted_face(const CellData<2> &face)
-  {
-    Face3 key = {
-      {face.vertices[0], face.vertices[1], face.vertices[2], face.vertices[3]}};
-    std::sort(key.begin(), key.end());
-    return key;
-  }
-
-  /** The faces of the cells of @p block (all blocks if it is invalid). */
-  std::set<Face3>
-  cell_faces(const MeshDescription<3> &mesh,
-             const unsigned int        block = numbers::invalid_unsigned_int)
-  {
-    std::set<Face3> faces;
-    for (const auto &cell : mesh.cells)
-      if (block == numbers::invalid_unsigned_int || cell.material_id == block)
-        for (const unsigned int f : GeometryInfo<3>::face_indices())
-          {
-            Face3 key;
-            for (unsigned int v = 0; v < 4; ++v)
-              key[v] =
-                cell.vertices[GeometryInfo<3>::face_to_cell_vertices(f, v)];
-            std::sort(key.begin(), key.end());
-            faces.insert(key);
-          }
-    return faces;
-  }
-
-  std::vector<CellData<2>>
-  faces_of(const MeshDescription<3> &mesh, const std::string &group)
-  {
-    const unsigned int       id = index_of(mesh.face_group_names, group);
-    std::vector<CellData<2>> faces;
-    for (const auto &face : mesh.faces)
-      if (face.boundary_id == id)
-        faces.push_back(face);
-    return faces;
-  }
-
   /** Area of a plane quadrilateral face (two triangles). */
   double
   area(const MeshDescription<3> &mesh, const CellData<2> &face)
@@ -1140,52 +1165,6 @@ namespace
                    &p3 = mesh.vertices[face.vertices[3]];
     return 0.5 * cross_product_3d(p1 - p0, p3 - p0).norm() +
            0.5 * cross_product_3d(p3 - p0, p2 - p0).norm();
-  }
-
-  /**
-   * What every generated 3D mesh must satisfy: the given names in order,
-   * hexahedra of positive measure, every block and face group non-empty,
-   * every face a face of a cell, every vertex used, and deal.II accepts it
-   * as a triangulation.
-   */
-  void
-  check_mesh(const MeshDescription<3>       &mesh,
-             const std::vector<std::string> &blocks,
-             const std::vector<std::string> &face_groups)
-  {
-    EXPECT_EQ(mesh.block_names, blocks);
-    EXPECT_EQ(mesh.face_group_names, face_groups);
-    std::vector<unsigned int> n_cells(blocks.size()),
-      n_faces(face_groups.size());
-    std::vector<bool> used(mesh.vertices.size());
-    for (const auto &cell : mesh.cells)
-      {
-        ASSERT_EQ(cell.vertices.size(), 8u);
-        ASSERT_LT(cell.material_id, blocks.size());
-        EXPECT_GT(measure(mesh, cell), 0);
-        ++n_cells[cell.material_id];
-        for (const unsigned int v : cell.vertices)
-          used[v] = true;
-      }
-    const std::set<Face3> faces = cell_faces(mesh);
-    for (const auto &face : mesh.faces)
-      {
-        ASSERT_EQ(face.vertices.size(), 4u);
-        ASSERT_LT(face.boundary_id, face_groups.size());
-        ++n_faces[face.boundary_id];
-        EXPECT_TRUE(faces.count(sorted_face(face)));
-      }
-    for (unsigned int b = 0; b < blocks.size(); ++b)
-      EXPECT_GT(n_cells[b], 0u) << blocks[b];
-    for (unsigned int g = 0; g < face_groups.size(); ++g)
-      EXPECT_GT(n_faces[g], 0u) << face_groups[g];
-    EXPECT_EQ(std::count(used.begin(), used.end(), false), 0);
-
-    Triangulation<3> triangulation;
-    EXPECT_NO_THROW(triangulation.create_triangulation(mesh.vertices,
-                                                       mesh.cells,
-                                                       SubCellData()));
-    EXPECT_EQ(triangulation.n_active_cells(), mesh.cells.size());
   }
 
   /**

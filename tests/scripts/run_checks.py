@@ -169,25 +169,12 @@ def check_deterministic(exe, prm):
     assert texts[0] == texts[1], "two runs of the same input differ"
 
 
-def read_prm(prm):
-    """The entries of a .prm file as {"Section/Sub/Entry": "value"}."""
-    entries, path = {}, []
-    for line in open(prm):
-        words = line.split("#")[0].strip()
-        if words.startswith("subsection "):
-            path.append(words[len("subsection "):].strip())
-        elif words == "end":
-            path.pop()
-        elif words.startswith("set "):
-            key, value = words[4:].split("=", 1)
-            entries["/".join(path + [key.strip()])] = value.strip()
-    return entries
-
-
 def check_wedge(exe, prm, tolerance="1e-5"):
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    here = os.path.dirname(os.path.abspath(__file__))
+    sys.path[:0] = [here, os.path.join(here, "..", "..", "benchmarks")]
+    from common import parse_prm  # benchmarks/common.py
     from wedge_reference import safety_factor
-    entries = read_prm(prm)
+    entries = parse_prm(open(prm).read())
     with tempfile.TemporaryDirectory() as workdir:
         result = run(exe, prm, workdir)
         assert result.returncode == 0, result.stderr

@@ -65,13 +65,6 @@ namespace fdem
       std::array<double, dim - 1> slip_direction{};
       bool                        at_cutoff        = false;
       double                      direction_weight = 0;
-
-      bool
-      operator==(const PairState &other) const
-      {
-        return status == other.status && at_cutoff == other.at_cutoff &&
-               slip_direction == other.slip_direction;
-      }
     };
   } // namespace contact
 } // namespace fdem
