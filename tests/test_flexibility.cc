@@ -202,10 +202,8 @@ TEST(Flexibility, SchurEqualsSolves3D)
                                                 "/tests/three_d/block_on_plane_3d.prm");
   parameters.geometry.mesh_file =
     std::string(FDEM_SOURCE_DIR) + "/tests/data/block_on_plane_3d.geo";
-  parameters.output.directory =
-    (std::filesystem::temp_directory_path() / "fdem-test-flexibility-3d").string();
+  parameters.output.directory = test_support::test_directory("flexibility-3d");
   parameters.output.write_vtu = false;
-  std::filesystem::create_directories(parameters.output.directory);
   check_flexibility<3>(parameters, true);
 }
 

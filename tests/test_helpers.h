@@ -4,6 +4,8 @@
 
 #include <fdem/model.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -13,16 +15,28 @@ namespace fdem
 {
   namespace test_support
   {
+    /**
+     * A folder of the temporary directory for output named @p name, unique
+     * to this process: ctest runs each test in its own process, several at
+     * once, and two tests writing one summary.json collide.
+     */
+    inline std::string
+    test_directory(const std::string &name)
+    {
+      const auto directory = std::filesystem::temp_directory_path() /
+                             ("fdem-test-" + name + "-" + std::to_string(getpid()));
+      std::filesystem::create_directories(directory);
+      return directory.string();
+    }
+
     /** Parameters of prm/<name>, writing into a fresh folder of the test's. */
     inline parameters::Parameters
     case_parameters(const std::string &name)
     {
       parameters::Parameters parameters =
         parameters::read_parameters(std::string(FDEM_SOURCE_DIR) + "/prm/" + name);
-      parameters.output.directory =
-        (std::filesystem::temp_directory_path() / ("fdem-test-" + name)).string();
+      parameters.output.directory = test_directory(name);
       parameters.output.write_vtu = false;
-      std::filesystem::create_directories(parameters.output.directory);
       return parameters;
     }
 

@@ -98,9 +98,8 @@ namespace
   {
     parameters::Parameters p;
     p.case_name        = name;
-    p.output.directory = (std::filesystem::temp_directory_path() / ("fdem-test-gaps-" + name)).string();
+    p.output.directory = test_support::test_directory("gaps-" + name);
     p.output.write_vtu = false;
-    std::filesystem::create_directories(p.output.directory);
     p.geometry.source    = parameters::GeometryParameters::Source::mesh_file;
     p.geometry.mesh_file = write_geo(gaps, p.output.directory);
     const double theta   = inclination * PI / 180;

@@ -85,8 +85,7 @@ TEST(StressHeavy, PlanarOracleOnThreeDBlocks)
                                std::to_string(v.poissons_ratio) + ", " +
                                std::to_string(v.n_along) + "x" + std::to_string(v.n_width) +
                                "x" + std::to_string(v.n_height);
-      const auto directory = std::filesystem::temp_directory_path() / "fdem-test-heavy-3d";
-      std::filesystem::create_directories(directory);
+      const std::filesystem::path directory = test_support::test_directory("heavy-3d");
       const std::string prm = (directory / "block_on_plane.prm").string();
       std::ofstream(prm) << "set Dimension = 3\n"
                          << "subsection Geometry\n  set Source = block on plane\n"

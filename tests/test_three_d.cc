@@ -45,9 +45,8 @@ namespace
     interface.friction_angle                   = phi;
     interface.cohesion                         = cohesion;
     interface.tensile_strength                 = 1e3;
-    p.output.directory = (std::filesystem::temp_directory_path() / "fdem-test-3d").string();
+    p.output.directory = test_support::test_directory("3d");
     p.output.write_vtu = false;
-    std::filesystem::create_directories(p.output.directory);
     return p;
   }
 } // namespace
