@@ -9,6 +9,8 @@
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_cost.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <algorithm>
 #include <iomanip>
 #include <numeric>
@@ -39,6 +41,7 @@ namespace fdem
     : parameters(parameters)
     , expanded_parameters(expanded_parameters)
     , log(log)
+    , writes_files(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(log, TimerOutput::never, TimerOutput::wall_times)
   {}
 
@@ -47,13 +50,14 @@ namespace fdem
   Model<dim>::run()
   {
     const std::string directory = parameters.output_directory();
-    std::filesystem::create_directories(directory);
-    // A summary.json left from an earlier run must not pass for this one.
-    std::filesystem::remove(directory + "/summary.json");
-    {
-      std::ofstream out(directory + "/parameters.prm");
-      out << expanded_parameters;
-    }
+    if (writes_files)
+      {
+        std::filesystem::create_directories(directory);
+        // A summary.json left from an earlier run must not pass for this one.
+        std::filesystem::remove(directory + "/summary.json");
+        std::ofstream out(directory + "/parameters.prm");
+        out << expanded_parameters;
+      }
 
     // A progress line at the start of each phase: on a long run the screen
     // says what the program is doing and how long it has taken so far.
@@ -112,7 +116,8 @@ namespace fdem
   Model<dim>::make_geometry()
   {
     TimerOutput::Scope scope(timer, "geometry");
-    const std::string  msh = parameters.output_directory() + "/mesh.msh";
+    // Every rank makes the same mesh; rank 0 writes it.
+    const std::string  msh = writes_files ? parameters.output_directory() + "/mesh.msh" : "";
     mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh);
 
     // Every block of the mesh needs a material, and every name a block.
@@ -410,6 +415,7 @@ namespace fdem
       // Each step with a static solution can be looked at in ParaView.
       if (solution.converged && parameters.output.write_vtu)
         {
+          // Both collective: every rank comes here, rank 0 writes.
           recover_block_displacements();
           TimerOutput::Scope scope(timer, "output");
           const unsigned int step = step_files.empty() ? 0 : step_files.back().time + 1;
@@ -500,14 +506,15 @@ namespace fdem
 
     // Without equilibrium there is no field to show: only the summary says why.
     const bool converged = contact_outcome.converged();
-    if (converged)
+    if (converged && writes_files)
       postprocess::write_interface_csv(directory + "/interfaces.csv", interfaces, results);
     if (converged && parameters.output.write_vtu)
       {
         std::vector<postprocess::PvdEntry> entries;
-        write_vtu("", 0, entries);
-        postprocess::write_pvd(directory + "/solution.pvd", entries);
-        if (!step_files.empty())
+        write_vtu("", 0, entries); // collective, rank 0 writes
+        if (writes_files)
+          postprocess::write_pvd(directory + "/solution.pvd", entries);
+        if (!step_files.empty() && writes_files)
           postprocess::write_pvd(directory + "/safety_factor_steps.pvd", step_files);
       }
     // Reactions at the minimal support, zero at equilibrium: a pass over all
@@ -526,6 +533,7 @@ namespace fdem
     summary["case"]        = parameters.case_name;
     summary["dimension"]   = dim;
     summary["fe_degree"]   = parameters.fe_degree;
+    summary["n_mpi_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     unsigned int n_dofs    = 0;
     summary["blocks"]      = nlohmann::json::array();
     for (unsigned int b = 0; b < blocks.size(); ++b)
@@ -643,7 +651,8 @@ namespace fdem
       summary["status"] = "safety factor not converged: " + safety_factor_result.reason;
     else
       summary["status"] = "completed";
-    postprocess::write_json(directory + "/summary.json", summary);
+    if (writes_files)
+      postprocess::write_json(directory + "/summary.json", summary);
     log << "Results in " << directory << "/" << std::endl;
   }
 

@@ -84,7 +84,8 @@ namespace fdem
     recover_block_displacements();
     /**
      * VTU/PVD, interface CSV, summary.json (with the wall time of each phase
-     * and the peak memory).
+     * and the peak memory, of rank 0, and the number of MPI ranks). Only
+     * rank 0 writes; every rank gets the summary.
      */
     void
     output_results();
@@ -123,6 +124,12 @@ namespace fdem
 
     std::string   expanded_parameters;
     std::ostream &log;
+    /**
+     * Whether this process writes the output files: rank 0 of
+     * MPI_COMM_WORLD. The other ranks compute the same results and write
+     * nothing.
+     */
+    const bool writes_files;
     /**
      * Wall time of the phases of a run, one section each and none nested so
      * that they add up: summary.json's "timings" and the table at the end.

@@ -5,6 +5,7 @@
 #include <fdem/blocks/crs_rows.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <Amesos.h>
@@ -12,6 +13,8 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
+
+#include <algorithm>
 
 namespace fdem
 {
@@ -29,6 +32,10 @@ namespace fdem
       matrix = &A;
       if (solver_type == "UMFPACK")
         {
+          AssertThrow(Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) == 1,
+                      ExcMessage("Solver/Direct solver: UMFPACK runs on one MPI "
+                                 "rank only; with mpirun use MUMPS_Schur, MUMPS, "
+                                 "Amesos_Mumps or Amesos_Klu."));
           const Epetra_CrsMatrix &crs = A.trilinos_matrix();
           DynamicSparsityPattern  dsp(crs.NumMyRows());
           for (int row = 0; row < crs.NumMyRows(); ++row)
@@ -88,18 +95,34 @@ namespace fdem
                              "stiffness matrix failed."));
     }
 
+    void
+    DirectSolver::solve(std::vector<double> &b, const unsigned int n_rhs) const
+    {
+      const Epetra_Map & map     = matrix->trilinos_matrix().DomainMap();
+      const std::size_t  n       = matrix->m();
+      const int          n_local = map.NumMyElements();
+      Epetra_MultiVector rhs(map, n_rhs), x(map, n_rhs);
+      for (unsigned int c = 0; c < n_rhs; ++c)
+        for (int i = 0; i < n_local; ++i)
+          rhs[c][i] = b[map.GID(i) + c * n];
+      solve(x, rhs);
+      const MPI_Comm comm = matrix->get_mpi_communicator();
+      if (Utilities::MPI::n_mpi_processes(comm) > 1)
+        std::fill(b.begin(), b.end(), 0.0);
+      for (unsigned int c = 0; c < n_rhs; ++c)
+        for (int i = 0; i < n_local; ++i)
+          b[map.GID(i) + c * n] = x[c][i];
+      // Each entry comes from the one rank that owns it: the sum is exact.
+      if (Utilities::MPI::n_mpi_processes(comm) > 1)
+        Utilities::MPI::sum(ArrayView<const double>(b), comm, ArrayView<double>(b));
+    }
+
     Vector<double>
     DirectSolver::solve(const Vector<double> &b) const
     {
-      const Epetra_Map  &map = matrix->trilinos_matrix().DomainMap();
-      Epetra_MultiVector rhs(map, 1), x(map, 1);
-      for (unsigned int i = 0; i < b.size(); ++i)
-        rhs[0][i] = b[i];
-      solve(x, rhs);
-      Vector<double> result(b.size());
-      for (unsigned int i = 0; i < b.size(); ++i)
-        result[i] = x[0][i];
-      return result;
+      std::vector<double> x(b.begin(), b.end());
+      solve(x, 1);
+      return Vector<double>(x.begin(), x.end());
     }
   } // namespace blocks
 } // namespace fdem

@@ -9,9 +9,8 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
-
-#include <Epetra_MultiVector.h>
 
 #include <algorithm>
 #include <set>
@@ -28,6 +27,10 @@ namespace fdem
       const std::map<unsigned int, parameters::MaterialParameters> &materials,
       const unsigned int                                              fe_degree)
       : name(name)
+      , triangulation(MPI_COMM_WORLD,
+                      Triangulation<dim>::none,
+                      /*allow_artificial_cells=*/false,
+                      parallel::shared::Triangulation<dim>::partition_metis)
       , fe(FE_Q<dim>(fe_degree), dim)
       , mapping(1)
       , materials(materials)
@@ -357,22 +360,33 @@ namespace fdem
       const std::string &               solver_type)
     {
       loads = load_parameters;
-      const auto start = std::chrono::steady_clock::now();
+      const auto     start    = std::chrono::steady_clock::now();
+      const MPI_Comm comm     = triangulation.get_communicator();
+      const bool     parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
+      const IndexSet &owned   = dof_handler.locally_owned_dofs();
+      // The pattern of this rank's cells; rows other ranks own go to them.
       DynamicSparsityPattern dsp(dof_handler.n_dofs());
       DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-      stiffness_matrix.reinit(dsp);
+      if (parallel)
+        SparsityTools::distribute_sparsity_pattern(dsp, owned, comm,
+                                                   complete_index_set(dof_handler.n_dofs()));
+      stiffness_matrix.reinit(owned, owned, dsp, comm);
       load_vector.reinit(dof_handler.n_dofs());
 
       CellScratch scratch(mapping, fe);
       for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          assemble_cell(cell, scratch);
-          cell->get_dof_indices(scratch.dofs);
-          constraints.distribute_local_to_global(scratch.matrix,
-                                                 scratch.dofs,
-                                                 stiffness_matrix);
-          load_vector.add(scratch.dofs, scratch.rhs);
-        }
+        if (cell->is_locally_owned())
+          {
+            assemble_cell(cell, scratch);
+            cell->get_dof_indices(scratch.dofs);
+            constraints.distribute_local_to_global(scratch.matrix,
+                                                   scratch.dofs,
+                                                   stiffness_matrix);
+            load_vector.add(scratch.dofs, scratch.rhs);
+          }
+      // F on every rank: the sum of the ranks' cells.
+      if (parallel)
+        Utilities::MPI::sum(load_vector, comm, load_vector);
       stiffness_matrix.compress(VectorOperation::add);
       const auto assembled = std::chrono::steady_clock::now();
       assembly_seconds = std::chrono::duration<double>(assembled - start).count();
@@ -434,20 +448,9 @@ namespace fdem
                                      const unsigned int   n_rhs) const
     {
       if (mumps_solver)
-        {
-          mumps_solver->solve(b, n_rhs);
-          return;
-        }
-      const Epetra_Map & map = stiffness_matrix.trilinos_matrix().DomainMap();
-      const unsigned int n   = dof_handler.n_dofs();
-      Epetra_MultiVector rhs(map, n_rhs), x(map, n_rhs);
-      for (unsigned int c = 0; c < n_rhs; ++c)
-        for (unsigned int i = 0; i < n; ++i)
-          rhs[c][i] = b[i + std::size_t(c) * n];
-      direct_solver->solve(x, rhs);
-      for (unsigned int c = 0; c < n_rhs; ++c)
-        for (unsigned int i = 0; i < n; ++i)
-          b[i + std::size_t(c) * n] = x[c][i];
+        mumps_solver->solve(b, n_rhs);
+      else
+        direct_solver->solve(b, n_rhs);
     }
 
     template <int dim>

@@ -5,12 +5,14 @@
 #include <fdem/blocks/crs_rows.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/lapack_templates.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
 #include <mpi.h>
 
+#include <algorithm>
 #include <string>
 
 namespace fdem
@@ -64,14 +66,51 @@ namespace fdem
                                 ").")));
     }
 
+    namespace
+    {
+      /**
+       * The concatenation over the ranks of @p comm of each rank's @p local
+       * (rank 0's first), on every rank.
+       */
+      template <typename T>
+      std::vector<T>
+      all_gather_concatenated(const MPI_Comm comm, const std::vector<T> &local)
+      {
+        const int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+        const int size    = local.size();
+        std::vector<int> sizes(n_ranks), offsets(n_ranks, 0);
+        int ierr = MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm);
+        AssertThrowMPI(ierr);
+        for (int r = 1; r < n_ranks; ++r)
+          offsets[r] = offsets[r - 1] + sizes[r - 1];
+        std::vector<T> all(offsets.back() + sizes.back());
+        const MPI_Datatype type =
+          Utilities::MPI::internal::MPIDataTypes::mpi_type_id(static_cast<const T *>(nullptr));
+        ierr = MPI_Allgatherv(local.data(), size, type, all.data(), sizes.data(),
+                              offsets.data(), type, comm);
+        AssertThrowMPI(ierr);
+        return all;
+      }
+
+      /** Broadcasts @p data (same size on every rank) from rank 0. */
+      void
+      broadcast_from_host(const MPI_Comm comm, double *data, const std::size_t size)
+      {
+        Utilities::MPI::broadcast(data, size, 0, comm);
+      }
+    } // namespace
+
     void
     MumpsSchurSolver::factorize(const TrilinosWrappers::SparseMatrix &A,
                                 const std::vector<types::global_dof_index> &schur_dofs)
     {
       matrix = &A;
       schur  = schur_dofs;
+      communicator = A.get_mpi_communicator();
+      n_ranks      = Utilities::MPI::n_mpi_processes(communicator);
+      const bool              host = Utilities::MPI::this_mpi_process(communicator) == 0;
       const Epetra_CrsMatrix &crs = A.trilinos_matrix();
-      const int               n   = crs.NumMyRows();
+      const int               n   = A.m();
       schur_index.assign(n, -1);
       for (unsigned int k = 0; k < schur.size(); ++k)
         {
@@ -79,17 +118,19 @@ namespace fdem
           schur_index[schur[k]] = k;
         }
 
-      // The upper triangle in coordinates (1-based): MUMPS sums duplicates,
-      // so a symmetric matrix is given once.
+      // The upper triangle of the rows this rank owns in coordinates
+      // (1-based): MUMPS sums duplicates, so a symmetric matrix is given
+      // once. With one rank, all rows, in the order of the rows.
       data->rows.clear();
       data->columns.clear();
       data->values.clear();
-      for (int row = 0; row < n; ++row)
+      for (int local_row = 0; local_row < crs.NumMyRows(); ++local_row)
         {
+          const int row = crs.GRID(local_row);
           int     n_entries;
           double *values;
           int *   indices;
-          crs.ExtractMyRowView(row, n_entries, values, indices);
+          crs.ExtractMyRowView(local_row, n_entries, values, indices);
           for (int e = 0; e < n_entries; ++e)
             {
               const int column = crs.GCID(indices[e]);
@@ -102,6 +143,42 @@ namespace fdem
             }
         }
 
+      // The rows of the Schur dofs, on every rank: the solves need K_SI.
+      {
+        std::vector<int>    local_rows, local_columns;
+        std::vector<double> local_values;
+        for (unsigned int k = 0; k < schur.size(); ++k)
+          if (crs.MyGRID(static_cast<int>(schur[k])))
+            for_each_entry_in_row(crs, crs.LRID(static_cast<int>(schur[k])),
+                                  [&](const int column, const double value) {
+                                    local_rows.push_back(k);
+                                    local_columns.push_back(column);
+                                    local_values.push_back(value);
+                                  });
+        std::vector<int>    all_rows    = local_rows;
+        if (n_ranks > 1)
+          {
+            all_rows          = all_gather_concatenated(communicator, local_rows);
+            local_columns     = all_gather_concatenated(communicator, local_columns);
+            local_values      = all_gather_concatenated(communicator, local_values);
+          }
+        // Counting sort by row, keeping each row's entries in their order.
+        schur_row_start.assign(schur.size() + 1, 0);
+        for (const int k : all_rows)
+          ++schur_row_start[k + 1];
+        for (unsigned int k = 0; k < schur.size(); ++k)
+          schur_row_start[k + 1] += schur_row_start[k];
+        std::vector<std::size_t> next(schur_row_start.begin(), schur_row_start.end() - 1);
+        schur_row_columns.resize(all_rows.size());
+        schur_row_values.resize(all_rows.size());
+        for (std::size_t e = 0; e < all_rows.size(); ++e)
+          {
+            const std::size_t position  = next[all_rows[e]]++;
+            schur_row_columns[position] = local_columns[e];
+            schur_row_values[position]  = local_values[e];
+          }
+      }
+
       DMUMPS_STRUC_C &id = data->id;
       if (data->initialized)
         {
@@ -109,8 +186,8 @@ namespace fdem
           dmumps_c(&id);
         }
       id              = DMUMPS_STRUC_C{};
-      id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
-      id.par          = 1;
+      id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(communicator));
+      id.par          = 1; // the host works too
       id.sym          = 1; // symmetric positive definite: L D L^T, no pivoting
       run(-1, "initialisation");
       data->initialized = true;
@@ -120,11 +197,23 @@ namespace fdem
       icntl(id, 3) = -1;
       icntl(id, 4) = 0;
 
-      id.n   = n;
-      id.nnz = data->values.size();
-      id.irn = data->rows.data();
-      id.jcn = data->columns.data();
-      id.a   = data->values.data();
+      id.n = n;
+      if (n_ranks == 1)
+        {
+          id.nnz = data->values.size();
+          id.irn = data->rows.data();
+          id.jcn = data->columns.data();
+          id.a   = data->values.data();
+        }
+      else
+        {
+          // Distributed assembled matrix: each rank its own entries.
+          icntl(id, 18) = 3;
+          id.nnz_loc    = data->values.size();
+          id.irn_loc    = data->rows.data();
+          id.jcn_loc    = data->columns.data();
+          id.a_loc      = data->values.data();
+        }
 
       const unsigned int n_schur = schur.size();
       if (n_schur > 0)
@@ -132,12 +221,13 @@ namespace fdem
           data->schur_list.resize(n_schur);
           for (unsigned int k = 0; k < n_schur; ++k)
             data->schur_list[k] = schur[k] + 1;
-          data->schur.assign(static_cast<std::size_t>(n_schur) * n_schur, 0.0);
+          if (host)
+            data->schur.assign(static_cast<std::size_t>(n_schur) * n_schur, 0.0);
           // Centralised Schur complement on the host, n_S x n_S.
           icntl(id, 19)    = 1;
           id.size_schur    = n_schur;
           id.listvar_schur = data->schur_list.data();
-          id.schur         = data->schur.data();
+          id.schur         = host ? data->schur.data() : nullptr;
         }
       run(4, "analysis and factorisation");
 
@@ -147,17 +237,26 @@ namespace fdem
       // upper triangle and mirror it.
       if (n_schur > 0)
         {
-          std::vector<double> &S = data->schur;
-          for (unsigned int j = 0; j < n_schur; ++j)
-            for (unsigned int i = 0; i < j; ++i)
-              S[j + std::size_t(i) * n_schur] = S[i + std::size_t(j) * n_schur];
-          // Cholesky factor of S: with MUMPS's factor of K_II, a complete
-          // factorisation of K.
-          schur_factor.swap(S);
-          std::vector<double>().swap(S);
-          const types::blas_int n_s = n_schur;
-          types::blas_int       info = 0;
-          potrf("L", &n_s, schur_factor.data(), &n_s, &info);
+          types::blas_int info = 0;
+          if (host)
+            {
+              std::vector<double> &S = data->schur;
+              for (unsigned int j = 0; j < n_schur; ++j)
+                for (unsigned int i = 0; i < j; ++i)
+                  S[j + std::size_t(i) * n_schur] = S[i + std::size_t(j) * n_schur];
+              // Cholesky factor of S: with MUMPS's factor of K_II, a complete
+              // factorisation of K.
+              schur_factor.swap(S);
+              std::vector<double>().swap(S);
+              const types::blas_int n_s = n_schur;
+              potrf("L", &n_s, schur_factor.data(), &n_s, &info);
+            }
+          if (n_ranks > 1)
+            {
+              info = Utilities::MPI::broadcast(communicator, info, 0);
+              schur_factor.resize(std::size_t(n_schur) * n_schur);
+              broadcast_from_host(communicator, schur_factor.data(), schur_factor.size());
+            }
           AssertThrow(info == 0,
                       ExcMessage("The Schur complement of a block stiffness matrix "
                                  "on its interface dofs is not positive definite: "
@@ -177,7 +276,10 @@ namespace fdem
       id.nrhs         = n_rhs;
       id.lrhs         = id.n;
       icntl(id, 26)   = 0; // the interior problem only, x_S = 0
+      // Rank 0's right-hand sides in, the solutions out on rank 0.
       run(3, "solution");
+      if (n_ranks > 1)
+        broadcast_from_host(communicator, b.data(), n * n_rhs);
       for (unsigned int c = 0; c < n_rhs; ++c)
         for (const auto dof : schur)
           b[dof + c * n] = 0;
@@ -202,9 +304,8 @@ namespace fdem
       solve_interior(b, n_rhs);
 
       // r_S -= K_SI y_I: the rows of the Schur dofs, interior columns.
-      const Epetra_CrsMatrix &crs = matrix->trilinos_matrix();
       for (unsigned int k = 0; k < n_schur; ++k)
-        for_each_entry_in_row(crs, schur[k], [&](const int column, const double value) {
+        for_each_entry_in_schur_row(k, [&](const int column, const double value) {
           if (schur_index[column] < 0)
             for (unsigned int c = 0; c < n_rhs; ++c)
               r[k + c * n_schur] -= value * b[column + c * n];
@@ -219,7 +320,7 @@ namespace fdem
       // the symmetry K_IS = K_SI^T (the rows of the Schur dofs again).
       std::vector<double> correction(n * n_rhs, 0.0);
       for (unsigned int k = 0; k < n_schur; ++k)
-        for_each_entry_in_row(crs, schur[k], [&](const int column, const double value) {
+        for_each_entry_in_schur_row(k, [&](const int column, const double value) {
           if (schur_index[column] < 0)
             for (unsigned int c = 0; c < n_rhs; ++c)
               correction[column + c * n] -= value * r[k + c * n_schur];

@@ -92,6 +92,10 @@ namespace fdem
       const StressPostprocessor<dim> stress(block.materials);
       DataOut<dim>                   data_out;
       data_out.attach_dof_handler(block.dof_handler);
+      // All cells, not only this rank's: the block's triangulation is
+      // shared, and rank 0 writes the whole block.
+      data_out.set_cell_selection(
+        [](const typename Triangulation<dim>::cell_iterator &cell) { return cell->is_active(); });
       const std::vector<DataComponentInterpretation::DataComponentInterpretation>
         vector_field(dim, DataComponentInterpretation::component_is_part_of_vector);
       data_out.add_data_vector(displacement,
@@ -104,7 +108,11 @@ namespace fdem
       data_out.add_data_vector(block_id, "block_id");
       data_out.build_patches(block.mapping, block.fe.degree);
 
+      // Rank 0 writes: add_data_vector() above is collective on a shared
+      // triangulation (it makes a ghosted vector), so every rank comes here.
       const std::string name = "block-" + file_stem(block.name) + suffix + ".vtu";
+      if (Utilities::MPI::this_mpi_process(block.triangulation.get_communicator()) != 0)
+        return name;
       std::ofstream     out(directory + "/" + name);
       AssertThrow(out.good(), ExcMessage("Cannot write '" + directory + "/" + name + "'."));
       data_out.write_vtu(out);

@@ -265,7 +265,8 @@ namespace fdem
     {
       // The interface as a mesh of dimension dim-1 cut from block J.
       Triangulation<dim - 1, dim> surface;
-      GridGenerator::extract_boundary_mesh(block_J.triangulation,
+      GridGenerator::extract_boundary_mesh(static_cast<const Triangulation<dim> &>(
+                                             block_J.triangulation),
                                            surface,
                                            {interface.face_group});
       const FE_Q<dim - 1, dim> fe(block_J.fe.degree);
@@ -313,6 +314,8 @@ namespace fdem
         data_out.add_data_vector(fields[f], names[f]);
       data_out.build_patches(mapping, fe.degree);
       const std::string name = "interface-" + file_stem(interface.name) + suffix + ".vtu";
+      if (Utilities::MPI::this_mpi_process(block_J.triangulation.get_communicator()) != 0)
+        return name;
       std::ofstream     out(directory + "/" + name);
       AssertThrow(out.good(), ExcMessage("Cannot write '" + directory + "/" + name + "'."));
       data_out.write_vtu(out);

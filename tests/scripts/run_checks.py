@@ -25,6 +25,12 @@
                                          (default 1e-5); where a plane lifts
                                          off, it must carry under 5 % of the
                                          normal force
+  run_checks.py mpi EXE CASE.prm [N]     the case serially and with
+                                         `mpirun -np N` (default 2) in separate
+                                         folders: the same safety factor to
+                                         1e-10 relative, the same contact
+                                         states, one log, the same output
+                                         files with the same number of cells
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -204,6 +210,48 @@ def check_wedge(exe, prm, tolerance="1e-5"):
         assert share < 0.05, "the plane that lifts off still carries the wedge"
 
 
+def vtu_cells(path):
+    import vtk
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput().GetNumberOfCells()
+
+
+def check_mpi(exe, prm, n_ranks="2"):
+    case = os.path.splitext(os.path.basename(prm))[0]
+    runs = []
+    for command in ([exe], ["mpirun", "-np", n_ranks, "--oversubscribe", exe]):
+        with tempfile.TemporaryDirectory() as workdir:
+            result = subprocess.run(command + [prepare(prm, workdir)], cwd=workdir,
+                                    capture_output=True, text=True, timeout=600)
+            assert result.returncode == 0, result.stdout + result.stderr
+            output = os.path.join(workdir, case + "-output")
+            summary = json.load(open(os.path.join(output, "summary.json")))
+            files = sorted(os.listdir(output))
+            cells = {f: vtu_cells(os.path.join(output, f)) for f in files if f.endswith(".vtu")}
+            runs.append((command, result.stdout, summary, files, cells))
+    (_, _, serial, serial_files, serial_cells), (_, log, parallel, files, cells) = runs
+    assert serial["n_mpi_ranks"] == 1 and parallel["n_mpi_ranks"] == int(n_ranks)
+    # Only rank 0 prints: one log, as long as the serial one.
+    assert log.count("Safety factor:") == 1, "more than one rank printed the log"
+    # Only rank 0 writes, and all of each block: the same files and cells.
+    assert files == serial_files, f"output files differ: {files} vs {serial_files}"
+    assert cells == serial_cells, f"VTU cells differ: {cells} vs {serial_cells}"
+    assert serial["converged"] and parallel["converged"]
+    K1, K2 = serial["safety_factor"], parallel["safety_factor"]
+    print(f"K serial = {K1!r}, K with {n_ranks} ranks = {K2!r}, "
+          f"relative difference {abs(K2 / K1 - 1):.2e}")
+    # The ranks change only the order of the sums in the assembly and the
+    # factorisation (round-off, about 1e-15 relative in u); the status
+    # iteration must take the same path, and the safety factor iteration
+    # then ends at the same K to round-off amplified by its few steps.
+    assert abs(K2 / K1 - 1) <= 1e-10, "the safety factor depends on the number of ranks"
+    for key in ("n_stick", "n_slip", "n_open", "n_contact_iterations"):
+        assert [s[key] for s in serial["iterations"]] == \
+            [s[key] for s in parallel["iterations"]], f"{key} differs"
+
+
 def parameters_doc(exe, doc, write=False):
     listing = subprocess.run([exe, "--print-parameters"], capture_output=True,
                              text=True, check=True).stdout
@@ -228,5 +276,5 @@ if __name__ == "__main__":
         {"vtu": check_vtu, "bad-input": check_bad_input,
          "no-equilibrium": check_no_equilibrium,
          "deterministic": check_deterministic,
-         "wedge": check_wedge}[command](exe, path, *sys.argv[4:])
+         "wedge": check_wedge, "mpi": check_mpi}[command](exe, path, *sys.argv[4:])
     print("passed")

@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <vector>
 #include <string>
 
 class Amesos_BaseSolver;
@@ -27,6 +28,13 @@ namespace fdem
      * factorises a matrix once and then solves for any number of
      * right-hand sides, one or many at a time. The FE part of the method is
      * linear, so each block's stiffness is factorised exactly once per run.
+     *
+     * MPI: Amesos works on the matrix's distribution (Amesos_Klu gathers it
+     * on one rank, Amesos_Mumps factorises in parallel). Right-hand sides and
+     * solutions here are global-size arrays, the same on every rank; each
+     * rank gives the entries of its rows and the solution is gathered on
+     * all. UMFPACK is serial: with more than one rank it is an error. Every
+     * call is collective.
      */
     class DirectSolver
     {
@@ -39,15 +47,22 @@ namespace fdem
       void
       factorize(const TrilinosWrappers::SparseMatrix &matrix);
 
-      /** Solves A x = b for all columns of @p b at once. */
+      /**
+       * Solves A x = b for the @p n_rhs columns of @p b at once (n x n_rhs,
+       * column-major, global size; overwritten with x).
+       */
       void
-      solve(Epetra_MultiVector &x, Epetra_MultiVector &b) const;
+      solve(std::vector<double> &b, const unsigned int n_rhs) const;
 
       /** Solves A x = b for one right-hand side. */
       Vector<double>
       solve(const Vector<double> &b) const;
 
     private:
+      /** Solves A x = b for all columns of @p b at once (distributed). */
+      void
+      solve(Epetra_MultiVector &x, Epetra_MultiVector &b) const;
+
       const std::string                     solver_type;
       const TrilinosWrappers::SparseMatrix *matrix = nullptr;
       std::unique_ptr<Epetra_LinearProblem> problem;

@@ -8,6 +8,7 @@
 #include <fdem/parameters/model_parameters.h>
 
 #include <deal.II/base/function.h>
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
@@ -57,6 +58,17 @@ namespace fdem
      * The merged mesh of a whole model is an ElasticBlock too (every cell
      * takes the material of its block): that is the plain FE model the mixed
      * method must reproduce when everything sticks.
+     *
+     * MPI: the triangulation is a parallel::shared::Triangulation on
+     * MPI_COMM_WORLD without artificial cells, so every rank holds every
+     * cell and every dof, and all passes over the cells other than the
+     * assembly of K (interface nodes, residuals, rigid modes, output) run
+     * the same on every rank on global-size vectors. Only K is distributed:
+     * each rank assembles its own cells (METIS partition) into the rows of
+     * the dofs it owns, and the factorisation and the solves run on all
+     * ranks (MumpsSchurSolver, DirectSolver); they take and return
+     * global-size vectors, the same on every rank. With one rank this is
+     * the serial code.
      */
     template <int dim>
     class ElasticBlock
@@ -177,7 +189,7 @@ namespace fdem
       free_mode_load(const unsigned int k) const;
 
       std::string                    name;
-      Triangulation<dim>             triangulation;
+      parallel::shared::Triangulation<dim> triangulation;
       FESystem<dim>                  fe;
       MappingQ<dim>                  mapping;
       DoFHandler<dim>                dof_handler;
@@ -196,7 +208,7 @@ namespace fdem
       double                         length_scale = 1;
       /** External nodal forces F (before constraints). */
       Vector<double>                 load_vector;
-      /** Wall time of the assembly and of the factorisation of K (s). */
+      /** Wall time of the assembly and of the factorisation of K (s, this rank). */
       double                         assembly_seconds      = 0;
       double                         factorization_seconds = 0;
 

@@ -27,6 +27,16 @@ namespace fdem
      *
      * A solve K x = b is y_I = K_II^{-1} b_I, x_S = S^{-1} (b_S - K_SI y_I),
      * x_I = K_II^{-1} (b_I - K_IS x_S): two MUMPS solves of the interior.
+     *
+     * MPI: MUMPS runs on the matrix's communicator. With one rank it gets
+     * the matrix centralised, as always; with more, each rank gives the
+     * rows it owns (ICNTL(18) = 3) and MUMPS factorises in parallel. The
+     * Schur complement comes back on rank 0 (ICNTL(19) = 1), which
+     * Cholesky-factorises it and broadcasts the factor; the rows of K of the
+     * Schur dofs are gathered on every rank. Right-hand sides and solutions
+     * are global-size arrays, the same on every rank: MUMPS reads rank 0's
+     * (ICNTL(20) = 0), and its solution, on rank 0 (ICNTL(21) = 0), is
+     * broadcast. Every call is collective.
      */
     class MumpsSchurSolver
     {
@@ -73,11 +83,30 @@ namespace fdem
       struct Data;
       std::unique_ptr<Data>                 data;
       const TrilinosWrappers::SparseMatrix *matrix = nullptr;
+      /** The matrix's communicator and its number of ranks. */
+      MPI_Comm     communicator = MPI_COMM_SELF;
+      unsigned int n_ranks      = 1;
       std::vector<types::global_dof_index>  schur;
       /** Per dof: its index in the Schur list, or -1. */
       std::vector<int> schur_index;
       /** Cholesky factor of S (lower triangle, column-major). */
       std::vector<double> schur_factor;
+      /**
+       * The rows of K of the Schur dofs (all columns), in compressed rows:
+       * row k holds entries schur_row_start[k] to schur_row_start[k+1].
+       */
+      std::vector<std::size_t> schur_row_start;
+      std::vector<int>         schur_row_columns;
+      std::vector<double>      schur_row_values;
+
+      /** Calls f(column, value) for each entry of the row of Schur dof k. */
+      template <typename Function>
+      void
+      for_each_entry_in_schur_row(const unsigned int k, const Function &f) const
+      {
+        for (std::size_t e = schur_row_start[k]; e < schur_row_start[k + 1]; ++e)
+          f(schur_row_columns[e], schur_row_values[e]);
+      }
 
       /** MUMPS solve of the interior: x_I = K_II^{-1} b_I, x_S = 0. */
       void

@@ -13,7 +13,9 @@ namespace fdem
     /**
      * Writes one block's VTU file: displacement, stress (Cauchy, with
      * sigma_zz in plane strain as "stress_zz"), and the block index.
-     * Returns the file name relative to @p directory.
+     * Returns the file name relative to @p directory. Collective on the
+     * block's communicator (DataOut on a shared triangulation): every rank
+     * calls it, rank 0 writes the whole block.
      */
     template <int dim>
     std::string

@@ -77,7 +77,8 @@ namespace fdem
 
     /**
      * Writes the interface as a surface (a line in 2D) on block J's faces,
-     * with the pair results as nodal fields. Returns the file name.
+     * with the pair results as nodal fields. Returns the file name. Only
+     * rank 0 of block J's communicator writes the file.
      */
     template <int dim>
     std::string
