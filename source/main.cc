@@ -83,7 +83,8 @@ main(int argc, char *argv[])
         }
       if (print)
         {
-          fdem::parameters::print_parameters(std::cout, prm_file);
+          std::ostream nowhere(nullptr);
+          fdem::parameters::print_parameters(host ? std::cout : nowhere, prm_file);
           return 0;
         }
       if (prm_file.empty())
@@ -94,7 +95,8 @@ main(int argc, char *argv[])
       if (validate)
         {
           fdem::parameters::read_parameters(prm_file);
-          std::cout << prm_file << ": valid." << std::endl;
+          if (host)
+            std::cout << prm_file << ": valid." << std::endl;
           return 0;
         }
       std::ostream         nowhere(nullptr);

@@ -116,7 +116,7 @@ namespace fdem
        * SparseDirectUMFPACK), "MUMPS" (MUMPS's C
        * interface, L D L^T) or "MUMPS_Schur" (the same, with the interface
        * dofs eliminated last and their Schur complement kept, see
-       * MumpsSchurSolver).
+       * MumpsSchurSolver). Collective: every rank assembles its cells.
        */
       void
       assemble_and_factorize(const parameters::LoadParameters &loads,
@@ -125,6 +125,7 @@ namespace fdem
       /**
        * Displacement u = K^{-1} (F_nodal) for a nodal force vector on this
        * block's dofs (Dirichlet and support dofs end with zero).
+       * Collective; @p nodal_forces and the result are the same on every rank.
        */
       Vector<double>
       solve(const Vector<double> &nodal_forces) const;
