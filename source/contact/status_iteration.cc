@@ -353,8 +353,12 @@ namespace fdem
             log << ", slip directions turned up to " << std::setprecision(3) << record.max_turn
                 << " deg" << std::setprecision(6);
           log << "; " << solution.n_changed_rows << " rows changed, LU "
-              << (solution.factorized ? std::string("factorised: ") + solution.why_factorized :
-                                        std::string("reused"))
+              << (solution.factorized ?
+                    std::string("factorised: ") + solution.why_factorized :
+                    std::string("reused: ") + solution.reuse_method +
+                      (solution.n_krylov_iterations > 0 ?
+                         ", " + std::to_string(solution.n_krylov_iterations) + " iterations" :
+                         std::string()))
               << std::endl;
 
           if (record.n_changes == 0)
