@@ -251,7 +251,6 @@ namespace fdem
       solution.n_changed_rows         = result.n_changed_rows;
       solution.why_factorized         = result.why_factorized;
       solution.reuse_method           = result.method != nullptr ? result.method : "";
-      solution.n_krylov_iterations    = result.n_krylov_iterations;
       // Below rcond = 1e-14 the solution has no correct digit left.
       solution.solved = result.solved;
       if (!solution.solved)

@@ -355,10 +355,7 @@ namespace fdem
           log << "; " << solution.n_changed_rows << " rows changed, LU "
               << (solution.factorized ?
                     std::string("factorised: ") + solution.why_factorized :
-                    std::string("reused: ") + solution.reuse_method +
-                      (solution.n_krylov_iterations > 0 ?
-                         ", " + std::to_string(solution.n_krylov_iterations) + " iterations" :
-                         std::string()))
+                    std::string("reused: ") + solution.reuse_method)
               << std::endl;
 
           if (record.n_changes == 0)

@@ -38,9 +38,8 @@ namespace fdem
       unsigned int n_changed_rows = 0;
       /** Why the system was factorised, if it was (ReusableLU::Result). */
       const char *why_factorized = "";
-      /** How the factors were reused, if they were, and GMRES iterations. */
-      const char * reuse_method        = "";
-      unsigned int n_krylov_iterations = 0;
+      /** How the factors were reused, if they were. */
+      const char *reuse_method = "";
     };
 
     /**

@@ -32,21 +32,22 @@ namespace fdem
      *   B^{-1} = B_0^{-1} - Z (I_k + D' Z)^{-1} D' B_0^{-1},   Z = B_0^{-1} P,
      *
      * which is exact: it costs k + 2 solves with the old factors and a k x k
-     * factorisation instead of a new n x n one. Beyond max_changed_fraction
-     * n rows, if few rows changed much (3D slip rows whose directions turn
-     * slightly change in full, but little), B is solved by GMRES
-     * right-preconditioned by B_0^{-1}: B B_0^{-1} = I + (B - B_0) B_0^{-1}
-     * has its eigenvalues clustered at 1 but for about one per large change.
-     * Either way the solution is checked by its residual (normwise backward
-     * error) with up to three steps of iterative refinement; the condition
-     * estimate of the new matrix, in its own scaling S', is LAPACK's 1-norm
-     * estimator (dlacn2, the one dgecon uses) applied to (S' A' S')^{-1}
-     * through the same operator. The matrix is factorised afresh instead
-     * when too many rows changed much, when GMRES does not converge, when
-     * the backward error stays above its tolerance, when the capacitance
-     * matrix I_k + D' Z is singular, or when the estimate falls below
-     * min_reused_condition: a system near singularity is judged by a fresh
-     * factorisation and dgecon, exactly as without reuse.
+     * factorisation instead of a new n x n one. The solution is checked by
+     * its residual (normwise backward error), with up to two steps of
+     * iterative refinement; the condition estimate of the new matrix, in its
+     * own scaling S', is LAPACK's 1-norm estimator (dlacn2, the one dgecon
+     * uses) applied to (S' A' S')^{-1} through the same formula. The matrix
+     * is factorised afresh instead when k exceeds max_changed_fraction n,
+     * when the backward error stays above its tolerance, when the
+     * capacitance matrix I_k + D' Z is singular, or when the estimate (or
+     * that of the factorised matrix) falls below min_reused_condition: a
+     * system near singularity is judged by a fresh factorisation and dgecon,
+     * exactly as without reuse.
+     *
+     * (GMRES right-preconditioned by the old factors, for many rows changed
+     * by little as 3D slip rows are, was tried and measured slower than a
+     * fresh factorisation on the rock wedge, n = 573: about 21 iterations
+     * per solve with the condition estimate; see the branch history.)
      */
     class ReusableLU
     {
@@ -63,20 +64,6 @@ namespace fdem
          * long near k = 0.12-0.15 n.
          */
         double max_changed_fraction = 0.1;
-        /**
-         * Beyond max_changed_fraction changed rows, GMRES preconditioned by
-         * the old factors is tried if at most this many rows changed by more
-         * than small_row_change of their largest entry (each such row adds
-         * about one iteration; many slightly turned 3D slip rows add few).
-         */
-        unsigned int max_large_changes = 8;
-        /** See max_large_changes. */
-        double small_row_change = 0.05;
-        /**
-         * Iterations of one GMRES solve before giving up (each costs one
-         * solve with the old factors and one product with the matrix).
-         */
-        unsigned int max_krylov_iterations = 20;
         /** Largest normwise backward error accepted from a reused solve. */
         double backward_error_tolerance = 1e-14;
         /**
@@ -106,10 +93,8 @@ namespace fdem
         double backward_error = 0;
         /** Why the matrix was factorised (for the log); empty if reused. */
         const char *why_factorized = "";
-        /** How the old factors were reused: "Woodbury", "GMRES", or none. */
+        /** How the old factors were reused: "Woodbury", "same matrix", or none. */
         const char *method = nullptr;
-        /** GMRES iterations over the solve and the condition estimate. */
-        unsigned int n_krylov_iterations = 0;
       };
 
       ReusableLU() = default;
