@@ -89,6 +89,30 @@ TEST(PlanarSlidingSurface, ExactForAnyMeshAndMaterial)
   }
 }
 
+TEST(PlanarSlidingSurface, ExactOnTriangles)
+{
+  // The same oracle on the structured grid's quadrilaterals split into
+  // triangles (Element shape = triangle): FE_SimplexP of degree 1 and 2.
+  // Round-off only, as on quadrilaterals: 1e-8.
+  for (const unsigned int degree : {1u, 2u})
+    {
+      auto c                                             = planar(10, 35, 1e3);
+      c.parameters.fe_degree                             = degree;
+      c.parameters.geometry.inclined_block.element_shape =
+        parameters::GeometryParameters::ElementShape::simplex;
+      std::ostringstream log;
+      Model<2>           model(c.parameters, "", log);
+      model.run();
+      ASSERT_EQ(model.summary["status"], "completed") << model.summary["safety_factor_reason"];
+      EXPECT_TRUE(model.blocks[0]->element_family.simplex);
+      // 10 elements along the block: 11 vertices, and 10 midside nodes at
+      // degree 2, all paired.
+      EXPECT_EQ(model.interfaces[0].pairs.size(), degree == 1 ? 11u : 21u);
+      EXPECT_NEAR(model.summary["safety_factor"].get<double>(), c.exact, 1e-8 * c.exact)
+        << "degree " << degree;
+    }
+}
+
 TEST(PlanarSlidingSurface, ExactAfterRotatingModelAndGravity)
 {
   auto         c     = planar(10, 35, 1e3);

@@ -41,12 +41,31 @@ namespace fdem
         return frame;
       }
 
-      /** Typical node spacing around a node of tributary area @p area. */
+      /**
+       * Typical node spacing around @p node: from its tributary area, or
+       * from the area of its faces where that weight is zero (the vertices
+       * of quadratic triangles).
+       */
       template <int dim>
       double
-      node_spacing(const double area)
+      node_spacing(const blocks::InterfaceNode<dim> &node)
       {
+        const double area = (node.area > 0) ? node.area : node.adjacent_area;
         return dim == 2 ? area : std::sqrt(area);
+      }
+
+      /**
+       * Unit normal of @p node: along its consistent int phi n dGamma, or,
+       * where the consistent weights vanish, along the mean normal of its
+       * faces.
+       */
+      template <int dim>
+      Tensor<1, dim>
+      unit_normal(const blocks::InterfaceNode<dim> &node)
+      {
+        const Tensor<1, dim> &n =
+          (node.area > 0) ? node.area_normal : node.adjacent_area_normal;
+        return n / n.norm();
       }
     } // namespace
 
@@ -81,10 +100,10 @@ namespace fdem
               if (used_J[j])
                 continue;
               const auto &         b = nodes_J[j];
-              const Tensor<1, dim> n = b.area_normal / b.area_normal.norm();
+              const Tensor<1, dim> n = unit_normal(b);
               const Tensor<1, dim> d = a.position - b.position;
               const double         gap = d * n;
-              const double tolerance   = 1e-6 * node_spacing<dim>(b.area);
+              const double tolerance   = 1e-6 * node_spacing(b);
               if ((d - gap * n).norm() > tolerance || gap < -tolerance ||
                   gap > search_distance + tolerance)
                 continue;
@@ -106,7 +125,7 @@ namespace fdem
           pair.position_J   = b.position;
           pair.dofs_I       = a.dofs;
           pair.dofs_J       = b.dofs;
-          pair.frame        = local_frame<dim>(b.area_normal / b.area_normal.norm());
+          pair.frame        = local_frame<dim>(unit_normal(b));
           pair.area         = b.area;
           pair.initial_gap  = std::max(0.0, best_gap);
           interface.pairs.push_back(pair);

@@ -23,20 +23,23 @@ namespace fdem
        * Element size @p size_near on @p curves and up to @p fine_distance
        * from them, then growing linearly with the distance to @p size_far.
        * The growth rate of 0.25 keeps neighbouring elements within about 25%
-       * of each other's size. The sizes are those of the final mesh: Gmsh
-       * meshes at twice the size and then subdivides (see
-       * set_unstructured_quad_options()).
+       * of each other's size. The sizes are those of the final mesh: for
+       * quadrilaterals Gmsh meshes at twice the size and then subdivides
+       * (see set_unstructured_quad_options()); triangles (@p subdivided
+       * false) are meshed at the size itself.
        */
       void
       set_size_field(const std::vector<int> &curves,
                      const double            size_near,
                      const double            size_far,
-                     const double            fine_distance = 0)
+                     const double            fine_distance = 0,
+                     const bool              subdivided    = true)
       {
         namespace field       = gmsh::model::mesh::field;
         const double growth   = 0.25;
-        const double near     = 2 * size_near;
-        const double far      = 2 * size_far;
+        const double factor   = subdivided ? 2 : 1;
+        const double near     = factor * size_near;
+        const double far      = factor * size_far;
         const int    distance = field::add("Distance");
         field::setNumbers(distance,
                           "CurvesList",
@@ -274,10 +277,18 @@ namespace fdem
       add_physical_group(1, bottom, "bottom");
 
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
+        const bool triangles =
+          slope.element_shape ==
+          parameters::GeometryParameters::ElementShape::simplex;
         set_size_field(sliding,
                        slope.mesh_size_on_sliding_surface,
-                       slope.mesh_size);
-        set_unstructured_quad_options();
+                       slope.mesh_size,
+                       0,
+                       !triangles);
+        if (triangles)
+          gmsh::option::setNumber("Mesh.Algorithm", 6);
+        else
+          set_unstructured_quad_options();
         gmsh::model::mesh::generate(2);
       });
       return extract_current_gmsh_model<2>(name);
@@ -452,10 +463,16 @@ namespace fdem
               geo::mesh::setTransfiniteCurve(tag, n_elements + 1);
               return tag;
             };
-          const auto quadrilateral = [](const std::vector<int> &curves) {
+          // Structured quadrilaterals, or each split into two triangles
+          // (transfinite without recombination).
+          const bool triangles =
+            inclined_block.element_shape ==
+            parameters::GeometryParameters::ElementShape::simplex;
+          const auto quadrilateral = [&](const std::vector<int> &curves) {
             const int tag = geo::addPlaneSurface({geo::addCurveLoop(curves)});
             geo::mesh::setTransfiniteSurface(tag);
-            geo::mesh::setRecombine(2, tag);
+            if (!triangles)
+              geo::mesh::setRecombine(2, tag);
             return tag;
           };
 
