@@ -551,7 +551,7 @@ namespace fdem
                                        element_family.face_quadrature(fe.degree + 1),
                                        update_values | update_normal_vectors |
                                          update_JxW_values);
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell()), face_dofs;
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
@@ -559,9 +559,14 @@ namespace fdem
             {
               fe_face_values.reinit(cell, f);
               cell->get_dof_indices(dofs);
+              // The face's own dofs: FE_SimplexP's has_support_on_face()
+              // is true for every dof in deal.II 9.4.
+              face_dofs.resize(fe.n_dofs_per_face(f));
+              cell->face(f)->get_dof_indices(face_dofs);
+              std::sort(face_dofs.begin(), face_dofs.end());
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                 {
-                  if (!fe.has_support_on_face(i, f))
+                  if (!std::binary_search(face_dofs.begin(), face_dofs.end(), dofs[i]))
                     continue;
                   const auto [component, base] = fe.system_to_component_index(i);
                   const types::global_dof_index first =
