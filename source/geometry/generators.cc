@@ -78,6 +78,19 @@ namespace fdem
         gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
       }
 
+      /**
+       * Frontal-Delaunay triangles, neither recombined nor subdivided (Gmsh
+       * keeps options from one session to the next in a process, so they
+       * are set here, not left at their defaults).
+       */
+      void
+      set_triangle_options()
+      {
+        gmsh::option::setNumber("Mesh.Algorithm", 6);
+        gmsh::option::setNumber("Mesh.RecombineAll", 0);
+        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
+      }
+
       /** OpenCASCADE plane surface bounded by the closed polygon @p corners. */
       int
       add_occ_polygon(const std::vector<Point<2>> &corners)
@@ -286,7 +299,7 @@ namespace fdem
                        0,
                        !triangles);
         if (triangles)
-          gmsh::option::setNumber("Mesh.Algorithm", 6);
+          set_triangle_options();
         else
           set_unstructured_quad_options();
         gmsh::model::mesh::generate(2);
@@ -521,6 +534,8 @@ namespace fdem
           add_physical_group(1, {top[0], top[2]}, "foundation surface");
           add_physical_group(1, base, "foundation base");
           add_physical_group(1, {across[0], across[3]}, "foundation ends");
+          if (triangles)
+            set_triangle_options();
           gmsh::model::mesh::generate(2);
         });
       return extract_current_gmsh_model<2>(name);

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <sstream>
 #include <unordered_map>
@@ -32,6 +33,21 @@ namespace fdem
       gmsh::option::setNumber("General.Terminal", 0);
       // 2 = throw the error message as a std::string; run() converts it.
       gmsh::option::setNumber("General.AbortOnError", 2);
+      // Gmsh keeps its options from one session to the next within a
+      // process: put those the generators change back to Gmsh's defaults,
+      // so that e.g. a .geo file of triangles read after the slope
+      // generator is not recombined, nor split after the wedge generator.
+      for (const auto &[option, value] :
+           std::initializer_list<std::pair<const char *, double>>{
+             {"Mesh.Algorithm", 6},
+             {"Mesh.Algorithm3D", 1},
+             {"Mesh.RecombineAll", 0},
+             {"Mesh.RecombinationAlgorithm", 1},
+             {"Mesh.SubdivisionAlgorithm", 0},
+             {"Mesh.MeshSizeExtendFromBoundary", 1},
+             {"Mesh.MeshSizeFromPoints", 1},
+             {"Mesh.MeshSizeFromCurvature", 0}})
+        gmsh::option::setNumber(option, value);
     }
 
 
