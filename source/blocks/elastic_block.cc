@@ -559,8 +559,9 @@ namespace fdem
             {
               fe_face_values.reinit(cell, f);
               cell->get_dof_indices(dofs);
-              // The face's own dofs: FE_SimplexP's has_support_on_face()
-              // is true for every dof in deal.II 9.4.
+              // The face's own dofs: with FE_SimplexP, deal.II 9.4's
+              // has_support_on_face() also answered true for dofs off the
+              // face (they were listed as unpaired interface nodes).
               face_dofs.resize(fe.n_dofs_per_face(f));
               cell->face(f)->get_dof_indices(face_dofs);
               std::sort(face_dofs.begin(), face_dofs.end());
