@@ -139,13 +139,17 @@ namespace fdem
                                          half.vertices[v][1]);
             }
 
-        // Swapping the vertices along the cell's first direction undoes the
-        // change of orientation of the reflection.
+        // Swapping the vertices along the cell's first direction (two
+        // corners of a triangle) undoes the change of orientation of the
+        // reflection.
+        const bool triangles =
+          !half.cells.empty() && half.cells[0].vertices.size() == 3;
         for (const auto &cell : half.cells)
           {
             CellData<2> mirrored = cell;
-            for (const unsigned int i : {0u, 1u, 2u, 3u})
-              mirrored.vertices[i] = image[cell.vertices[i ^ 1u]];
+            for (unsigned int i = 0; i < cell.vertices.size(); ++i)
+              mirrored.vertices[i] =
+                image[cell.vertices[triangles ? (i == 0 ? 0 : 3 - i) : (i ^ 1u)]];
             full.cells.push_back(mirrored);
           }
 
@@ -163,7 +167,8 @@ namespace fdem
             }
         full.face_group_names.erase(full.face_group_names.begin() + axis);
 
-        GridTools::consistently_order_cells(full.cells);
+        if (!triangles)
+          GridTools::consistently_order_cells(full.cells);
         return full;
       }
 
@@ -386,8 +391,13 @@ namespace fdem
             geo::addPlaneSurface({geo::addCurveLoop(top_loop)});
           geo::synchronize();
 
+          // Quadrilaterals: one segment, halved by the subdivision;
+          // triangles: the two segments themselves.
+          const bool triangles =
+            hertz.element_shape ==
+            parameters::GeometryParameters::ElementShape::simplex;
           for (const int curve : contact_curves)
-            gmsh::model::mesh::setTransfiniteCurve(curve, 2);
+            gmsh::model::mesh::setTransfiniteCurve(curve, triangles ? 3 : 2);
 
           add_physical_group(2, {cylinder}, "cylinder");
           add_physical_group(2, {foundation}, "foundation");
@@ -405,8 +415,12 @@ namespace fdem
           set_size_field(contact_curves,
                          hertz.contact_zone_width / n,
                          hertz.mesh_size,
-                         0.5 * hertz.contact_zone_width);
-          set_unstructured_quad_options();
+                         0.5 * hertz.contact_zone_width,
+                         !triangles);
+          if (triangles)
+            set_triangle_options();
+          else
+            set_unstructured_quad_options();
           gmsh::model::mesh::generate(2);
 
           for (const int curve : contact_curves)

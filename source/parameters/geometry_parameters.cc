@@ -299,6 +299,15 @@ namespace fdem
             "Model the whole cylinder width (x from -r to r) on a foundation "
             "from -W to W instead of the half model x >= 0; needed for "
             "tangential loads, e.g. Cattaneo-Mindlin partial slip.");
+          prm.declare_entry(
+            "Element shape",
+            "quadrilateral",
+            Patterns::Selection("quadrilateral|triangle"),
+            "Shape of the cells: quadrilaterals (FE_Q elements; Gmsh's "
+            "triangles of twice the size recombined and subdivided), or "
+            "Gmsh's Frontal-Delaunay triangles of the size itself "
+            "(FE_SimplexP). Either way the contact zone has Elements in "
+            "contact zone element edges on each side.");
         }
         prm.leave_subsection();
 
@@ -593,6 +602,9 @@ namespace fdem
             prm.get_integer("Elements in contact zone");
           hertz.mesh_size  = prm.get_double("Mesh size");
           hertz.full_model = prm.get_bool("Full model");
+          hertz.element_shape =
+            (prm.get("Element shape") == "triangle") ? ElementShape::simplex :
+                                                       ElementShape::hypercube;
         }
         prm.leave_subsection();
 

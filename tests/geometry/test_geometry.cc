@@ -1954,3 +1954,39 @@ TEST(Simplices, WedgeOfTetrahedra)
       EXPECT_GT(triangulation.n_active_cells(), 0u);
     }
 }
+
+
+
+TEST(Simplices, HertzFullModelOfTriangles)
+{
+  // Element shape = triangle: the full model of positive triangles, the
+  // mirror image included, with the contact zone's nodes at x_i = i Lc / n
+  // on both sides of the axis.
+  const Parameters geometry =
+    parse("set Source = hertz\nsubsection Hertz\nset Element shape = "
+          "triangle\nset Full model = true\nend");
+  const auto mesh = geometry::make_hertz_mesh(geometry.hertz);
+  for (const auto &cell : mesh.cells)
+    {
+      ASSERT_EQ(cell.vertices.size(), 3u);
+      EXPECT_GT(measure(mesh, cell), 0);
+    }
+  const double       width = geometry.hertz.contact_zone_width;
+  const unsigned int n     = geometry.hertz.n_contact_zone_elements;
+  std::set<long>     ticks;
+  for (const auto &face : faces_of(mesh, "contact surface"))
+    for (const unsigned int v : face.vertices)
+      {
+        const double x = mesh.vertices[v][0] / width * n;
+        EXPECT_NEAR(x, std::round(x), 1e-9) << mesh.vertices[v];
+        ticks.insert(std::lround(x));
+      }
+  // -n, ..., n.
+  EXPECT_EQ(ticks.size(), 2 * n + 1);
+  for (const unsigned int block : {0u, 1u})
+    {
+      Triangulation<2> triangulation;
+      geometry::create_block_triangulation(mesh, {block}, triangulation);
+      EXPECT_GT(triangulation.n_active_cells(), 0u);
+    }
+}

@@ -128,6 +128,8 @@ namespace fdem
          * image in x = 0) instead of the half model x >= 0.
          */
         bool full_model = false;
+        /** Quadrilaterals or triangles. */
+        ElementShape element_shape = ElementShape::hypercube;
       };
 
       /** Subsection "Inclined block": a block on an inclined plane. */
