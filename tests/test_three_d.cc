@@ -86,9 +86,9 @@ TEST(ThreeD, BlockOnPlaneOfTetrahedraMatchesThePlanarFormula)
 {
   // The same block and slab meshed with tetrahedra
   // (tests/data/block_on_plane_3d_tet.geo): FE_SimplexP of degree 1 and 2.
-  // Degree 2 puts pairs on the vertices of quadratic triangles, whose
-  // consistent tributary area is zero (no cohesion there, normal from the
-  // faces): the sums of the forces, and so K, are still exact.
+  // With degree 2 the vertices of the quadratic triangles have zero
+  // consistent tributary area and get no pair: the sums of the forces, and
+  // so K, are still exact.
   for (const unsigned int degree : {1u, 2u})
     for (const auto &[phi, cohesion] : {std::pair{35.0, 0.0}, std::pair{25.0, 15.0}})
       {
@@ -102,11 +102,11 @@ TEST(ThreeD, BlockOnPlaneOfTetrahedraMatchesThePlanarFormula)
           << model.summary["safety_factor_reason"];
         EXPECT_TRUE(model.blocks[0]->element_family.simplex);
         EXPECT_EQ(model.blocks[0]->n_free_rigid_modes(), 6u);
-        // Every node of the block's footprint is paired once: its 5 x 3
-        // grid of squares, each split into two triangles, has 6 x 4
-        // vertices, and degree 2 adds a node on each of the 5 x 4 + 6 x 3
-        // edges of the grid and the 15 diagonals.
-        EXPECT_EQ(model.interfaces[0].pairs.size(), degree == 1 ? 24u : 24u + 53u);
+        // The block's footprint, a 5 x 3 grid of squares each split into
+        // two triangles: degree 1 pairs its 6 x 4 vertices, degree 2 the
+        // nodes on the 5 x 4 + 6 x 3 edges of the grid and the 15
+        // diagonals (not the vertices, of zero weight). None unpaired.
+        EXPECT_EQ(model.interfaces[0].pairs.size(), degree == 1 ? 24u : 53u);
         EXPECT_EQ(model.summary["interfaces"][0]["n_unpaired_nodes"], 0);
         // The interface's area is the footprint's, 10 x 6.
         EXPECT_NEAR(model.summary["interfaces"][0]["area"].get<double>(), 60, 1e-10);

@@ -593,8 +593,6 @@ namespace fdem
                       node.area += phi_JxW;
                       node.area_normal += phi_JxW * fe_face_values.normal_vector(q);
                       node.adjacent_area += fe_face_values.JxW(q);
-                      node.adjacent_area_normal +=
-                        fe_face_values.JxW(q) * fe_face_values.normal_vector(q);
                     }
                 }
             }

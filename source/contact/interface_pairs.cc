@@ -41,31 +41,12 @@ namespace fdem
         return frame;
       }
 
-      /**
-       * Typical node spacing around @p node: from its tributary area, or
-       * from the area of its faces where that weight is zero (the vertices
-       * of quadratic triangles).
-       */
+      /** Typical node spacing around a node of tributary area @p area. */
       template <int dim>
       double
-      node_spacing(const blocks::InterfaceNode<dim> &node)
+      node_spacing(const double area)
       {
-        const double area = (node.area > 0) ? node.area : node.adjacent_area;
         return dim == 2 ? area : std::sqrt(area);
-      }
-
-      /**
-       * Unit normal of @p node: along its consistent int phi n dGamma, or,
-       * where the consistent weights vanish, along the mean normal of its
-       * faces.
-       */
-      template <int dim>
-      Tensor<1, dim>
-      unit_normal(const blocks::InterfaceNode<dim> &node)
-      {
-        const Tensor<1, dim> &n =
-          (node.area > 0) ? node.area_normal : node.adjacent_area_normal;
-        return n / n.norm();
       }
     } // namespace
 
@@ -87,9 +68,18 @@ namespace fdem
 
       const auto nodes_I = block_I.interface_nodes(face_group);
       const auto nodes_J = block_J.interface_nodes(face_group);
+      // Nodes of zero weight (the vertices of the quadratic triangles of
+      // P2 tetrahedra) get no pair: a uniform traction puts no consistent
+      // force on them, and as pairs with forces near zero their statuses
+      // chattered (the wedge's status iteration did not converge,
+      // doc/theory.md). Contact is held at the other nodes.
       std::vector<bool> used_J(nodes_J.size(), false);
+      for (unsigned int j = 0; j < nodes_J.size(); ++j)
+        used_J[j] = (nodes_J[j].area == 0);
       for (const auto &a : nodes_I)
         {
+          if (a.area == 0)
+            continue;
           // The partner: the node of J along J's normal with the smallest
           // gap, within the search distance. Matching tolerances scale with
           // the local node spacing.
@@ -100,10 +90,10 @@ namespace fdem
               if (used_J[j])
                 continue;
               const auto &         b = nodes_J[j];
-              const Tensor<1, dim> n = unit_normal(b);
+              const Tensor<1, dim> n = b.area_normal / b.area_normal.norm();
               const Tensor<1, dim> d = a.position - b.position;
               const double         gap = d * n;
-              const double tolerance   = 1e-6 * node_spacing(b);
+              const double tolerance   = 1e-6 * node_spacing<dim>(b.area);
               if ((d - gap * n).norm() > tolerance || gap < -tolerance ||
                   gap > search_distance + tolerance)
                 continue;
@@ -125,13 +115,13 @@ namespace fdem
           pair.position_J   = b.position;
           pair.dofs_I       = a.dofs;
           pair.dofs_J       = b.dofs;
-          pair.frame        = local_frame<dim>(unit_normal(b));
+          pair.frame        = local_frame<dim>(b.area_normal / b.area_normal.norm());
           pair.area         = b.area;
           pair.initial_gap  = std::max(0.0, best_gap);
           interface.pairs.push_back(pair);
         }
-      for (const bool used : used_J)
-        interface.n_unpaired_J += used ? 0 : 1;
+      for (unsigned int j = 0; j < nodes_J.size(); ++j)
+        interface.n_unpaired_J += (used_J[j] || nodes_J[j].area == 0) ? 0 : 1;
 
       AssertThrow(!interface.pairs.empty(),
                   ExcMessage("Interfaces/" + name +

@@ -49,10 +49,8 @@ namespace fdem
               shear2 += r.tangential_force[i] * r.tangential_force[i];
               slip2 += std::pow(solution.relative_displacements[dim * p + 1 + i], 2);
             }
-          // A pair with zero tributary area (a vertex of quadratic
-          // triangles) has no nodal pressure: reported as 0.
-          r.normal_pressure = pair.area > 0 ? -r.normal_force / pair.area : 0.;
-          r.shear_stress    = pair.area > 0 ? std::sqrt(shear2) / pair.area : 0.;
+          r.normal_pressure = -r.normal_force / pair.area;
+          r.shear_stress    = std::sqrt(shear2) / pair.area;
           r.gap             = solution.relative_displacements[dim * p];
           r.slip            = dim == 2 ? solution.relative_displacements[dim * p + 1] :
                                          std::sqrt(slip2);

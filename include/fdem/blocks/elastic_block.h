@@ -46,13 +46,12 @@ namespace fdem
       /** int_Gamma phi n dGamma with n the block's outward normal. */
       Tensor<1, dim>                               area_normal;
       /**
-       * The same two without phi, over the node's faces in the group: their
-       * area and int n dGamma. They give the node its spacing and normal
-       * where the consistent weights vanish: at the vertices of quadratic
-       * triangles (P2 tetrahedra), where int phi dGamma = 0 on every face.
+       * Area of the node's faces in the group: the scale against which a
+       * zero weight is recognised. At the vertices of quadratic triangles
+       * (faces of P2 tetrahedra) int phi dGamma = 0 on every face; those
+       * nodes get area = 0 exactly and no pair (contact::make_interface()).
        */
       double                                       adjacent_area = 0;
-      Tensor<1, dim>                               adjacent_area_normal;
     };
 
     /**
