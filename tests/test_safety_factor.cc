@@ -7,6 +7,8 @@
 // safety factor is below the initial K.
 #include "test_helpers.h"
 
+#include <fdem/safety_factor/safety_factor.h>
+
 #include <deal.II/dofs/dof_tools.h>
 
 #include <gtest/gtest.h>
@@ -268,4 +270,64 @@ TEST(Water, PiezometricLineEqualsItsExpression)
   EXPECT_NEAR(safety_factor_of(with_expression), K, 1e-12 * K);
   // Water weakens the slope.
   EXPECT_LT(K, safety_factor_of(test_support::case_parameters("paper_slope.prm")));
+}
+
+namespace
+{
+  /** A synthetic step: K* = K F_R/F_tau given as a function of K, no static solution from @p K_limit up. */
+  safety_factor::ReducedStrengthSolution
+  synthetic_step(const double K, const double K_star, const double K_limit)
+  {
+    safety_factor::ReducedStrengthSolution s;
+    s.converged = K < K_limit;
+    s.result    = s.converged ? "converged" : "singular system";
+    if (s.converged)
+      {
+        s.sliding_force   = 1000;
+        s.resisting_force = s.sliding_force * K_star / K;
+      }
+    return s;
+  }
+} // namespace
+
+TEST(SafetyFactorIteration, PlanarLimitFromTwoAgreeingFactorsWithoutSolvingAtIt)
+{
+  // A planar surface: K* does not depend on K, and the limit itself has no
+  // static solution (singular system). K = 1, fail at 1.5, K = 1.25: two K*
+  // agree, so the answer is 1.5 after three solves (it used to halve the
+  // distance to 1.5 down to the tolerance, ~20 more solves).
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto result = safety_factor::iterate(
+    [](const double K) { return synthetic_step(K, 1.5, 1.5); }, control, log);
+  ASSERT_TRUE(result.converged) << log.str();
+  EXPECT_EQ(result.safety_factor, 1.5);
+  EXPECT_EQ(result.reason, "two successive K* agree");
+  EXPECT_EQ(result.steps.size(), 3u) << log.str();
+}
+
+TEST(SafetyFactorIteration, AgreeingFactorsAboveAFailedSolveAreNotTheLimit)
+{
+  // K* = 1.5 from every K, but solves already fail from 1.2: the limit is
+  // the bracket below 1.2, not the K* that was never reachable.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto result = safety_factor::iterate(
+    [](const double K) { return synthetic_step(K, 1.5, 1.2); }, control, log);
+  ASSERT_TRUE(result.converged) << log.str();
+  EXPECT_EQ(result.reason, "bracket narrower than the tolerance");
+  EXPECT_NEAR(result.safety_factor, 1.2, 2 * control.tolerance * 1.2);
+  EXPECT_LE(result.safety_factor, 1.2);
+}
+
+TEST(SafetyFactorIteration, FactorThatDependsOnKConvergesToItsFixedPoint)
+{
+  // K* = K + (2 - K)/2: a fixed point at 2 that is solvable, K* changes
+  // with K, so only eq. (13) itself can stop the iteration.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto result = safety_factor::iterate(
+    [](const double K) { return synthetic_step(K, K + 0.5 * (2 - K), 10); }, control, log);
+  ASSERT_TRUE(result.converged) << log.str();
+  EXPECT_NEAR(result.safety_factor, 2.0, 2 * control.tolerance * 2.0);
 }

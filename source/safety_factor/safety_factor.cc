@@ -121,6 +121,22 @@ namespace fdem
               result.reason        = "two successive K* agree";
               break;
             }
+          // K* the same from two different K: K* does not depend on K (a
+          // planar surface, where F_R and F_tau are linear in the reduced
+          // strengths), so it is the fixed point, and the secant through
+          // both steps lands on it too. The limit itself has no static
+          // solution there (a singular system, Sec. 6.4), so K = K* is
+          // never solved; it needs only to lie where no solve failed below.
+          const double previous_K_star = previous_K + previous_h;
+          if (s.converged && previous_K != K &&
+              std::abs(K_star - previous_K_star) <= tolerance * K_star &&
+              !(K_high < K_star * (1 - tolerance)))
+            {
+              result.converged     = true;
+              result.safety_factor = K_star;
+              result.reason        = "two successive K* agree";
+              break;
+            }
           if (s.converged)
             {
               previous_K    = K;
