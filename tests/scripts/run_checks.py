@@ -2,8 +2,11 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Checks that run the fdem-slope executable as a user would.
 
-  run_checks.py vtu EXE CASE.prm         run the case; read every VTU file of
-                                         its PVD back with VTK and check fields
+  run_checks.py vtu EXE CASE.prm [simplex]
+                                         run the case; read every VTU file of
+                                         its PVD back with VTK and check fields;
+                                         with 'simplex', every cell must be a
+                                         line, triangle or tetrahedron
   run_checks.py parameters-doc EXE DOC.md [--write]
                                          doc/parameters.md must be what
                                          --print-parameters prints (--write
@@ -68,7 +71,12 @@ def run(exe, prm, workdir):
                           capture_output=True, text=True, timeout=600)
 
 
-def check_vtu(exe, prm):
+# VTK cell types of simplices: line, triangle, tetrahedron, and their
+# quadratic forms.
+VTK_SIMPLEX_CELLS = {3, 5, 10, 21, 22, 24}
+
+
+def check_vtu(exe, prm, cells="any"):
     import vtk  # Debian's python3-vtk9
     from vtk.util.numpy_support import vtk_to_numpy
 
@@ -103,6 +111,9 @@ def check_vtu(exe, prm):
             r.Update()
             grid = r.GetOutput()
             assert grid.GetNumberOfPoints() > 0 and grid.GetNumberOfCells() > 0, name
+            if cells == "simplex":
+                types = {grid.GetCellType(c) for c in range(grid.GetNumberOfCells())}
+                assert types <= VTK_SIMPLEX_CELLS, f"{name}: cells of VTK types {types}"
             fields = block_fields if name.startswith("block-") else interface_fields
             data = grid.GetPointData()
             for field in fields:
