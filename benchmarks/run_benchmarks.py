@@ -505,20 +505,20 @@ def main():
              "reading the parameters) and the peak resident memory "
              "(`peak_memory_MiB`, from getrusage, the whole process). The phases: "
              "geometry (Gmsh mesh), setup (dofs, constraints, free rigid modes), "
-             "assembly and factorisation (K and F of each block, K factorised), "
+             "assembly (K and F of each block), factorisation (K factorised; one "
+             "phase 'assembly and factorisation' in summaries of older programs), "
              "one solve (u = K^-1 F for each block: one linear solve of the "
              "model), interfaces (node pairs), flexibility (C of eqs. 4-8), "
              "contact (the status iterations, all of them), safety factor (F_R "
              "and F_tau of each step), recovery (block displacements), output "
              "(files and the summary's reactions). "
-             + ("Assembly and factorisation are one phase because one call of "
-                "ElasticBlock does both; the script shows 'assembly' and "
-                "'factorisation' apart as soon as the program times them apart. "
+             + ("Some runs here come from a program that timed assembly and "
+                "factorisation as one phase. "
                 if "assembly and factorisation" in phases else "")
              + "The safety-factor iteration costs its contact solves, its own "
              "'safety factor' phase, and with VTU output (off here) recovery and "
              "output per step.", "",
-             "The *cost ratio* is total / (geometry + setup + assembly and "
+             "The *cost ratio* is total / (geometry + setup + assembly + "
              "factorisation + one solve): what the run costs in units of one "
              "linear FE solve of the same model, measured in the same run.", "",
              f"Data: [benchmarks/benchmarks.csv](benchmarks/benchmarks.csv).", ""]

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 
 using namespace fdem;
 using dealii::numbers::PI;
@@ -22,13 +23,14 @@ namespace
    */
   parameters::Parameters
   block_on_plane(const double dip, const double dip_direction, const double phi,
-                 const double cohesion)
+                 const double cohesion,
+                 const std::string &geo = "block_on_plane_3d.geo")
   {
     parameters::Parameters p;
     p.dimension                = 3;
     p.case_name                = "block_on_plane_3d";
     p.geometry.source          = parameters::GeometryParameters::Source::mesh_file;
-    p.geometry.mesh_file       = std::string(FDEM_SOURCE_DIR) + "/tests/data/block_on_plane_3d.geo";
+    p.geometry.mesh_file       = std::string(FDEM_SOURCE_DIR) + "/tests/data/" + geo;
     p.geometry.translation     = {0, 0, 0};
     const double d = dip * PI / 180, a = dip_direction * PI / 180;
     // Gravity in the frame of the slab: the slab's plane dips by d towards a.
@@ -78,6 +80,44 @@ TEST(ThreeD, BlockOnPlaneMatchesThePlanarFormula)
       EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
         << "phi = " << phi << ", c = " << cohesion;
     }
+}
+
+TEST(ThreeD, BlockOnPlaneOfTetrahedraMatchesThePlanarFormula)
+{
+  // The same block and slab meshed with tetrahedra
+  // (tests/data/block_on_plane_3d_tet.geo): FE_SimplexP of degree 1 and 2.
+  // With degree 2 the vertices of the quadratic triangles have zero
+  // consistent tributary area and get no pair: the sums of the forces, and
+  // so K, are still exact.
+  for (const unsigned int degree : {1u, 2u})
+    for (const auto &[phi, cohesion] : {std::pair{35.0, 0.0}, std::pair{25.0, 15.0}})
+      {
+        std::ostringstream     log;
+        parameters::Parameters p =
+          block_on_plane(30, 120, phi, cohesion, "block_on_plane_3d_tet.geo");
+        p.fe_degree = degree;
+        Model<3> model(p, "", log);
+        model.run();
+        ASSERT_EQ(model.summary["status"], "completed")
+          << model.summary["safety_factor_reason"];
+        EXPECT_TRUE(model.blocks[0]->element_family.simplex);
+        EXPECT_EQ(model.blocks[0]->n_free_rigid_modes(), 6u);
+        // The block's footprint, a 5 x 3 grid of squares each split into
+        // two triangles: degree 1 pairs its 6 x 4 vertices, degree 2 the
+        // nodes on the 5 x 4 + 6 x 3 edges of the grid and the 15
+        // diagonals (not the vertices, of zero weight). None unpaired.
+        EXPECT_EQ(model.interfaces[0].pairs.size(), degree == 1 ? 24u : 53u);
+        EXPECT_EQ(model.summary["interfaces"][0]["n_unpaired_nodes"], 0);
+        // The interface's area is the footprint's, 10 x 6.
+        EXPECT_NEAR(model.summary["interfaces"][0]["area"].get<double>(), 60, 1e-10);
+        const double W     = 25.0 * 10 * 6 * 5, dip = PI / 6;
+        const double exact = (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
+                             (W * std::sin(dip));
+        // As for hexahedra: the sums of normal and tangential forces are
+        // fixed by equilibrium, so round-off only.
+        EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
+          << "degree " << degree << ", phi = " << phi << ", c = " << cohesion;
+      }
 }
 
 TEST(ThreeD, BlockOnPlaneCaseOfPrmFolder)

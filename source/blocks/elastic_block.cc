@@ -7,12 +7,12 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace fdem
@@ -31,8 +31,10 @@ namespace fdem
                       Triangulation<dim>::none,
                       /*allow_artificial_cells=*/false,
                       parallel::shared::Triangulation<dim>::partition_metis)
-      , fe(FE_Q<dim>(fe_degree), dim)
-      , mapping(1)
+      , element_family(mesh, fe_degree)
+      , fe(*element_family.scalar_element(), dim)
+      , mapping_object(element_family.mapping())
+      , mapping(*mapping_object)
       , materials(materials)
     {
       geometry::create_block_triangulation(mesh, block_ids, triangulation);
@@ -258,14 +260,15 @@ namespace fdem
 
     template <int dim>
     ElasticBlock<dim>::CellScratch::CellScratch(const Mapping<dim> &       mapping,
-                                                const FiniteElement<dim> &fe)
+                                                const FiniteElement<dim> & fe,
+                                                const ElementFamily<dim> & family)
       : fe_values(mapping,
                   fe,
-                  QGauss<dim>(fe.degree + 1),
+                  family.cell_quadrature(fe.degree + 1),
                   update_values | update_gradients | update_JxW_values)
       , fe_face_values(mapping,
                        fe,
-                       QGauss<dim - 1>(fe.degree + 2),
+                       family.face_quadrature(fe.degree + 2),
                        update_values | update_normal_vectors |
                          update_quadrature_points | update_JxW_values)
       , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
@@ -373,7 +376,7 @@ namespace fdem
       stiffness_matrix.reinit(owned, owned, dsp, comm);
       load_vector.reinit(dof_handler.n_dofs());
 
-      CellScratch scratch(mapping, fe);
+      CellScratch scratch(mapping, fe, element_family);
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -548,10 +551,10 @@ namespace fdem
       std::map<types::global_dof_index, unsigned int> node_of_first_dof;
       FEFaceValues<dim> fe_face_values(mapping,
                                        fe,
-                                       QGauss<dim - 1>(fe.degree + 1),
+                                       element_family.face_quadrature(fe.degree + 1),
                                        update_values | update_normal_vectors |
                                          update_JxW_values);
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell()), face_dofs;
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
@@ -559,9 +562,15 @@ namespace fdem
             {
               fe_face_values.reinit(cell, f);
               cell->get_dof_indices(dofs);
+              // The face's own dofs: with FE_SimplexP, deal.II 9.4's
+              // has_support_on_face() also answered true for dofs off the
+              // face (they were listed as unpaired interface nodes).
+              face_dofs.resize(fe.n_dofs_per_face(f));
+              cell->face(f)->get_dof_indices(face_dofs);
+              std::sort(face_dofs.begin(), face_dofs.end());
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                 {
-                  if (!fe.has_support_on_face(i, f))
+                  if (!std::binary_search(face_dofs.begin(), face_dofs.end(), dofs[i]))
                     continue;
                   const auto [component, base] = fe.system_to_component_index(i);
                   const types::global_dof_index first =
@@ -586,9 +595,18 @@ namespace fdem
                         fe_face_values.JxW(q);
                       node.area += phi_JxW;
                       node.area_normal += phi_JxW * fe_face_values.normal_vector(q);
+                      node.adjacent_area += fe_face_values.JxW(q);
                     }
                 }
             }
+      // The vertices of quadratic triangles have the weight zero: make it
+      // exactly zero, not round-off of either sign.
+      for (InterfaceNode<dim> &node : nodes)
+        if (std::abs(node.area) <= 1e-10 * node.adjacent_area)
+          {
+            node.area        = 0;
+            node.area_normal = 0;
+          }
       return nodes;
     }
 
@@ -598,7 +616,7 @@ namespace fdem
                                       const unsigned int    material_id) const
     {
       Vector<double> residual(dof_handler.n_dofs());
-      CellScratch    scratch(mapping, fe);
+      CellScratch    scratch(mapping, fe, element_family);
       Vector<double> cell_u(fe.n_dofs_per_cell()), cell_residual(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (material_id == numbers::invalid_unsigned_int ||

@@ -69,5 +69,18 @@ namespace fdem
       dgetrs_(&no_transpose, &n, &one, lu.data(), &n, pivots.data(), b.data(), &n, &solve_info);
       AssertThrow(solve_info == 0, dealii::ExcInternalError());
     }
+
+    void
+    DenseLU::solve(double *columns, const unsigned int n_rhs, const bool transpose) const
+    {
+      Assert(factorized(), dealii::ExcInternalError());
+      if (n == 0 || n_rhs == 0)
+        return;
+      const char trans      = transpose ? 'T' : 'N';
+      const int  nrhs       = n_rhs;
+      int        solve_info = 0;
+      dgetrs_(&trans, &n, &nrhs, lu.data(), &n, pivots.data(), columns, &n, &solve_info);
+      AssertThrow(solve_info == 0, dealii::ExcInternalError());
+    }
   } // namespace contact
 } // namespace fdem

@@ -68,9 +68,18 @@ namespace fdem
 
       const auto nodes_I = block_I.interface_nodes(face_group);
       const auto nodes_J = block_J.interface_nodes(face_group);
+      // Nodes of zero weight (the vertices of the quadratic triangles of
+      // P2 tetrahedra) get no pair: a uniform traction puts no consistent
+      // force on them, and as pairs with forces near zero their statuses
+      // chattered (the wedge's status iteration did not converge,
+      // doc/theory.md). Contact is held at the other nodes.
       std::vector<bool> used_J(nodes_J.size(), false);
+      for (unsigned int j = 0; j < nodes_J.size(); ++j)
+        used_J[j] = (nodes_J[j].area == 0);
       for (const auto &a : nodes_I)
         {
+          if (a.area == 0)
+            continue;
           // The partner: the node of J along J's normal with the smallest
           // gap, within the search distance. Matching tolerances scale with
           // the local node spacing.
@@ -111,8 +120,8 @@ namespace fdem
           pair.initial_gap  = std::max(0.0, best_gap);
           interface.pairs.push_back(pair);
         }
-      for (const bool used : used_J)
-        interface.n_unpaired_J += used ? 0 : 1;
+      for (unsigned int j = 0; j < nodes_J.size(); ++j)
+        interface.n_unpaired_J += (used_J[j] || nodes_J[j].area == 0) ? 0 : 1;
 
       AssertThrow(!interface.pairs.empty(),
                   ExcMessage("Interfaces/" + name +

@@ -2,8 +2,6 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/contact/mixed_system.h>
 
-#include <fdem/contact/dense_lu.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -238,39 +236,26 @@ namespace fdem
           rhs[n_forces + r] = -rigid_loads[r];
         }
 
-      // Scale rows and columns so that forces and rigid motions, whose
-      // units differ, weigh alike in the factorisation and in the condition
-      // estimate.
-      Vector<double> scale(n);
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          double s = 0;
-          for (unsigned int j = 0; j < n; ++j)
-            s = std::max({s, std::abs(matrix(i, j)), std::abs(matrix(j, i))});
-          scale[i] = s > 0 ? 1.0 / std::sqrt(s) : 1.0;
-        }
-      std::vector<double> column_major(static_cast<std::size_t>(n) * n);
-      for (unsigned int j = 0; j < n; ++j)
-        for (unsigned int i = 0; i < n; ++i)
-          column_major[static_cast<std::size_t>(j) * n + i] =
-            matrix(i, j) * scale[i] * scale[j];
-      const DenseLU lu(n, std::move(column_major));
+      // The rows and columns are scaled so that forces and rigid motions,
+      // whose units differ, weigh alike in the factorisation and in the
+      // condition estimate; the factors of an earlier system are reused
+      // while few rows have changed (ReusableLU).
+      const ReusableLU::Result result = lu.solve(matrix, rhs);
 
       ContactSolution solution;
       solution.forces.reinit(n_forces);
       solution.rigid_motions.reinit(n_rigid);
       solution.relative_displacements = external_gap;
-      solution.reciprocal_condition   = lu.reciprocal_condition_number();
-      // Below this the solution has no correct digit left.
-      solution.solved = lu.factorized() && solution.reciprocal_condition > 1e-14;
+      solution.reciprocal_condition   = result.reciprocal_condition;
+      solution.factorized             = result.factorized;
+      solution.n_changed_rows         = result.n_changed_rows;
+      solution.why_factorized         = result.why_factorized;
+      solution.reuse_method           = result.method != nullptr ? result.method : "";
+      // Below rcond = 1e-14 the solution has no correct digit left.
+      solution.solved = result.solved;
       if (!solution.solved)
         return solution;
 
-      for (unsigned int i = 0; i < n; ++i)
-        rhs[i] *= scale[i];
-      lu.solve(rhs);
-      for (unsigned int i = 0; i < n; ++i)
-        rhs[i] *= scale[i];
       for (unsigned int i = 0; i < n_forces; ++i)
         solution.forces[i] = rhs[i];
       for (unsigned int i = 0; i < n_rigid; ++i)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <string>
 
 namespace fdem
 {
@@ -175,6 +176,7 @@ namespace fdem
           ContactSolution solution = system.solve(states, strengths);
           StatusIterationRecord record;
           record.reciprocal_condition = solution.reciprocal_condition;
+          record.factorized           = solution.factorized;
           // With every pair open nothing holds a free block, e.g. one that
           // starts above its gapped support: close them all (the gaps close
           // under the load) and let tension reopen them. Once per pair. (With
@@ -350,7 +352,11 @@ namespace fdem
           if (dim == 3)
             log << ", slip directions turned up to " << std::setprecision(3) << record.max_turn
                 << " deg" << std::setprecision(6);
-          log << std::endl;
+          log << "; " << solution.n_changed_rows << " rows changed, LU "
+              << (solution.factorized ?
+                    std::string("factorised: ") + solution.why_factorized :
+                    std::string("reused: ") + solution.reuse_method)
+              << std::endl;
 
           if (record.n_changes == 0)
             {

@@ -23,20 +23,23 @@ namespace fdem
        * Element size @p size_near on @p curves and up to @p fine_distance
        * from them, then growing linearly with the distance to @p size_far.
        * The growth rate of 0.25 keeps neighbouring elements within about 25%
-       * of each other's size. The sizes are those of the final mesh: Gmsh
-       * meshes at twice the size and then subdivides (see
-       * set_unstructured_quad_options()).
+       * of each other's size. The sizes are those of the final mesh: for
+       * quadrilaterals Gmsh meshes at twice the size and then subdivides
+       * (see set_unstructured_quad_options()); triangles (@p subdivided
+       * false) are meshed at the size itself.
        */
       void
       set_size_field(const std::vector<int> &curves,
                      const double            size_near,
                      const double            size_far,
-                     const double            fine_distance = 0)
+                     const double            fine_distance = 0,
+                     const bool              subdivided    = true)
       {
         namespace field       = gmsh::model::mesh::field;
         const double growth   = 0.25;
-        const double near     = 2 * size_near;
-        const double far      = 2 * size_far;
+        const double factor   = subdivided ? 2 : 1;
+        const double near     = factor * size_near;
+        const double far      = factor * size_far;
         const int    distance = field::add("Distance");
         field::setNumbers(distance,
                           "CurvesList",
@@ -73,6 +76,19 @@ namespace fdem
         gmsh::option::setNumber("Mesh.RecombineAll", 1);
         gmsh::option::setNumber("Mesh.RecombinationAlgorithm", 1);
         gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 1);
+      }
+
+      /**
+       * Frontal-Delaunay triangles, neither recombined nor subdivided (Gmsh
+       * keeps options from one session to the next in a process, so they
+       * are set here, not left at their defaults).
+       */
+      void
+      set_triangle_options()
+      {
+        gmsh::option::setNumber("Mesh.Algorithm", 6);
+        gmsh::option::setNumber("Mesh.RecombineAll", 0);
+        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
       }
 
       /** OpenCASCADE plane surface bounded by the closed polygon @p corners. */
@@ -123,13 +139,17 @@ namespace fdem
                                          half.vertices[v][1]);
             }
 
-        // Swapping the vertices along the cell's first direction undoes the
-        // change of orientation of the reflection.
+        // Swapping the vertices along the cell's first direction (two
+        // corners of a triangle) undoes the change of orientation of the
+        // reflection.
+        const bool triangles =
+          !half.cells.empty() && half.cells[0].vertices.size() == 3;
         for (const auto &cell : half.cells)
           {
             CellData<2> mirrored = cell;
-            for (const unsigned int i : {0u, 1u, 2u, 3u})
-              mirrored.vertices[i] = image[cell.vertices[i ^ 1u]];
+            for (unsigned int i = 0; i < cell.vertices.size(); ++i)
+              mirrored.vertices[i] =
+                image[cell.vertices[triangles ? (i == 0 ? 0 : 3 - i) : (i ^ 1u)]];
             full.cells.push_back(mirrored);
           }
 
@@ -147,7 +167,8 @@ namespace fdem
             }
         full.face_group_names.erase(full.face_group_names.begin() + axis);
 
-        GridTools::consistently_order_cells(full.cells);
+        if (!triangles)
+          GridTools::consistently_order_cells(full.cells);
         return full;
       }
 
@@ -274,10 +295,18 @@ namespace fdem
       add_physical_group(1, bottom, "bottom");
 
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
+        const bool triangles =
+          slope.element_shape ==
+          parameters::GeometryParameters::ElementShape::simplex;
         set_size_field(sliding,
                        slope.mesh_size_on_sliding_surface,
-                       slope.mesh_size);
-        set_unstructured_quad_options();
+                       slope.mesh_size,
+                       0,
+                       !triangles);
+        if (triangles)
+          set_triangle_options();
+        else
+          set_unstructured_quad_options();
         gmsh::model::mesh::generate(2);
       });
       return extract_current_gmsh_model<2>(name);
@@ -362,8 +391,13 @@ namespace fdem
             geo::addPlaneSurface({geo::addCurveLoop(top_loop)});
           geo::synchronize();
 
+          // Quadrilaterals: one segment, halved by the subdivision;
+          // triangles: the two segments themselves.
+          const bool triangles =
+            hertz.element_shape ==
+            parameters::GeometryParameters::ElementShape::simplex;
           for (const int curve : contact_curves)
-            gmsh::model::mesh::setTransfiniteCurve(curve, 2);
+            gmsh::model::mesh::setTransfiniteCurve(curve, triangles ? 3 : 2);
 
           add_physical_group(2, {cylinder}, "cylinder");
           add_physical_group(2, {foundation}, "foundation");
@@ -381,8 +415,12 @@ namespace fdem
           set_size_field(contact_curves,
                          hertz.contact_zone_width / n,
                          hertz.mesh_size,
-                         0.5 * hertz.contact_zone_width);
-          set_unstructured_quad_options();
+                         0.5 * hertz.contact_zone_width,
+                         !triangles);
+          if (triangles)
+            set_triangle_options();
+          else
+            set_unstructured_quad_options();
           gmsh::model::mesh::generate(2);
 
           for (const int curve : contact_curves)
@@ -452,10 +490,16 @@ namespace fdem
               geo::mesh::setTransfiniteCurve(tag, n_elements + 1);
               return tag;
             };
-          const auto quadrilateral = [](const std::vector<int> &curves) {
+          // Structured quadrilaterals, or each split into two triangles
+          // (transfinite without recombination).
+          const bool triangles =
+            inclined_block.element_shape ==
+            parameters::GeometryParameters::ElementShape::simplex;
+          const auto quadrilateral = [&](const std::vector<int> &curves) {
             const int tag = geo::addPlaneSurface({geo::addCurveLoop(curves)});
             geo::mesh::setTransfiniteSurface(tag);
-            geo::mesh::setRecombine(2, tag);
+            if (!triangles)
+              geo::mesh::setRecombine(2, tag);
             return tag;
           };
 
@@ -504,6 +548,8 @@ namespace fdem
           add_physical_group(1, {top[0], top[2]}, "foundation surface");
           add_physical_group(1, base, "foundation base");
           add_physical_group(1, {across[0], across[3]}, "foundation ends");
+          if (triangles)
+            set_triangle_options();
           gmsh::model::mesh::generate(2);
         });
       return extract_current_gmsh_model<2>(name);

@@ -330,10 +330,13 @@ namespace fdem
       // Tetrahedra of twice the mesh size in the wedge and up to its
       // inradius from its faces, growing by a quarter of the further
       // distance up to 5 times that size; each is then split into four
-      // hexahedra.
+      // hexahedra. Tetrahedra that are kept have the mesh size.
+      const bool hexahedra =
+        wedge.element_shape ==
+        parameters::GeometryParameters::ElementShape::hypercube;
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
         namespace field       = gmsh::model::mesh::field;
-        const double near     = 2 * wedge.mesh_size;
+        const double near     = (hexahedra ? 2 : 1) * wedge.mesh_size;
         const double far      = 5 * near;
         const int    distance = field::add("Distance");
         field::setNumbers(distance,
@@ -354,11 +357,11 @@ namespace fdem
         gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
 
         // Delaunay tetrahedra, all split into hexahedra (and the triangles
-        // of the surfaces into quadrilaterals, conformingly).
+        // of the surfaces into quadrilaterals, conformingly), or kept.
         gmsh::option::setNumber("Mesh.Algorithm", 6);
         gmsh::option::setNumber("Mesh.Algorithm3D", 1);
         gmsh::option::setNumber("Mesh.RecombineAll", 0);
-        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 2);
+        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", hexahedra ? 2 : 0);
         gmsh::model::mesh::generate(3);
       });
       return extract_current_gmsh_model<3>(name);

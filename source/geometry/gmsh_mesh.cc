@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <sstream>
 #include <unordered_map>
@@ -32,6 +33,21 @@ namespace fdem
       gmsh::option::setNumber("General.Terminal", 0);
       // 2 = throw the error message as a std::string; run() converts it.
       gmsh::option::setNumber("General.AbortOnError", 2);
+      // Gmsh keeps its options from one session to the next within a
+      // process: put those the generators change back to Gmsh's defaults,
+      // so that e.g. a .geo file of triangles read after the slope
+      // generator is not recombined, nor split after the wedge generator.
+      for (const auto &[option, value] :
+           std::initializer_list<std::pair<const char *, double>>{
+             {"Mesh.Algorithm", 6},
+             {"Mesh.Algorithm3D", 1},
+             {"Mesh.RecombineAll", 0},
+             {"Mesh.RecombinationAlgorithm", 1},
+             {"Mesh.SubdivisionAlgorithm", 0},
+             {"Mesh.MeshSizeExtendFromBoundary", 1},
+             {"Mesh.MeshSizeFromPoints", 1},
+             {"Mesh.MeshSizeFromCurvature", 0}})
+        gmsh::option::setNumber(option, value);
     }
 
 
@@ -64,20 +80,30 @@ namespace fdem
     namespace
     {
       /**
-       * Index in Gmsh's corner order of deal.II's (lexicographic) corner i
-       * of a line, quadrilateral or hexahedron; the map is its own inverse.
+       * Index in Gmsh's corner order of deal.II's corner i of a cell with
+       * @p n_corners corners: the map is its own inverse. deal.II numbers the
+       * corners of a quadrilateral or hexahedron lexicographically; those of
+       * lines, triangles and tetrahedra are in Gmsh's order.
        */
       unsigned int
-      gmsh_corner(const int structdim, const unsigned int i)
+      gmsh_corner(const int          structdim,
+                  const unsigned int n_corners,
+                  const unsigned int i)
       {
         static constexpr std::array<unsigned int, 8> quad_or_hex = {
           {0, 1, 3, 2, 4, 5, 7, 6}};
-        return (structdim == 1) ? i : quad_or_hex[i];
+        const bool hypercube = (n_corners == (1u << structdim));
+        return (structdim == 1 || !hypercube) ? i : quad_or_hex[i];
       }
 
-      /** Corners of a line/quad/hex element type, 0 for other types. */
+      /**
+       * Corners of an element type of dimension @p structdim that deal.II
+       * takes: a line, a quadrilateral or triangle, a hexahedron or
+       * tetrahedron (of any order). 0 for other types (prisms, pyramids,
+       * points, or an element of another dimension).
+       */
       unsigned int
-      n_corners_if_tensor_product(const int element_type, const int structdim)
+      n_corners_if_supported(const int element_type, const int structdim)
       {
         std::string         name;
         int                 element_dim, order, n_nodes, n_primary_nodes;
@@ -90,7 +116,8 @@ namespace fdem
                                                 local_coordinates,
                                                 n_primary_nodes);
         return (element_dim == structdim &&
-                n_primary_nodes == (1 << structdim)) ?
+                (n_primary_nodes == (1 << structdim) ||
+                 n_primary_nodes == structdim + 1)) ?
                  n_primary_nodes :
                  0;
       }
@@ -98,15 +125,15 @@ namespace fdem
       /**
        * Elements of a physical group as corner node tags in deal.II order,
        * with their element tags. Higher-order elements give their corners,
-       * which Gmsh lists first.
+       * which Gmsh lists first. Throws @p error_prefix for elements deal.II
+       * does not take.
        */
       template <int structdim>
       void
-      get_group_elements(
-        const int                                               group_tag,
-        const std::string                                      &error_prefix,
-        std::vector<std::size_t>                               &element_tags,
-        std::vector<std::array<std::size_t, (1 << structdim)>> &corner_tags)
+      get_group_elements(const int                              group_tag,
+                         const std::string                     &error_prefix,
+                         std::vector<std::size_t>              &element_tags,
+                         std::vector<std::vector<std::size_t>> &corner_tags)
       {
         std::vector<int> entities;
         gmsh::model::getEntitiesForPhysicalGroup(structdim,
@@ -120,17 +147,18 @@ namespace fdem
               types, tags, nodes, structdim, entity);
             for (unsigned int t = 0; t < types.size(); ++t)
               {
-                AssertThrow(n_corners_if_tensor_product(types[t], structdim) >
-                              0,
-                            ExcMessage(error_prefix));
+                const unsigned int n_corners =
+                  n_corners_if_supported(types[t], structdim);
+                AssertThrow(n_corners > 0, ExcMessage(error_prefix));
                 const std::size_t n_nodes = nodes[t].size() / tags[t].size();
                 for (unsigned int e = 0; e < tags[t].size(); ++e)
                   {
                     element_tags.push_back(tags[t][e]);
-                    std::array<std::size_t, (1 << structdim)> corners;
-                    for (unsigned int i = 0; i < corners.size(); ++i)
+                    std::vector<std::size_t> corners(n_corners);
+                    for (unsigned int i = 0; i < n_corners; ++i)
                       corners[i] =
-                        nodes[t][e * n_nodes + gmsh_corner(structdim, i)];
+                        nodes[t][e * n_nodes +
+                                 gmsh_corner(structdim, n_corners, i)];
                     corner_tags.push_back(corners);
                   }
               }
@@ -176,6 +204,27 @@ namespace fdem
           }
         return range;
       }
+
+      /**
+       * Signed measure of a simplex relative to the product of its edges
+       * from corner 0: positive in deal.II's orientation, negative in the
+       * opposite one, about zero for a degenerate simplex.
+       */
+      template <int dim>
+      double
+      relative_simplex_measure(const std::vector<Point<dim>> &vertices,
+                               const CellData<dim>           &cell)
+      {
+        Tensor<2, dim> edges;
+        double         scale = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            edges[d] = vertices[cell.vertices[d + 1]] -
+                       vertices[cell.vertices[0]];
+            scale *= edges[d].norm();
+          }
+        return (scale > 0) ? determinant(edges) / scale : 0.;
+      }
     } // namespace
 
 
@@ -185,8 +234,8 @@ namespace fdem
     extract_current_gmsh_model(const std::string &source)
     {
       static_assert(dim == 2 || dim == 3, "Only 2D and 3D meshes.");
-      constexpr unsigned int n_cell_corners = 1 << dim;
-      const std::string cell_kind = (dim == 2) ? "quadrilaterals" : "hexahedra";
+      const std::string hypercubes = (dim == 2) ? "quadrilaterals" : "hexahedra";
+      const std::string simplices  = (dim == 2) ? "triangles" : "tetrahedra";
 
       MeshDescription<dim> mesh;
       mesh.source = source;
@@ -209,7 +258,7 @@ namespace fdem
 
       // Cells by block; an element may be listed in one block only.
       std::map<std::size_t, unsigned int>                  block_of_element;
-      std::vector<std::array<std::size_t, n_cell_corners>> cell_corner_tags;
+      std::vector<std::vector<std::size_t>>                cell_corner_tags;
       std::vector<unsigned int>                            cell_blocks;
       for (const auto &group : block_groups)
         {
@@ -219,9 +268,8 @@ namespace fdem
           get_group_elements<dim>(
             group.second,
             source + ": block '" + mesh.block_names.back() +
-              "' has elements that are not " + cell_kind +
-              "; mesh with Recombine (and Mesh.SubdivisionAlgorithm = " +
-              (dim == 2 ? "1" : "2") + " for an all-" + cell_kind + " mesh).",
+              "' has elements that are neither " + simplices + " nor " +
+              hypercubes + (dim == 3 ? " (prisms or pyramids)." : "."),
             element_tags,
             cell_corner_tags);
           for (const std::size_t tag : element_tags)
@@ -261,19 +309,47 @@ namespace fdem
           }
       }
 
+      // One element shape: a mesh of simplices and hypercubes would need
+      // hp finite elements (FE_SimplexP and FE_Q on one mesh).
+      const bool simplex =
+        !cell_corner_tags.empty() && cell_corner_tags[0].size() == dim + 1;
+      for (unsigned int c = 0; c < cell_corner_tags.size(); ++c)
+        AssertThrow((cell_corner_tags[c].size() == dim + 1) == simplex,
+                    ExcMessage(source + ": the mesh mixes " + simplices +
+                               " and " + hypercubes +
+                               " (block '" + mesh.block_names[cell_blocks[c]] +
+                               "'); mixed meshes are not supported: mesh "
+                               "all blocks with Recombine, or none."));
+
       for (unsigned int c = 0; c < cell_corner_tags.size(); ++c)
         {
-          CellData<dim> cell(n_cell_corners);
-          for (unsigned int i = 0; i < n_cell_corners; ++i)
+          const unsigned int n_corners = cell_corner_tags[c].size();
+          CellData<dim>      cell(n_corners);
+          for (unsigned int i = 0; i < n_corners; ++i)
             cell.vertices[i] = vertex_of_node.at(cell_corner_tags[c][i]);
           cell.material_id = cell_blocks[c];
 
           // Gmsh's cells may have either orientation (it follows each
-          // surface's normal); a cell that has neither is unusable.
-          const auto   sines     = corner_sine_range(mesh.vertices, cell);
+          // surface's normal); a cell that has neither is unusable. A
+          // simplex of the other orientation is turned over here (corners
+          // 1 and 2 swapped); hypercubes by deal.II below.
           const double tolerance = 1e-10;
-          if (!(sines.first > -tolerance && sines.second > tolerance) &&
-              !(sines.second < tolerance && sines.first < -tolerance))
+          bool         valid     = true;
+          if (simplex)
+            {
+              const double measure =
+                relative_simplex_measure(mesh.vertices, cell);
+              valid = std::abs(measure) > tolerance;
+              if (measure < 0)
+                std::swap(cell.vertices[1], cell.vertices[2]);
+            }
+          else
+            {
+              const auto sines = corner_sine_range(mesh.vertices, cell);
+              valid = (sines.first > -tolerance && sines.second > tolerance) ||
+                      (sines.second < tolerance && sines.first < -tolerance);
+            }
+          if (!valid)
             {
               std::ostringstream where;
               where << mesh.vertices[cell.vertices[0]];
@@ -298,16 +374,23 @@ namespace fdem
             group_name(dim - 1, group.second, "face group");
           mesh.face_group_names.push_back(name);
           std::vector<std::size_t>                                 element_tags;
-          std::vector<std::array<std::size_t, n_cell_corners / 2>> corner_tags;
+          std::vector<std::vector<std::size_t>>                    corner_tags;
           get_group_elements<dim - 1>(group.second,
                                       source + ": face group '" + name +
                                         "' has elements that are not " +
                                         (dim == 2 ? "lines." :
+                                         simplex  ? "triangles." :
                                                     "quadrilaterals."),
                                       element_tags,
                                       corner_tags);
           for (const auto &corners : corner_tags)
             {
+              AssertThrow(dim == 2 || (corners.size() == dim) == simplex,
+                          ExcMessage(source + ": face group '" + name +
+                                     "' has " +
+                                     (simplex ? "quadrilaterals" : "triangles") +
+                                     ", but the cells are " +
+                                     (simplex ? simplices : hypercubes) + "."));
               CellData<dim - 1> face(corners.size());
               for (unsigned int i = 0; i < corners.size(); ++i)
                 {
@@ -323,8 +406,13 @@ namespace fdem
             }
         }
 
-      GridTools::invert_cells_with_negative_measure(mesh.vertices, mesh.cells);
-      GridTools::consistently_order_cells(mesh.cells);
+      // deal.II orients the faces of simplices itself.
+      if (!simplex)
+        {
+          GridTools::invert_cells_with_negative_measure(mesh.vertices,
+                                                        mesh.cells);
+          GridTools::consistently_order_cells(mesh.cells);
+        }
       return mesh;
     }
 
@@ -405,9 +493,10 @@ namespace fdem
           {
             const unsigned int e = entity_index(object);
             tags[e].push_back(++element_tag);
-            for (unsigned int i = 0; i < object.vertices.size(); ++i)
-              nodes[e].push_back(object.vertices[gmsh_corner(structdim, i)] +
-                                 1);
+            const unsigned int n_corners = object.vertices.size();
+            for (unsigned int i = 0; i < n_corners; ++i)
+              nodes[e].push_back(
+                object.vertices[gmsh_corner(structdim, n_corners, i)] + 1);
           }
         for (unsigned int e = 0; e < entities.size(); ++e)
           if (!tags[e].empty())
@@ -416,16 +505,19 @@ namespace fdem
                                                  tags[e],
                                                  nodes[e]);
       };
-      // Gmsh element types: 1 line, 3 quadrilateral, 5 hexahedron.
+      // Gmsh element types: 1 line, 2 triangle, 3 quadrilateral,
+      // 4 tetrahedron, 5 hexahedron.
+      const bool simplex =
+        !mesh.cells.empty() && mesh.cells[0].vertices.size() == dim + 1;
       add_elements(mesh.cells,
                    block_entities,
                    dim,
-                   (dim == 2) ? 3 : 5,
+                   (dim == 2) ? (simplex ? 2 : 3) : (simplex ? 4 : 5),
                    [](const CellData<dim> &cell) { return cell.material_id; });
       add_elements(mesh.faces,
                    face_entities,
                    dim - 1,
-                   (dim == 2) ? 1 : 3,
+                   (dim == 2) ? 1 : (simplex ? 2 : 3),
                    [](const CellData<dim - 1> &face) {
                      return face.boundary_id;
                    });

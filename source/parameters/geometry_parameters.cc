@@ -245,6 +245,14 @@ namespace fdem
                             Patterns::Double(0),
                             "Element size on the sliding surface (m); 0 means "
                             "equal to Mesh size.");
+          prm.declare_entry(
+            "Element shape",
+            "quadrilateral",
+            Patterns::Selection("quadrilateral|triangle"),
+            "Shape of the cells: quadrilaterals (FE_Q elements; Gmsh's "
+            "triangles of twice the size recombined and subdivided), or "
+            "Gmsh's Frontal-Delaunay triangles of the size itself "
+            "(FE_SimplexP).");
         }
         prm.leave_subsection();
 
@@ -291,6 +299,15 @@ namespace fdem
             "Model the whole cylinder width (x from -r to r) on a foundation "
             "from -W to W instead of the half model x >= 0; needed for "
             "tangential loads, e.g. Cattaneo-Mindlin partial slip.");
+          prm.declare_entry(
+            "Element shape",
+            "quadrilateral",
+            Patterns::Selection("quadrilateral|triangle"),
+            "Shape of the cells: quadrilaterals (FE_Q elements; Gmsh's "
+            "triangles of twice the size recombined and subdivided), or "
+            "Gmsh's Frontal-Delaunay triangles of the size itself "
+            "(FE_SimplexP). Either way the contact zone has Elements in "
+            "contact zone element edges on each side.");
         }
         prm.leave_subsection();
 
@@ -331,6 +348,13 @@ namespace fdem
             Patterns::Integer(1),
             "Number of elements of the block normal to the "
             "plane; the foundation gets elements of that size.");
+          prm.declare_entry(
+            "Element shape",
+            "quadrilateral",
+            Patterns::Selection("quadrilateral|triangle"),
+            "Shape of the cells: quadrilaterals (FE_Q elements), or "
+            "triangles (FE_SimplexP), two per quadrilateral of the same "
+            "structured grid.");
         }
         prm.leave_subsection();
 
@@ -373,9 +397,17 @@ namespace fdem
             Patterns::Double(0),
             "Element size h in and near the wedge (m): Gmsh meshes "
             "tetrahedra of size 2 h and splits each into four hexahedra, "
-            "whose edges are about h/3 to h long (0.65 h on average). In the "
-            "rock the size grows with the distance from the wedge (by a "
+            "whose edges are about h/3 to h long (0.65 h on average), or "
+            "with Element shape = tetrahedron keeps tetrahedra of size h. In "
+            "the rock the size grows with the distance from the wedge (by a "
             "quarter of the distance) up to 5 h.");
+          prm.declare_entry(
+            "Element shape",
+            "hexahedron",
+            Patterns::Selection("hexahedron|tetrahedron"),
+            "Shape of the cells: hexahedra (FE_Q elements, Gmsh's Delaunay "
+            "tetrahedra each split into four), or the Delaunay tetrahedra "
+            "themselves (FE_SimplexP).");
           prm.declare_entry(
             "Rock extent",
             "0",
@@ -554,6 +586,9 @@ namespace fdem
             prm.get_double("Mesh size on sliding surface");
           if (slope.mesh_size_on_sliding_surface == 0)
             slope.mesh_size_on_sliding_surface = slope.mesh_size;
+          slope.element_shape =
+            (prm.get("Element shape") == "triangle") ? ElementShape::simplex :
+                                                       ElementShape::hypercube;
         }
         prm.leave_subsection();
 
@@ -567,6 +602,9 @@ namespace fdem
             prm.get_integer("Elements in contact zone");
           hertz.mesh_size  = prm.get_double("Mesh size");
           hertz.full_model = prm.get_bool("Full model");
+          hertz.element_shape =
+            (prm.get("Element shape") == "triangle") ? ElementShape::simplex :
+                                                       ElementShape::hypercube;
         }
         prm.leave_subsection();
 
@@ -583,6 +621,9 @@ namespace fdem
             prm.get_integer("Elements along length");
           inclined_block.n_elements_across_height =
             prm.get_integer("Elements across height");
+          inclined_block.element_shape =
+            (prm.get("Element shape") == "triangle") ? ElementShape::simplex :
+                                                       ElementShape::hypercube;
         }
         prm.leave_subsection();
 
@@ -595,6 +636,9 @@ namespace fdem
           wedge.plane_b      = parse_orientation(prm.get("Plane B"));
           wedge.mesh_size    = prm.get_double("Mesh size");
           wedge.rock_extent  = prm.get_double("Rock extent");
+          wedge.element_shape =
+            (prm.get("Element shape") == "tetrahedron") ? ElementShape::simplex :
+                                                          ElementShape::hypercube;
           if (wedge.rock_extent == 0)
             wedge.rock_extent = 2 * wedge.slope_height;
         }

@@ -6,6 +6,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_fe.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/numerics/data_out.h>
@@ -14,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <map>
+#include <memory>
 #include <numeric>
 
 namespace fdem
@@ -255,6 +259,41 @@ namespace fdem
           }
     }
 
+    namespace
+    {
+      /**
+       * The faces of @p volume on boundary part @p id as a mesh of
+       * dimension dim-1: GridGenerator::extract_boundary_mesh() of deal.II
+       * 9.4 takes hypercubes only (it crashes on tetrahedra).
+       */
+      template <int dim>
+      void
+      extract_simplex_faces(const Triangulation<dim> &    volume,
+                            const types::boundary_id      id,
+                            Triangulation<dim - 1, dim> &surface)
+      {
+        std::vector<Point<dim>>         vertices;
+        std::map<unsigned int, unsigned int> surface_vertex;
+        std::vector<CellData<dim - 1>>  cells;
+        for (const auto &cell : volume.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary() && face->boundary_id() == id)
+              {
+                CellData<dim - 1> surface_cell(face->n_vertices());
+                for (const unsigned int v : face->vertex_indices())
+                  {
+                    const auto [it, is_new] =
+                      surface_vertex.emplace(face->vertex_index(v), vertices.size());
+                    if (is_new)
+                      vertices.push_back(face->vertex(v));
+                    surface_cell.vertices[v] = it->second;
+                  }
+                cells.push_back(surface_cell);
+              }
+        surface.create_triangulation(vertices, cells, SubCellData());
+      }
+    } // namespace
+
     template <int dim>
     std::string
     write_interface_vtu(const blocks::ElasticBlock<dim> &   block_J,
@@ -265,16 +304,33 @@ namespace fdem
     {
       // The interface as a mesh of dimension dim-1 cut from block J.
       Triangulation<dim - 1, dim> surface;
-      GridGenerator::extract_boundary_mesh(static_cast<const Triangulation<dim> &>(
-                                             block_J.triangulation),
-                                           surface,
-                                           {interface.face_group});
-      const FE_Q<dim - 1, dim> fe(block_J.fe.degree);
+      if (block_J.element_family.simplex)
+        extract_simplex_faces(block_J.triangulation, interface.face_group, surface);
+      else
+        GridGenerator::extract_boundary_mesh(static_cast<const Triangulation<dim> &>(
+                                               block_J.triangulation),
+                                             surface,
+                                             {interface.face_group});
+      // Triangles in 3D on a mesh of tetrahedra; quadrilaterals or lines
+      // otherwise (the faces of triangles are lines too).
+      const unsigned int degree = block_J.fe.degree;
+      std::unique_ptr<FiniteElement<dim - 1, dim>> fe;
+      std::unique_ptr<Mapping<dim - 1, dim>>       mapping;
+      if (dim == 3 && block_J.element_family.simplex)
+        {
+          fe      = std::make_unique<FE_SimplexP<dim - 1, dim>>(degree);
+          mapping = std::make_unique<MappingFE<dim - 1, dim>>(
+            FE_SimplexP<dim - 1, dim>(1));
+        }
+      else
+        {
+          fe      = std::make_unique<FE_Q<dim - 1, dim>>(degree);
+          mapping = std::make_unique<MappingQ<dim - 1, dim>>(1);
+        }
       DoFHandler<dim - 1, dim> dof_handler(surface);
-      dof_handler.distribute_dofs(fe);
-      const MappingQ<dim - 1, dim> mapping(1);
-      std::vector<Point<dim>>      support_points(dof_handler.n_dofs());
-      DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
+      dof_handler.distribute_dofs(*fe);
+      std::vector<Point<dim>> support_points(dof_handler.n_dofs());
+      DoFTools::map_dofs_to_support_points(*mapping, dof_handler, support_points);
 
       const std::vector<std::string> names = {"normal_force",
                                               "tangential_force",
@@ -312,7 +368,7 @@ namespace fdem
       data_out.attach_dof_handler(dof_handler);
       for (unsigned int f = 0; f < names.size(); ++f)
         data_out.add_data_vector(fields[f], names[f]);
-      data_out.build_patches(mapping, fe.degree);
+      data_out.build_patches(*mapping, degree);
       const std::string name = "interface-" + file_stem(interface.name) + suffix + ".vtu";
       if (Utilities::MPI::this_mpi_process(block_J.triangulation.get_communicator()) != 0)
         return name;

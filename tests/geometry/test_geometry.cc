@@ -986,8 +986,9 @@ TEST(GmshFile, Errors)
   expect_error([&] { geometry::read_gmsh_file<2>(missing); },
                "Gmsh file '" + missing + "': is missing or cannot be read.");
   expect_error(
-    [] { geometry::read_gmsh_file<2>(data_directory + "/triangles.geo"); },
-    "has elements that are not quadrilaterals; mesh with Recombine");
+    [] { geometry::read_gmsh_file<2>(data_directory + "/mixed.geo"); },
+    "the mesh mixes triangles and quadrilaterals (block 'rock'); mixed "
+    "meshes are not supported");
   expect_error(
     [] { geometry::read_gmsh_file<2>(data_directory + "/no_groups.geo"); },
     "no_groups.geo': there is no physical group of dimension 2");
@@ -1868,4 +1869,124 @@ TEST(HertzSphere, BadInputs)
                "Geometry/Hertz sphere/Load height: must be at most Radius");
   expect_error([&] { parse(prefix + " set Foundation width = 40\nend"); },
                "Geometry/Hertz sphere/Foundation width: must be larger");
+}
+
+
+
+TEST(Simplices, GmshTrianglesAreTurnedToPositiveOrientation)
+{
+  // triangles.geo: the unit square, its triangles clockwise in Gmsh.
+  const auto mesh =
+    geometry::read_gmsh_file<2>(data_directory + "/triangles.geo");
+  ASSERT_FALSE(mesh.cells.empty());
+  double area = 0;
+  for (const auto &cell : mesh.cells)
+    {
+      ASSERT_EQ(cell.vertices.size(), 3u);
+      EXPECT_GT(measure(mesh, cell), 0);
+      area += measure(mesh, cell);
+    }
+  EXPECT_NEAR(area, 1, 1e-12);
+  Triangulation<2> triangulation;
+  geometry::create_block_triangulation(mesh, {0}, triangulation);
+  EXPECT_EQ(triangulation.n_active_cells(), mesh.cells.size());
+  EXPECT_FALSE(triangulation.all_reference_cells_are_hyper_cube());
+}
+
+
+
+TEST(Simplices, WedgeOfTetrahedra)
+{
+  // Element shape = tetrahedron keeps Gmsh's tetrahedra: positive volumes,
+  // the wedge filled exactly, triangles on the planes shared by a wedge
+  // cell and a rock cell, and deal.II takes both blocks.
+  const Parameters geometry =
+    parse("set Source = wedge\nsubsection Wedge\nset Mesh size = 4\n"
+          "set Element shape = tetrahedron\nend");
+  const auto mesh = geometry::make_wedge_mesh(geometry.wedge);
+  EXPECT_EQ(mesh.block_names, wedge_blocks);
+  EXPECT_EQ(mesh.face_group_names, wedge_groups);
+  for (const auto &cell : mesh.cells)
+    {
+      ASSERT_EQ(cell.vertices.size(), 4u);
+      EXPECT_GT(measure(mesh, cell), 0);
+    }
+  const double exact =
+    tetrahedron_volume(exact_wedge_corners(geometry.wedge));
+  EXPECT_NEAR(block_area(mesh, 0), exact, 1e-9 * exact);
+
+  using Triangle = std::array<unsigned int, 3>;
+  std::array<std::set<Triangle>, 2> block_faces;
+  for (const auto &cell : mesh.cells)
+    for (unsigned int skip = 0; skip < 4; ++skip)
+      {
+        Triangle     face;
+        unsigned int k = 0;
+        for (unsigned int v = 0; v < 4; ++v)
+          if (v != skip)
+            face[k++] = cell.vertices[v];
+        std::sort(face.begin(), face.end());
+        block_faces[cell.material_id].insert(face);
+      }
+  const double h = geometry.wedge.slope_height;
+  for (const auto &[group, plane] :
+       {std::make_pair("plane A", geometry.wedge.plane_a),
+        std::make_pair("plane B", geometry.wedge.plane_b)})
+    {
+      const auto faces = faces_of(mesh, group);
+      EXPECT_FALSE(faces.empty());
+      const Tensor<1, 3> n = plane.upward_normal();
+      for (const auto &face : faces)
+        {
+          ASSERT_EQ(face.vertices.size(), 3u);
+          Triangle key = {{face.vertices[0], face.vertices[1], face.vertices[2]}};
+          std::sort(key.begin(), key.end());
+          EXPECT_TRUE(block_faces[0].count(key)) << group;
+          EXPECT_TRUE(block_faces[1].count(key)) << group;
+          for (const unsigned int v : face.vertices)
+            EXPECT_LT(std::abs(n * mesh.vertices[v]), 1e-9 * h) << group;
+        }
+    }
+  for (const unsigned int block : {0u, 1u})
+    {
+      Triangulation<3> triangulation;
+      geometry::create_block_triangulation(mesh, {block}, triangulation);
+      EXPECT_GT(triangulation.n_active_cells(), 0u);
+    }
+}
+
+
+
+TEST(Simplices, HertzFullModelOfTriangles)
+{
+  // Element shape = triangle: the full model of positive triangles, the
+  // mirror image included, with the contact zone's nodes at x_i = i Lc / n
+  // on both sides of the axis.
+  const Parameters geometry =
+    parse("set Source = hertz\nsubsection Hertz\nset Element shape = "
+          "triangle\nset Full model = true\nend");
+  const auto mesh = geometry::make_hertz_mesh(geometry.hertz);
+  for (const auto &cell : mesh.cells)
+    {
+      ASSERT_EQ(cell.vertices.size(), 3u);
+      EXPECT_GT(measure(mesh, cell), 0);
+    }
+  const double       width = geometry.hertz.contact_zone_width;
+  const unsigned int n     = geometry.hertz.n_contact_zone_elements;
+  std::set<long>     ticks;
+  for (const auto &face : faces_of(mesh, "contact surface"))
+    for (const unsigned int v : face.vertices)
+      {
+        const double x = mesh.vertices[v][0] / width * n;
+        EXPECT_NEAR(x, std::round(x), 1e-9) << mesh.vertices[v];
+        ticks.insert(std::lround(x));
+      }
+  // -n, ..., n.
+  EXPECT_EQ(ticks.size(), 2 * n + 1);
+  for (const unsigned int block : {0u, 1u})
+    {
+      Triangulation<2> triangulation;
+      geometry::create_block_triangulation(mesh, {block}, triangulation);
+      EXPECT_GT(triangulation.n_active_cells(), 0u);
+    }
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/blocks/direct_solver.h>
+#include <fdem/blocks/element_family.h>
 #include <fdem/blocks/mumps_schur_solver.h>
 #include <fdem/geometry/mesh_description.h>
 #include <fdem/parameters/model_parameters.h>
@@ -12,7 +13,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
@@ -45,6 +46,13 @@ namespace fdem
       double                                       area = 0;
       /** int_Gamma phi n dGamma with n the block's outward normal. */
       Tensor<1, dim>                               area_normal;
+      /**
+       * Area of the node's faces in the group: the scale against which a
+       * zero weight is recognised. At the vertices of quadratic triangles
+       * (faces of P2 tetrahedra) int phi dGamma = 0 on every face; those
+       * nodes get area = 0 exactly and no pair (contact::make_interface()).
+       */
+      double                                       adjacent_area = 0;
     };
 
     /**
@@ -191,8 +199,12 @@ namespace fdem
 
       std::string                    name;
       parallel::shared::Triangulation<dim> triangulation;
+      /** FE_Q or FE_SimplexP, by the shape of the mesh's cells. */
+      ElementFamily<dim>             element_family;
       FESystem<dim>                  fe;
-      MappingQ<dim>                  mapping;
+      /** Owns the mapping (MappingQ(1) or the linear MappingFE). */
+      std::unique_ptr<const Mapping<dim>> mapping_object;
+      const Mapping<dim> &           mapping;
       DoFHandler<dim>                dof_handler;
       /** Material per block index (the cells' material ids). */
       std::map<unsigned int, parameters::MaterialParameters> materials;
@@ -255,7 +267,9 @@ namespace fdem
       /** FE evaluators and cell arrays for one pass over the cells. */
       struct CellScratch
       {
-        CellScratch(const Mapping<dim> &mapping, const FiniteElement<dim> &fe);
+        CellScratch(const Mapping<dim> &       mapping,
+                    const FiniteElement<dim> & fe,
+                    const ElementFamily<dim> & family);
         FEValues<dim>                        fe_values;
         FEFaceValues<dim>                    fe_face_values;
         FullMatrix<double>                   matrix;

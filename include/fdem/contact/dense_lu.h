@@ -40,6 +40,20 @@ namespace fdem
       void
       solve(dealii::Vector<double> &b) const;
 
+      /**
+       * Solves A X = B (or A^T X = B if @p transpose) in place for the
+       * @p n_rhs columns of @p columns, stored by columns (n x n_rhs).
+       */
+      void
+      solve(double *columns, const unsigned int n_rhs, const bool transpose = false) const;
+
+      /** Size n of the matrix. */
+      unsigned int
+      size() const
+      {
+        return n;
+      }
+
     private:
       int                 n;
       std::vector<double> lu;

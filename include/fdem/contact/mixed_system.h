@@ -5,6 +5,7 @@
 #include <fdem/blocks/elastic_block.h>
 #include <fdem/contact/contact_law.h>
 #include <fdem/contact/interface_pairs.h>
+#include <fdem/contact/reusable_lu.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -31,6 +32,14 @@ namespace fdem
       double reciprocal_condition = 1;
       /** False if the system was singular (no static equilibrium). */
       bool solved = true;
+      /** True if the system was LU-factorised for this solve (not reused). */
+      bool factorized = true;
+      /** Rows that differ from the last factorised system. */
+      unsigned int n_changed_rows = 0;
+      /** Why the system was factorised, if it was (ReusableLU::Result). */
+      const char *why_factorized = "";
+      /** How the factors were reused, if they were. */
+      const char *reuse_method = "";
     };
 
     /**
@@ -97,6 +106,20 @@ namespace fdem
       double
       tangential_stiffness(const unsigned int p) const;
 
+      /** The dense solver: its counts of factorisations and reused solves. */
+      const ReusableLU &
+      dense_solver() const
+      {
+        return lu;
+      }
+
+      /** When the dense solver factorises afresh (tests compare with reuse = false). */
+      ReusableLU::Control &
+      dense_solver_control()
+      {
+        return lu.control;
+      }
+
       /** Number of pairs over all interfaces. */
       unsigned int
       n_pairs() const
@@ -128,6 +151,12 @@ namespace fdem
       /** All pairs of all interfaces, in order, with their blocks. */
       std::vector<const NodePair<dim> *> pairs;
       std::vector<unsigned int>          pair_block_I, pair_block_J;
+      /**
+       * The factors of the last factorised system, reused while few rows
+       * change between solves. Mutable: solve() leaves the system as it is,
+       * the factors only save work (one solve at a time, no threads).
+       */
+      mutable ReusableLU lu;
     };
   } // namespace contact
 } // namespace fdem

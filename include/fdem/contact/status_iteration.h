@@ -36,6 +36,8 @@ namespace fdem
       unsigned int n_stick = 0, n_slip = 0, n_open = 0, n_at_cutoff = 0;
       unsigned int n_changes = 0;
       double       reciprocal_condition = 1;
+      /** False if the solve reused the LU factors of an earlier system. */
+      bool factorized = true;
       /** 3D: the largest turn of a slip direction in this iteration (degrees). */
       double max_turn = 0;
     };

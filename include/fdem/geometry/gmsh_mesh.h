@@ -72,10 +72,12 @@ namespace fdem
      * Convert the mesh of the model currently loaded in Gmsh (a GmshSession
      * must be active). Physical groups of dimension @p dim become the blocks
      * (an unnamed group is called "block <tag>"), those of dimension dim-1
-     * the face groups. Cells must be quadrilaterals (2D) or hexahedra (3D) of
-     * any order; their corner nodes are used. Only vertices of cells are
-     * kept, and the cells are made positively oriented and consistently
-     * ordered. @p source names the model in messages.
+     * the face groups. Cells must be quadrilaterals or triangles (2D),
+     * hexahedra or tetrahedra (3D), of any order, and all of one shape (a
+     * mixed mesh would need hp elements); their corner nodes are used.
+     * Only vertices of cells are kept, and the cells are made positively
+     * oriented (and consistently ordered, for hypercubes). @p source names
+     * the model in messages.
      */
     template <int dim>
     MeshDescription<dim>

@@ -17,7 +17,8 @@ namespace fdem
     /**
      * The one representation of a model's geometry, whatever made it: a Gmsh
      * file (.msh or .geo) or one of the built-in generators. It is a plain
-     * unstructured mesh of quadrilaterals (2D) or hexahedra (3D) in which
+     * unstructured mesh of quadrilaterals or triangles (2D), hexahedra or
+     * tetrahedra (3D), all of one shape, in which
      * every cell carries the index of its block and every named face group
      * (a Gmsh physical group of dimension dim-1) lists its faces.
      *
@@ -33,9 +34,10 @@ namespace fdem
       std::vector<Point<dim>> vertices;
 
       /**
-       * Cells in deal.II's vertex ordering (lexicographic), consistently
-       * oriented, with positive measure. `material_id` is the block index
-       * into block_names.
+       * Cells in deal.II's vertex ordering (lexicographic for quadrilaterals
+       * and hexahedra, consistently oriented), with positive measure: 2^dim
+       * vertices for hypercubes, dim + 1 for simplices. `material_id` is
+       * the block index into block_names.
        */
       std::vector<CellData<dim>> cells;
 

@@ -69,6 +69,16 @@ namespace fdem
         hertz_sphere
       };
 
+      /**
+       * Shape of the cells a generator makes: quadrilaterals or hexahedra
+       * (FE_Q), or triangles or tetrahedra (FE_SimplexP).
+       */
+      enum class ElementShape
+      {
+        hypercube,
+        simplex
+      };
+
       /** Shape of the sliding surface of the slope generator. */
       enum class SlidingSurface
       {
@@ -94,6 +104,8 @@ namespace fdem
         double mesh_size;
         /** Element size on the sliding surface (m); mesh_size if 0 is given. */
         double mesh_size_on_sliding_surface;
+        /** Quadrilaterals or triangles. */
+        ElementShape element_shape = ElementShape::hypercube;
       };
 
       /**
@@ -116,6 +128,8 @@ namespace fdem
          * image in x = 0) instead of the half model x >= 0.
          */
         bool full_model = false;
+        /** Quadrilaterals or triangles. */
+        ElementShape element_shape = ElementShape::hypercube;
       };
 
       /** Subsection "Inclined block": a block on an inclined plane. */
@@ -130,6 +144,8 @@ namespace fdem
         double       foundation_overhang;
         unsigned int n_elements_along_length;
         unsigned int n_elements_across_height;
+        /** Quadrilaterals, or each split into two triangles. */
+        ElementShape element_shape = ElementShape::hypercube;
       };
 
       /**
@@ -151,9 +167,11 @@ namespace fdem
         PlaneOrientation plane_b;
         /**
          * Element size h in and near the wedge (m): tetrahedra of size 2 h,
-         * each split into four hexahedra.
+         * each split into four hexahedra, or tetrahedra of size h.
          */
         double mesh_size;
+        /** Hexahedra or tetrahedra. */
+        ElementShape element_shape = ElementShape::hypercube;
         /**
          * Least distance from the wedge to the sides, back and base of the
          * rock, and length of the ground in front of the toe (m); 2 H if 0

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <string>
 
 namespace fdem
@@ -29,7 +30,9 @@ namespace fdem
      * summary.json).
      */
     nlohmann::json
-    section_wall_times(const TimerOutput &timer, const double total_seconds);
+    section_wall_times(const TimerOutput &                  timer,
+                       const double                          total_seconds,
+                       const std::map<std::string, double> &more_sections = {});
 
     /**
      * The prefix of a progress line: elapsed wall time and peak memory, e.g.

@@ -1,0 +1,318 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/contact/reusable_lu.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+
+extern "C"
+{
+  void
+  dlacn2_(const int *n, double *v, double *x, int *isgn, double *est, int *kase, int *isave);
+}
+
+namespace fdem
+{
+  namespace contact
+  {
+    namespace
+    {
+      /** Below this the solution has no correct digit left (as before reuse). */
+      constexpr double singular_condition = 1e-14;
+
+      /**
+       * S_ii = 1/sqrt(max_j max(|A_ij|, |A_ji|)): rows and columns alike,
+       * so that S A S stays symmetric where A is.
+       */
+      std::vector<double>
+      row_and_column_scale(const dealii::FullMatrix<double> &matrix)
+      {
+        const unsigned int  n = matrix.m();
+        std::vector<double> scale(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            double s = 0;
+            for (unsigned int j = 0; j < n; ++j)
+              s = std::max({s, std::abs(matrix(i, j)), std::abs(matrix(j, i))});
+            scale[i] = s > 0 ? 1.0 / std::sqrt(s) : 1.0;
+          }
+        return scale;
+      }
+    } // namespace
+
+    void
+    ReusableLU::clear()
+    {
+      lu.reset();
+      factorized_matrix.reinit(0, 0);
+      factorized_scale.clear();
+    }
+
+    ReusableLU::Result
+    ReusableLU::solve(const dealii::FullMatrix<double> &matrix, dealii::Vector<double> &rhs)
+    {
+      Assert(matrix.m() == matrix.n(), dealii::ExcInternalError());
+      Assert(rhs.size() == matrix.m(), dealii::ExcInternalError());
+      const unsigned int  n     = matrix.m();
+      std::vector<double> scale = row_and_column_scale(matrix);
+      if (!control.reuse || !lu || factorized_matrix.m() != n)
+        {
+          Result fresh         = factorize_and_solve(matrix, std::move(scale), rhs);
+          fresh.why_factorized = control.reuse ? "first system" : "reuse off";
+          return fresh;
+        }
+
+      std::vector<unsigned int> changed;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          if (matrix(i, j) != factorized_matrix(i, j))
+            {
+              changed.push_back(i);
+              break;
+            }
+
+      Result result;
+      result.factorized     = false;
+      result.n_changed_rows = changed.size();
+      if (changed.empty())
+        {
+          result.method = "same matrix";
+          // The very matrix that was factorised (and so the same scaling):
+          // the same operations as right after its factorisation.
+          result.reciprocal_condition = factorized_condition;
+          result.solved               = factorized_solved;
+          if (result.solved)
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                rhs[i] *= scale[i];
+              lu->solve(rhs);
+              for (unsigned int i = 0; i < n; ++i)
+                rhs[i] *= scale[i];
+            }
+          ++n_reused_solves;
+          return result;
+        }
+      // The old factors must be a good start: a near-singular one is not.
+      const char *why = nullptr;
+      if (changed.size() > control.max_changed_fraction * n)
+        why = "many rows changed";
+      else if (!factorized_solved || factorized_condition < control.min_reused_condition)
+        why = "last factorised system ill-conditioned";
+      else if (!solve_updated(matrix, scale, changed, rhs, result))
+        why = "update inaccurate or ill-conditioned";
+      if (why == nullptr)
+        {
+          ++n_reused_solves;
+          return result;
+        }
+      Result fresh         = factorize_and_solve(matrix, std::move(scale), rhs);
+      fresh.n_changed_rows = changed.size();
+      fresh.why_factorized = why;
+      return fresh;
+    }
+
+    ReusableLU::Result
+    ReusableLU::factorize_and_solve(const dealii::FullMatrix<double> &matrix,
+                                    std::vector<double>               scale,
+                                    dealii::Vector<double> &          rhs)
+    {
+      const unsigned int  n = matrix.m();
+      std::vector<double> column_major(static_cast<std::size_t>(n) * n);
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          column_major[static_cast<std::size_t>(j) * n + i] = matrix(i, j) * scale[i] * scale[j];
+      lu = std::make_unique<DenseLU>(n, std::move(column_major));
+      ++n_factorizations;
+      factorized_matrix    = matrix;
+      factorized_scale     = std::move(scale);
+      factorized_condition = lu->reciprocal_condition_number();
+      factorized_solved    = lu->factorized() && factorized_condition > singular_condition;
+
+      Result result;
+      result.reciprocal_condition = factorized_condition;
+      result.solved               = factorized_solved;
+      if (!result.solved)
+        return result;
+      for (unsigned int i = 0; i < n; ++i)
+        rhs[i] *= factorized_scale[i];
+      lu->solve(rhs);
+      for (unsigned int i = 0; i < n; ++i)
+        rhs[i] *= factorized_scale[i];
+      return result;
+    }
+
+    bool
+    ReusableLU::solve_updated(const dealii::FullMatrix<double> &matrix,
+                              const std::vector<double> &       scale,
+                              const std::vector<unsigned int> & changed,
+                              dealii::Vector<double> &          rhs,
+                              Result &                          result) const
+    {
+      const unsigned int         n  = matrix.m();
+      const unsigned int         k  = changed.size();
+      const std::vector<double> &s0 = factorized_scale;
+      // B = S_0 A' S_0 = B_0 + P D: D holds the changed rows of B - B_0,
+      // each entry formed as the factorised one was (row-major, k x n).
+      std::vector<double> D(static_cast<std::size_t>(k) * n);
+      for (unsigned int c = 0; c < k; ++c)
+        {
+          const unsigned int i = changed[c];
+          for (unsigned int j = 0; j < n; ++j)
+            D[static_cast<std::size_t>(c) * n + j] =
+              matrix(i, j) * s0[i] * s0[j] - factorized_matrix(i, j) * s0[i] * s0[j];
+        }
+
+      // B x with B = S_0 A' S_0, from A' as it is.
+      const auto apply = [&](const std::vector<double> &x, std::vector<double> &y) {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            double sum = 0;
+            for (unsigned int j = 0; j < n; ++j)
+              sum += matrix(i, j) * (s0[j] * x[j]);
+            y[i] = s0[i] * sum;
+          }
+      };
+
+      // Z = B_0^{-1} P (column-major, n x k) and the capacitance I + D Z.
+      std::vector<double> Z(static_cast<std::size_t>(k) * n, 0.0);
+      for (unsigned int c = 0; c < k; ++c)
+        Z[static_cast<std::size_t>(c) * n + changed[c]] = 1;
+      lu->solve(Z.data(), k);
+      std::vector<double> capacitance(static_cast<std::size_t>(k) * k);
+      for (unsigned int c = 0; c < k; ++c)
+        for (unsigned int d = 0; d < k; ++d)
+          {
+            double sum = c == d ? 1.0 : 0.0;
+            for (unsigned int j = 0; j < n; ++j)
+              sum += D[static_cast<std::size_t>(c) * n + j] * Z[static_cast<std::size_t>(d) * n + j];
+            capacitance[static_cast<std::size_t>(d) * k + c] = sum;
+          }
+      const DenseLU capacitance_lu(k, std::move(capacitance));
+      // A singular capacitance means a singular B: let dgecon judge it.
+      if (!capacitance_lu.factorized() ||
+          capacitance_lu.reciprocal_condition_number() < control.min_reused_condition)
+        return false;
+
+      std::vector<double> t(k);
+      // x <- B^{-1} x = B_0^{-1} x - Z (I + D Z)^{-1} D B_0^{-1} x
+      const auto apply_inverse = [&](double *x) {
+        lu->solve(x, 1);
+        for (unsigned int c = 0; c < k; ++c)
+          {
+            double sum = 0;
+            for (unsigned int j = 0; j < n; ++j)
+              sum += D[static_cast<std::size_t>(c) * n + j] * x[j];
+            t[c] = sum;
+          }
+        capacitance_lu.solve(t.data(), 1);
+        for (unsigned int c = 0; c < k; ++c)
+          for (unsigned int j = 0; j < n; ++j)
+            x[j] -= Z[static_cast<std::size_t>(c) * n + j] * t[c];
+      };
+      // x <- B^{-T} x = B_0^{-T} (x - D^T (I + D Z)^{-T} Z^T x)
+      const auto apply_inverse_transpose = [&](double *x) {
+        for (unsigned int c = 0; c < k; ++c)
+          {
+            double sum = 0;
+            for (unsigned int j = 0; j < n; ++j)
+              sum += Z[static_cast<std::size_t>(c) * n + j] * x[j];
+            t[c] = sum;
+          }
+        capacitance_lu.solve(t.data(), 1, true);
+        for (unsigned int c = 0; c < k; ++c)
+          for (unsigned int j = 0; j < n; ++j)
+            x[j] -= D[static_cast<std::size_t>(c) * n + j] * t[c];
+        lu->solve(x, 1, true);
+      };
+      result.method = "Woodbury";
+
+      // Solve B y = S_0 b, refine, and judge by the normwise backward error
+      // |r|_inf / (|B|_inf |y|_inf + |S_0 b|_inf).
+      std::vector<double> b(n), y(n), r(n), By(n);
+      double              b_norm = 0, B_norm = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          b[i]   = rhs[i] * s0[i];
+          b_norm = std::max(b_norm, std::abs(b[i]));
+          double row = 0;
+          for (unsigned int j = 0; j < n; ++j)
+            row += std::abs(matrix(i, j) * s0[i] * s0[j]);
+          B_norm = std::max(B_norm, row);
+        }
+      const auto backward_error = [&]() {
+        apply(y, By);
+        double r_norm = 0, y_norm = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            r[i]   = b[i] - By[i];
+            r_norm = std::max(r_norm, std::abs(r[i]));
+            y_norm = std::max(y_norm, std::abs(y[i]));
+          }
+        const double scale = B_norm * y_norm + b_norm;
+        return scale > 0 ? r_norm / scale : (r_norm > 0 ? 1.0 : 0.0);
+      };
+      y = b;
+      apply_inverse(y.data());
+      double error = backward_error();
+      // Each refinement step costs one solve; two reach round-off here.
+      for (unsigned int step = 0; step < 2 && !(error <= control.backward_error_tolerance);
+           ++step)
+        {
+          apply_inverse(r.data());
+          for (unsigned int i = 0; i < n; ++i)
+            y[i] += r[i];
+          error = backward_error();
+        }
+      if (!(error <= control.backward_error_tolerance))
+        return false;
+
+      // The condition estimate of S' A' S' in its own scaling S', as dgecon
+      // makes it: 1 / (|S' A' S'|_1 est|(S' A' S')^{-1}|_1), where
+      // (S' A' S')^{-1} = R B^{-1} R with R = S_0 / S'.
+      double A_norm = 0;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          double column = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            column += std::abs(matrix(i, j) * scale[i] * scale[j]);
+          A_norm = std::max(A_norm, column);
+        }
+      std::vector<double> R(n);
+      for (unsigned int i = 0; i < n; ++i)
+        R[i] = s0[i] / scale[i];
+      const int           size = n;
+      std::vector<double> v(n), x(n);
+      std::vector<int>    signs(n);
+      double              inverse_norm = 0;
+      int                 kase = 0, isave[3] = {0, 0, 0};
+      for (;;)
+        {
+          dlacn2_(&size, v.data(), x.data(), signs.data(), &inverse_norm, &kase, isave);
+          if (kase == 0)
+            break;
+          for (unsigned int i = 0; i < n; ++i)
+            x[i] *= R[i];
+          if (kase == 1)
+            apply_inverse(x.data());
+          else
+            apply_inverse_transpose(x.data());
+          for (unsigned int i = 0; i < n; ++i)
+            x[i] *= R[i];
+        }
+      if (!std::isfinite(A_norm) || !(inverse_norm > 0) || !std::isfinite(inverse_norm))
+        return false;
+      const double condition = (1.0 / A_norm) / inverse_norm;
+      if (!(condition >= control.min_reused_condition))
+        return false;
+
+      result.reciprocal_condition = condition;
+      result.solved               = true;
+      result.backward_error       = error;
+      for (unsigned int i = 0; i < n; ++i)
+        rhs[i] = s0[i] * y[i];
+      return true;
+    }
+  } // namespace contact
+} // namespace fdem
