@@ -4,6 +4,7 @@ parameters changed, reading what the run wrote, and small helpers for the
 tables and fits. Runs under /usr/bin/python3 (Debian's, with numpy and
 matplotlib).
 """
+import csv
 import json
 import math
 import os
@@ -151,3 +152,23 @@ def git_description():
                               text=True).stdout.strip()
     commit = git("rev-parse", "--short", "HEAD") or "unknown"
     return commit + ("+changes" if git("status", "--porcelain", "--untracked-files=no") else "")
+
+
+def read_typed_csv(path):
+    """The rows of a CSV file as dicts, with integers and floats converted
+    (the other cells stay text)."""
+    rows = []
+    with open(path) as f:
+        for record in csv.DictReader(f):
+            row = {}
+            for key, value in record.items():
+                for kind in (int, float):
+                    try:
+                        row[key] = kind(value)
+                        break
+                    except ValueError:
+                        continue
+                else:
+                    row[key] = value
+            rows.append(row)
+    return rows

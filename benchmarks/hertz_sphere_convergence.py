@@ -24,6 +24,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 FROM_CSV = sys.argv[1:] == ["--from-csv"]
 EXE = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 and not FROM_CSV
@@ -78,18 +81,7 @@ def run(n, sizes):
 
 
 def read_csv(path):
-    rows = []
-    for r in csv.DictReader(open(path)):
-        row = {}
-        for key, value in r.items():
-            try:
-                row[key] = int(value)
-            except ValueError:
-                try:
-                    row[key] = float(value)
-                except ValueError:
-                    row[key] = value
-        rows.append(row)
+    rows = common.read_typed_csv(path)
     return ([r for r in rows if r["study"] == "refinement"],
             [r for r in rows if r["study"] != "refinement"])
 

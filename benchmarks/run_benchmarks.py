@@ -26,6 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
+import scaling  # noqa: E402
 
 # Hoek & Bray's plane-failure formula with Priest's (1993) data
 # (tests/test_safety_factor.cc, PriestPlaneFailure.HoekBrayFormula);
@@ -529,6 +530,11 @@ def main():
         plot(case, rows, quantities, os.path.join(out, image))
         case_lines, _ = case_section(case, rows, quantities, phases, image)
         lines += case_lines
+    # The Scale section comes from benchmarks/scaling.py's data (a longer
+    # run, made separately); it is kept when these cases are rerun.
+    scaling_csv = os.path.join(figures, "scaling.csv")
+    if os.path.exists(scaling_csv):
+        lines += scaling.benchmarks_section(scaling_csv)
     with open(os.path.join(doc_dir, "benchmarks.md"), "w") as f:
         f.write("\n".join(lines))
     print(f"Wrote {os.path.join(doc_dir, 'benchmarks.md')} and {figures}/")

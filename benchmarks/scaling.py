@@ -132,24 +132,79 @@ def extrapolate(rows, key, phase, target):
     return last[key] * (target / last[phase]) ** (1 / b), b
 
 
+def growth_lines(rows):
+    """Bullets on how the cost of a series grows, from its last three
+    levels, and where it would reach the machine's memory."""
+    if len(rows) < 3:
+        return ["- Fewer than three levels ran: no growth fitted."]
+    lines = []
+    for key in ("dofs", "pairs"):
+        e = exponents(rows, key)
+        lines.append(f"- Growth against {key} (power-law exponent over the last three "
+                     "levels): " + ", ".join(f"{k.split(' (')[0]} {fmt(v)}"
+                                             for k, v in e.items()) + ".")
+    last = rows[-1]
+    phases = ["mesh and setup (s)", "assembly and factorisation (s)", "flexibility (s)",
+              "contact (s)"]
+    top = max(phases, key=lambda k: last[k])
+    lines.append(f"- At the largest level ({last['dofs']} dofs, {last['pairs']} pairs) "
+                 f"{top.split(' (')[0]} takes {fmt(100 * last[top] / last['total (s)'])} % "
+                 f"of the {fmt(last['total (s)'])} s.")
+    memory_dofs, b = extrapolate(rows, "dofs", "peak memory (MiB)", MEMORY_GIB * 1024)
+    if math.isfinite(memory_dofs):
+        time_b = exponents(rows, "dofs")["total (s)"]
+        seconds = last["total (s)"] * (memory_dofs / last["dofs"]) ** time_b
+        lines.append(f"- Peak memory grows as dofs^{fmt(b)}: {MEMORY_GIB:.0f} GiB would be "
+                     f"reached at about {fmt(memory_dofs)} dofs, where the run would take "
+                     f"about {fmt(seconds)} s (total time as dofs^{fmt(time_b)}).")
+    return lines
+
+
 def section(title, rows, stop, description):
     lines = [f"## {title}", "", description, "",
              *common.markdown_table(COLUMNS, [[fmt(r[c]) for c in COLUMNS] for r in rows],
                                     "l" + "r" * (len(COLUMNS) - 1)),
              "", f"The series stopped: {stop}.", ""]
-    if len(rows) >= 3:
-        for key in ("dofs", "pairs"):
-            e = exponents(rows, key)
-            lines.append(f"- Growth against {key} (power-law exponent over the last three "
-                         "levels): " + ", ".join(f"{k.split(' (')[0]} {fmt(v)}"
-                                                 for k, v in e.items()) + ".")
-        memory_dofs, b = extrapolate(rows, "dofs", "peak memory (MiB)", MEMORY_GIB * 1024)
-        lines.append(f"- Peak memory grows as dofs^{fmt(b)}: {MEMORY_GIB:.0f} GiB would be "
-                     f"reached at about {fmt(memory_dofs)} dofs "
-                     f"(the largest run here: {rows[-1]['dofs']} dofs, "
-                     f"{fmt(rows[-1]['peak memory (MiB)'])} MiB).")
-    lines.append("")
-    return lines
+    return lines + growth_lines(rows) + [""]
+
+
+SERIES = [("2D paper slope", "2D: the paper's slope"), ("3D block on plane", "3D: block on a plane")]
+
+
+def read_csv(path):
+    """The rows of scaling.csv by series, numbers as numbers."""
+    by_series = {}
+    for row in common.read_typed_csv(path):
+        by_series.setdefault(row.pop("series"), []).append(row)
+    return by_series
+
+
+def benchmarks_section(csv_path):
+    """The section 'Scale' of doc/benchmarks.md, from scaling.csv: how the
+    cost grows in each series and what limits it (the tables are in
+    doc/scaling.md)."""
+    lines = ["<!-- scale: written from benchmarks/scaling.csv -->", "## Scale", "",
+             "How the cost grows with dofs and with pairs, from `benchmarks/scaling.py` "
+             "(tables and the machine's load in [scaling.md](scaling.md)):", ""]
+    by_series = read_csv(csv_path)
+    for key, title in SERIES:
+        rows = by_series.get(key, [])
+        lines += [f"**{title}**", ""] + growth_lines(rows) + [""]
+    return lines + ["<!-- /scale -->", ""]
+
+
+def put_benchmarks_section(md_path, lines):
+    """Replaces the Scale section of @p md_path (or appends it)."""
+    text = open(md_path).read() if os.path.exists(md_path) else ""
+    start, end = "<!-- scale:", "<!-- /scale -->"
+    if start in text and end in text:
+        a = text.index(start)
+        b = text.index(end) + len(end)
+        text = text[:a].rstrip("\n") + "\n\n" + "\n".join(lines).strip("\n") + text[b:]
+    else:
+        text = text.rstrip("\n") + "\n\n" + "\n".join(lines)
+    with open(md_path, "w") as f:
+        f.write(text)
 
 
 def main():
@@ -173,7 +228,7 @@ def main():
     with open(os.path.join(doc_dir, "benchmarks", "scaling.csv"), "w", newline="") as f:
         writer = csv.writer(f)
         writer.writerow(["series"] + COLUMNS)
-        for name, rows in (("2D paper slope", rows_2d), ("3D block on plane", rows_3d)):
+        for (name, _), rows in zip(SERIES, (rows_2d, rows_3d)):
             for r in rows:
                 writer.writerow([name] + [r[c] for c in COLUMNS])
 
@@ -199,7 +254,9 @@ def main():
                      "complement of the interface dofs, the mixed system's LU) count most.")
     with open(os.path.join(doc_dir, "scaling.md"), "w") as f:
         f.write("\n".join(lines))
-    print(f"wrote {os.path.join(doc_dir, 'scaling.md')}")
+    csv_path = os.path.join(doc_dir, "benchmarks", "scaling.csv")
+    put_benchmarks_section(os.path.join(doc_dir, "benchmarks.md"), benchmarks_section(csv_path))
+    print(f"wrote {os.path.join(doc_dir, 'scaling.md')} and the Scale section of benchmarks.md")
     return 0 if rows_2d and rows_3d else 1
 
 

@@ -38,6 +38,29 @@ namespace fdem
         return Point<2>(xy[0], xy[1]);
       }
 
+      /**
+       * "Element shape" of a 2D generator: quadrilateral or triangle;
+       * @p how says how the generator makes each.
+       */
+      void
+      declare_element_shape_2d(ParameterHandler &prm, const std::string &how)
+      {
+        prm.declare_entry("Element shape",
+                          "quadrilateral",
+                          Patterns::Selection("quadrilateral|triangle"),
+                          "Shape of the cells: " + how);
+      }
+
+      /** The shape selected by "Element shape" ("triangle"/"tetrahedron": simplices). */
+      GeometryParameters::ElementShape
+      parse_element_shape(ParameterHandler &prm)
+      {
+        using ElementShape      = GeometryParameters::ElementShape;
+        const std::string shape = prm.get("Element shape");
+        return (shape == "triangle" || shape == "tetrahedron") ? ElementShape::simplex :
+                                                                 ElementShape::hypercube;
+      }
+
       std::vector<Point<2>>
       parse_points(const std::string &text)
       {
@@ -245,11 +268,9 @@ namespace fdem
                             Patterns::Double(0),
                             "Element size on the sliding surface (m); 0 means "
                             "equal to Mesh size.");
-          prm.declare_entry(
-            "Element shape",
-            "quadrilateral",
-            Patterns::Selection("quadrilateral|triangle"),
-            "Shape of the cells: quadrilaterals (FE_Q elements; Gmsh's "
+          declare_element_shape_2d(
+            prm,
+            "quadrilaterals (FE_Q elements; Gmsh's "
             "triangles of twice the size recombined and subdivided), or "
             "Gmsh's Frontal-Delaunay triangles of the size itself "
             "(FE_SimplexP).");
@@ -299,11 +320,9 @@ namespace fdem
             "Model the whole cylinder width (x from -r to r) on a foundation "
             "from -W to W instead of the half model x >= 0; needed for "
             "tangential loads, e.g. Cattaneo-Mindlin partial slip.");
-          prm.declare_entry(
-            "Element shape",
-            "quadrilateral",
-            Patterns::Selection("quadrilateral|triangle"),
-            "Shape of the cells: quadrilaterals (FE_Q elements; Gmsh's "
+          declare_element_shape_2d(
+            prm,
+            "quadrilaterals (FE_Q elements; Gmsh's "
             "triangles of twice the size recombined and subdivided), or "
             "Gmsh's Frontal-Delaunay triangles of the size itself "
             "(FE_SimplexP). Either way the contact zone has Elements in "
@@ -348,11 +367,9 @@ namespace fdem
             Patterns::Integer(1),
             "Number of elements of the block normal to the "
             "plane; the foundation gets elements of that size.");
-          prm.declare_entry(
-            "Element shape",
-            "quadrilateral",
-            Patterns::Selection("quadrilateral|triangle"),
-            "Shape of the cells: quadrilaterals (FE_Q elements), or "
+          declare_element_shape_2d(
+            prm,
+            "quadrilaterals (FE_Q elements), or "
             "triangles (FE_SimplexP), two per quadrilateral of the same "
             "structured grid.");
         }
@@ -586,9 +603,7 @@ namespace fdem
             prm.get_double("Mesh size on sliding surface");
           if (slope.mesh_size_on_sliding_surface == 0)
             slope.mesh_size_on_sliding_surface = slope.mesh_size;
-          slope.element_shape =
-            (prm.get("Element shape") == "triangle") ? ElementShape::simplex :
-                                                       ElementShape::hypercube;
+          slope.element_shape = parse_element_shape(prm);
         }
         prm.leave_subsection();
 
@@ -602,9 +617,7 @@ namespace fdem
             prm.get_integer("Elements in contact zone");
           hertz.mesh_size  = prm.get_double("Mesh size");
           hertz.full_model = prm.get_bool("Full model");
-          hertz.element_shape =
-            (prm.get("Element shape") == "triangle") ? ElementShape::simplex :
-                                                       ElementShape::hypercube;
+          hertz.element_shape = parse_element_shape(prm);
         }
         prm.leave_subsection();
 
@@ -621,9 +634,7 @@ namespace fdem
             prm.get_integer("Elements along length");
           inclined_block.n_elements_across_height =
             prm.get_integer("Elements across height");
-          inclined_block.element_shape =
-            (prm.get("Element shape") == "triangle") ? ElementShape::simplex :
-                                                       ElementShape::hypercube;
+          inclined_block.element_shape = parse_element_shape(prm);
         }
         prm.leave_subsection();
 
@@ -636,9 +647,7 @@ namespace fdem
           wedge.plane_b      = parse_orientation(prm.get("Plane B"));
           wedge.mesh_size    = prm.get_double("Mesh size");
           wedge.rock_extent  = prm.get_double("Rock extent");
-          wedge.element_shape =
-            (prm.get("Element shape") == "tetrahedron") ? ElementShape::simplex :
-                                                          ElementShape::hypercube;
+          wedge.element_shape = parse_element_shape(prm);
           if (wedge.rock_extent == 0)
             wedge.rock_extent = 2 * wedge.slope_height;
         }
