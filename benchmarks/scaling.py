@@ -214,6 +214,7 @@ def main():
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--output-dir", default=None)
     args = parser.parse_args()
+    args.exe = os.path.abspath(args.exe)
     doc_dir = args.output_dir or (os.path.join(os.getcwd(), "scaling-quick") if args.quick
                                   else os.path.join(common.ROOT, "doc"))
     os.makedirs(os.path.join(doc_dir, "benchmarks"), exist_ok=True)
