@@ -121,15 +121,19 @@ namespace fdem
               result.reason        = "two successive K* agree";
               break;
             }
-          // K* the same from two different K: K* does not depend on K (a
-          // planar surface, where F_R and F_tau are linear in the reduced
-          // strengths), so it is the fixed point, and the secant through
-          // both steps lands on it too. The limit itself has no static
-          // solution there (a singular system, Sec. 6.4), so K = K* is
-          // never solved; it needs only to lie where no solve failed below.
-          const double previous_K_star = previous_K + previous_h;
-          if (s.converged && previous_K != K &&
-              std::abs(K_star - previous_K_star) <= tolerance * K_star &&
+          // K* (nearly) independent of K: a planar surface, where F_R and
+          // F_tau are linear in the reduced strengths. With K* = m K + q
+          // through the last two solved steps, the fixed point lies
+          // |m| |K* - K| / (1 - |m|) from K*, so K* is the answer when that
+          // is within the tolerance, without solving at it: the limit of a
+          // planar surface has no static solution (a singular system, Sec.
+          // 6.4). It must not lie beyond a K whose solve failed. (Where K*
+          // still climbs with K, |m| is not small and this does not stop.)
+          const double slope =
+            (K_star - (previous_K + previous_h)) / (K - previous_K);
+          if (s.converged && std::abs(slope) < 1 &&
+              std::abs(slope) * std::abs(K_star - K) <=
+                (1 - std::abs(slope)) * tolerance * K_star &&
               !(K_high < K_star * (1 - tolerance)))
             {
               result.converged     = true;
