@@ -137,8 +137,6 @@ namespace fdem
     TimerOutput   timer;
     /** Wall time since the model was made: the "total" of the timings. */
     Timer         run_timer;
-    /** Wall time of the blocks' assembly and factorisation, summed (s). */
-    double assembly_seconds = 0, factorization_seconds = 0;
 
     /** A progress line: elapsed time, peak memory and @p what. */
     void

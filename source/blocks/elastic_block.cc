@@ -362,6 +362,14 @@ namespace fdem
       const parameters::LoadParameters &load_parameters,
       const std::string &               solver_type)
     {
+      assemble(load_parameters);
+      factorize(solver_type);
+    }
+
+    template <int dim>
+    void
+    ElasticBlock<dim>::assemble(const parameters::LoadParameters &load_parameters)
+    {
       loads = load_parameters;
       const auto     start    = std::chrono::steady_clock::now();
       const MPI_Comm comm     = triangulation.get_communicator();
@@ -391,9 +399,15 @@ namespace fdem
       if (parallel)
         Utilities::MPI::sum(load_vector, comm, load_vector);
       stiffness_matrix.compress(VectorOperation::add);
-      const auto assembled = std::chrono::steady_clock::now();
-      assembly_seconds = std::chrono::duration<double>(assembled - start).count();
+      assembly_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
 
+    template <int dim>
+    void
+    ElasticBlock<dim>::factorize(const std::string &solver_type)
+    {
+      const auto start = std::chrono::steady_clock::now();
       direct_solver.reset();
       mumps_solver.reset();
       if (solver_type == "MUMPS" || solver_type == "MUMPS_Schur")
@@ -410,7 +424,7 @@ namespace fdem
           direct_solver->factorize(stiffness_matrix);
         }
       factorization_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - assembled).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
     template <int dim>

@@ -22,14 +22,10 @@ namespace fdem
     }
 
     nlohmann::json
-    section_wall_times(const TimerOutput &                  timer,
-                       const double                          total_seconds,
-                       const std::map<std::string, double> &more_sections)
+    section_wall_times(const TimerOutput &timer, const double total_seconds)
     {
       nlohmann::json times = nlohmann::json::object();
       for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
-        times[section] = seconds;
-      for (const auto &[section, seconds] : more_sections)
         times[section] = seconds;
       times["total"] = total_seconds;
       return times;

@@ -130,6 +130,14 @@ namespace fdem
       assemble_and_factorize(const parameters::LoadParameters &loads,
                              const std::string &               solver_type);
 
+      /** Assembles K and F (the first half of assemble_and_factorize). */
+      void
+      assemble(const parameters::LoadParameters &loads);
+
+      /** Factorises the assembled K (the second half of assemble_and_factorize). */
+      void
+      factorize(const std::string &solver_type);
+
       /**
        * Displacement u = K^{-1} (F_nodal) for a nodal force vector on this
        * block's dofs (Dirichlet and support dofs end with zero).

@@ -6,7 +6,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <map>
 #include <string>
 
 namespace fdem
@@ -30,9 +29,7 @@ namespace fdem
      * summary.json).
      */
     nlohmann::json
-    section_wall_times(const TimerOutput &                  timer,
-                       const double                          total_seconds,
-                       const std::map<std::string, double> &more_sections = {});
+    section_wall_times(const TimerOutput &timer, const double total_seconds);
 
     /**
      * The prefix of a progress line: elapsed wall time and peak memory, e.g.
