@@ -558,6 +558,52 @@ namespace fdem
     }
 
     template <int dim>
+    std::vector<FullMatrix<double>>
+    ElasticBlock<dim>::flexibility_diagonal_blocks(
+      const std::vector<std::array<types::global_dof_index, dim>> &nodes) const
+    {
+      std::vector<FullMatrix<double>> blocks(nodes.size(), FullMatrix<double>(dim, dim));
+      if (!mumps_solver || !mumps_solver->schur_dofs().empty())
+        {
+          for (unsigned int k = 0; k < nodes.size(); ++k)
+            blocks[k] = flexibility({nodes[k].begin(), nodes[k].end()});
+          return blocks;
+        }
+      // C = P K^{-1} P^T with P the constraints (u = P u_free, a fixed dof
+      // has an empty row): the entries of K^{-1} between the dofs that a
+      // node's dofs follow, each asked for once.
+      using Weights = std::vector<std::pair<types::global_dof_index, double>>;
+      const auto follows = [&](const types::global_dof_index dof) {
+        if (!constraints.is_constrained(dof))
+          return Weights{{dof, 1.0}};
+        return Weights(constraints.get_constraint_entries(dof)->begin(),
+                       constraints.get_constraint_entries(dof)->end());
+      };
+      std::map<std::pair<types::global_dof_index, types::global_dof_index>, std::size_t>
+        entry_index;
+      std::vector<std::pair<types::global_dof_index, types::global_dof_index>> entries;
+      std::vector<std::array<Weights, dim>> weights(nodes.size());
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (unsigned int i = 0; i < dim; ++i)
+          weights[k][i] = follows(nodes[k][i]);
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            for (const auto &[a, wa] : weights[k][i])
+              for (const auto &[b, wb] : weights[k][j])
+                if (entry_index.emplace(std::make_pair(a, b), entries.size()).second)
+                  entries.emplace_back(a, b);
+      const std::vector<double> values = mumps_solver->inverse_entries(entries);
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            for (const auto &[a, wa] : weights[k][i])
+              for (const auto &[b, wb] : weights[k][j])
+                blocks[k](i, j) += wa * wb * values[entry_index.at({a, b})];
+      return blocks;
+    }
+
+    template <int dim>
     std::vector<InterfaceNode<dim>>
     ElasticBlock<dim>::interface_nodes(const types::boundary_id group) const
     {

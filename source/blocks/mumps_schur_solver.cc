@@ -358,5 +358,56 @@ namespace fdem
         }
       return inverse;
     }
+
+    std::vector<double>
+    MumpsSchurSolver::inverse_entries(
+      const std::vector<std::pair<types::global_dof_index, types::global_dof_index>> &entries)
+      const
+    {
+      Assert(matrix != nullptr, ExcMessage("factorize() first."));
+      Assert(schur.empty(), ExcMessage("Entries of the inverse need a factorisation "
+                                       "without Schur dofs."));
+      DMUMPS_STRUC_C &id = data->id;
+      const auto      n  = static_cast<std::size_t>(id.n);
+      // The requested entries as a sparse matrix by columns (1-based): MUMPS
+      // returns (K^{-1})_{ij} in the place of each (i, j).
+      std::vector<std::size_t> order(entries.size());
+      for (std::size_t e = 0; e < order.size(); ++e)
+        order[e] = e;
+      std::stable_sort(order.begin(), order.end(), [&](const std::size_t a, const std::size_t b) {
+        return entries[a].second < entries[b].second;
+      });
+      std::vector<MUMPS_INT> column_start(n + 1, 0), rows(entries.size());
+      for (const auto &[i, j] : entries)
+        ++column_start[j + 1];
+      for (std::size_t j = 0; j < n; ++j)
+        column_start[j + 1] += column_start[j];
+      for (std::size_t k = 0; k < order.size(); ++k)
+        rows[k] = entries[order[k]].first + 1;
+      for (MUMPS_INT &start : column_start)
+        ++start;
+      std::vector<double> values(entries.size(), 0.0);
+
+      icntl(id, 30)  = 1;
+      id.nrhs        = n;
+      id.lrhs        = n;
+      id.nz_rhs      = entries.size();
+      id.irhs_ptr    = column_start.data();
+      id.irhs_sparse = rows.data();
+      id.rhs_sparse  = values.data();
+      run(3, "computation of entries of the inverse");
+      icntl(id, 30)  = 0;
+      id.irhs_ptr    = nullptr;
+      id.irhs_sparse = nullptr;
+      id.rhs_sparse  = nullptr;
+      id.nz_rhs      = 0;
+      if (n_ranks > 1)
+        broadcast_from_host(communicator, values.data(), values.size());
+
+      std::vector<double> result(entries.size());
+      for (std::size_t k = 0; k < order.size(); ++k)
+        result[order[k]] = values[k];
+      return result;
+    }
   } // namespace blocks
 } // namespace fdem

@@ -13,8 +13,10 @@ namespace fdem
     MixedSystem<dim>::MixedSystem(
       const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
       const std::vector<Vector<double>> &external_displacements,
-      const std::vector<Interface<dim>> &interfaces)
+      const std::vector<Interface<dim>> &interfaces,
+      const MixedSystemSolver            solver)
       : blocks(blocks)
+      , solver_type(solver)
     {
       for (const Interface<dim> &interface : interfaces)
         for (const NodePair<dim> &pair : interface.pairs)
@@ -32,47 +34,74 @@ namespace fdem
           n_rigid += block->n_free_rigid_modes();
         }
 
-      flexibility.reinit(n_forces, n_forces);
+      if (solver_type == MixedSystemSolver::dense)
+        flexibility.reinit(n_forces, n_forces);
+      self_flexibility.assign(pairs.size(), Tensor<2, dim>());
       external_gap.reinit(n_forces);
       rigid_coupling.reinit(n_forces, n_rigid);
       rigid_loads.reinit(n_rigid);
 
       for (unsigned int b = 0; b < blocks.size(); ++b)
         {
-          // The pairs that touch block b, the sign of the load they put on
-          // it (I receives -f, J receives +f), and their dofs on b.
-          std::vector<unsigned int>            touching;
-          std::vector<double>                  sign;
-          std::vector<types::global_dof_index> dofs;
+          BlockTouch touch;
+          touch.block = b;
           for (unsigned int p = 0; p < pairs.size(); ++p)
             for (const bool on_I : {true, false})
               if ((on_I ? pair_block_I[p] : pair_block_J[p]) == b)
                 {
-                  touching.push_back(p);
-                  sign.push_back(on_I ? -1.0 : 1.0);
+                  touch.pairs.push_back(p);
+                  touch.signs.push_back(on_I ? -1.0 : 1.0);
                   const auto &pair_dofs = on_I ? pairs[p]->dofs_I : pairs[p]->dofs_J;
-                  dofs.insert(dofs.end(), pair_dofs.begin(), pair_dofs.end());
+                  touch.dofs.insert(touch.dofs.end(), pair_dofs.begin(), pair_dofs.end());
                 }
-          if (touching.empty())
+          if (touch.pairs.empty())
             continue;
+          const std::vector<unsigned int> &touching = touch.pairs;
+          const std::vector<double> &      sign     = touch.signs;
+          const auto &                     dofs     = touch.dofs;
+          const auto                       local_tensor = [](const FullMatrix<double> &C_b,
+                                       const unsigned int        k,
+                                       const unsigned int        l,
+                                       const unsigned int        offset_k,
+                                       const unsigned int        offset_l) {
+            Tensor<2, dim> C_kl;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                C_kl[i][j] = C_b(offset_k + dim * k + i, offset_l + dim * l + j);
+            return C_kl;
+          };
 
-          // g = u_I - u_J: C += s_k s_l T_k C_b T_l^T (eq. 6).
-          const FullMatrix<double> C_b = blocks[b]->flexibility(dofs);
-          for (unsigned int k = 0; k < touching.size(); ++k)
-            for (unsigned int l = 0; l < touching.size(); ++l)
-              {
-                Tensor<2, dim> C_kl;
+          if (solver_type == MixedSystemSolver::dense)
+            {
+              // g = u_I - u_J: C += s_k s_l T_k C_b T_l^T (eq. 6).
+              const FullMatrix<double> C_b = blocks[b]->flexibility(dofs);
+              for (unsigned int k = 0; k < touching.size(); ++k)
+                for (unsigned int l = 0; l < touching.size(); ++l)
+                  {
+                    const Tensor<2, dim> local = sign[k] * sign[l] *
+                                                 pairs[touching[k]]->frame *
+                                                 local_tensor(C_b, k, l, 0, 0) *
+                                                 transpose(pairs[touching[l]]->frame);
+                    for (unsigned int i = 0; i < dim; ++i)
+                      for (unsigned int j = 0; j < dim; ++j)
+                        flexibility(dim * touching[k] + i, dim * touching[l] + j) +=
+                          local[i][j];
+                  }
+            }
+          else
+            {
+              // Only the pairs' own blocks: T_k C_b,kk T_k^T (s_k^2 = 1).
+              std::vector<std::array<types::global_dof_index, dim>> nodes(touching.size());
+              for (unsigned int k = 0; k < touching.size(); ++k)
                 for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = 0; j < dim; ++j)
-                    C_kl[i][j] = C_b(dim * k + i, dim * l + j);
-                const Tensor<2, dim> local = sign[k] * sign[l] *
-                                             pairs[touching[k]]->frame * C_kl *
-                                             transpose(pairs[touching[l]]->frame);
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = 0; j < dim; ++j)
-                    flexibility(dim * touching[k] + i, dim * touching[l] + j) +=
-                      local[i][j];
-              }
+                  nodes[k][i] = dofs[dim * k + i];
+              const std::vector<FullMatrix<double>> C_kk =
+                blocks[b]->flexibility_diagonal_blocks(nodes);
+              for (unsigned int k = 0; k < touching.size(); ++k)
+                self_flexibility[touching[k]] += pairs[touching[k]]->frame *
+                                                 local_tensor(C_kk[k], 0, 0, 0, 0) *
+                                                 transpose(pairs[touching[k]]->frame);
+            }
 
           // g_bar: the relative displacement under the external loads.
           const Vector<double> &u_bar = external_displacements[b];
@@ -101,19 +130,67 @@ namespace fdem
                     rigid_coupling(dim * touching[k] + i, column) += local[i];
                 }
             }
+          touches.push_back(std::move(touch));
         }
       for (unsigned int p = 0; p < pairs.size(); ++p)
         external_gap[dim * p] += pairs[p]->initial_gap;
+
+      if (solver_type == MixedSystemSolver::dense)
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              self_flexibility[p][i][j] = flexibility(dim * p + i, dim * p + j);
+      double max_diagonal = 0, sum_diagonal = 0;
+      for (const Tensor<2, dim> &C_pp : self_flexibility)
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            max_diagonal = std::max(max_diagonal, C_pp[i][i]);
+            sum_diagonal += C_pp[i][i];
+          }
+      held_flexibility = 1e-12 * max_diagonal;
+      if (sum_diagonal > 0)
+        mean_flexibility = sum_diagonal / n_forces;
     }
 
     template <int dim>
-    double
-    MixedSystem<dim>::tangential_stiffness(const unsigned int p) const
+    void
+    MixedSystem<dim>::vmult_flexibility(Vector<double> &dst, const Vector<double> &src) const
     {
-      double sum = 0;
-      for (unsigned int i = 1; i < dim; ++i)
-        sum += flexibility(dim * p + i, dim * p + i);
-      return sum > 0 ? (dim - 1) / sum : 0.0;
+      if (solver_type == MixedSystemSolver::dense)
+        {
+          flexibility.vmult(dst, src);
+          return;
+        }
+      // C f = sum_b s_k T_k K_b^{-1} (sum_l s_l T_l^T f_l): the load of the
+      // pair forces on each block, one solve, its displacements at the pairs.
+      dst.reinit(src.size());
+      for (const BlockTouch &touch : touches)
+        {
+          const blocks::ElasticBlock<dim> &block = *blocks[touch.block];
+          Vector<double> load(block.dof_handler.n_dofs());
+          for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+            {
+              const unsigned int p = touch.pairs[k];
+              Tensor<1, dim>     f;
+              for (unsigned int i = 0; i < dim; ++i)
+                f[i] = src[dim * p + i];
+              const Tensor<1, dim> global = touch.signs[k] * (transpose(pairs[p]->frame) * f);
+              for (unsigned int i = 0; i < dim; ++i)
+                load[touch.dofs[dim * k + i]] += global[i];
+            }
+          const Vector<double> u = block.solve(load);
+          for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+            {
+              const unsigned int p = touch.pairs[k];
+              Tensor<1, dim>     u_k;
+              for (unsigned int i = 0; i < dim; ++i)
+                u_k[i] = u[touch.dofs[dim * k + i]];
+              const Tensor<1, dim> local = touch.signs[k] * (pairs[p]->frame * u_k);
+              for (unsigned int i = 0; i < dim; ++i)
+                dst[dim * p + i] += local[i];
+            }
+        }
+      ++n_flexibility_products;
     }
 
     template <int dim>
@@ -131,103 +208,43 @@ namespace fdem
     {
       Assert(states.size() == pairs.size(), ExcInternalError());
       Assert(strengths.size() == pairs.size(), ExcInternalError());
+      std::vector<PairRows<dim>> rows(pairs.size());
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        rows[p] = pair_rows(states[p], strengths[p], self_flexibility[p], held_flexibility);
+      return solver_type == MixedSystemSolver::dense ? solve_dense(rows) : solve_iterative(rows);
+    }
+
+    template <int dim>
+    ContactSolution
+    MixedSystem<dim>::solve_dense(const std::vector<PairRows<dim>> &rows) const
+    {
       const unsigned int n_forces = flexibility.m();
       const unsigned int n_rigid  = rigid_loads.size();
       const unsigned int n        = n_forces + n_rigid;
 
-      double max_diagonal = 0;
-      for (unsigned int i = 0; i < n_forces; ++i)
-        max_diagonal = std::max(max_diagonal, flexibility(i, i));
-
       FullMatrix<double> matrix(n, n);
       Vector<double>     rhs(n);
-      // Row "g_i = 0": g = g_bar - C f + W gamma.
-      const auto gap_row = [&](const unsigned int row) {
-        for (unsigned int j = 0; j < n_forces; ++j)
-          matrix(row, j) = flexibility(row, j);
-        for (unsigned int j = 0; j < n_rigid; ++j)
-          matrix(row, n_forces + j) = -rigid_coupling(row, j);
-        rhs[row] = external_gap[row];
-      };
-      // A slipping pair in 3D: with d the slip direction of the previous
-      // iterate, e the tangent normal to it, alpha = s/|z| and r the pair's
-      // augmentation, the linearised f_t = s z/|z| reads
-      //   d . f_t + mu f_n = c A                 (the limit along d)
-      //   (1 - alpha) e . f_t - alpha r e . g_t = 0  (turning towards g_t).
-      // At a fixed point e . f_t = e . g_t = 0: force and slip are parallel.
-      const auto slip_rows_3d = [&](const unsigned int    normal,
-                                    const PairState<dim> &state,
-                                    const PairStrength &  strength) {
-        const double d1 = state.slip_direction[0];
-        const double d2 = dim == 3 ? state.slip_direction[dim - 2] : 0.0;
-        const double e1 = -d2, e2 = d1;
-        const unsigned int along = normal + 1, across = normal + dim - 1;
-        matrix(along, along)  = d1;
-        matrix(along, across) = d2;
-        matrix(along, normal) = strength.friction_coefficient;
-        rhs[along]            = strength.cohesion_force;
-
-        const double alpha = state.direction_weight;
-        const double ar    = alpha * tangential_stiffness(normal / dim);
-        // - alpha r e . g_t = alpha r e . (C f - W gamma - g_bar)
-        for (unsigned int j = 0; j < n_forces; ++j)
-          matrix(across, j) =
-            ar * (e1 * flexibility(along, j) + e2 * flexibility(across, j));
-        for (unsigned int j = 0; j < n_rigid; ++j)
-          matrix(across, n_forces + j) =
-            -ar * (e1 * rigid_coupling(along, j) + e2 * rigid_coupling(across, j));
-        matrix(across, along) += (1 - alpha) * e1;
-        matrix(across, across) += (1 - alpha) * e2;
-        rhs[across] = ar * (e1 * external_gap[along] + e2 * external_gap[across]);
-      };
       for (unsigned int p = 0; p < pairs.size(); ++p)
-        {
-          const PairState<dim> &state    = states[p];
-          const PairStrength &  strength = strengths[p];
-          const unsigned int    normal   = dim * p;
-          // A direction held by Dirichlet conditions on both sides has no
-          // flexibility: its force goes straight into the supports, and
-          // f = 0 there is one of the equivalent solutions.
-          const auto held = [&](const unsigned int row) {
-            return flexibility(row, row) <= 1e-12 * max_diagonal;
-          };
-          if (state.status == PairStatus::open)
-            {
-              for (unsigned int i = 0; i < dim; ++i)
-                matrix(normal + i, normal + i) = 1; // f = 0
-              continue;
-            }
-          // Normal row: closed (g_n = 0), or held at the tension cut-off.
-          if (state.at_cutoff || held(normal))
-            {
-              matrix(normal, normal) = 1;
-              rhs[normal]            = state.at_cutoff ? strength.tensile_force : 0;
-            }
-          else
-            gap_row(normal);
-          if (dim == 3 && state.status == PairStatus::slip)
-            {
-              slip_rows_3d(normal, state, strength);
-              continue;
-            }
-          for (unsigned int i = 1; i < dim; ++i)
-            {
-              const unsigned int row = normal + i;
-              if (state.status == PairStatus::slip)
-                {
-                  // f_t = d (c A - mu f_n): the force at the Mohr-Coulomb
-                  // limit along the slip direction d (a vector in 3D).
-                  const double d   = state.slip_direction[i - 1];
-                  matrix(row, row) = 1;
-                  matrix(row, normal) = d * strength.friction_coefficient;
-                  rhs[row]            = d * strength.cohesion_force;
-                }
-              else if (held(row))
-                matrix(row, row) = 1;
-              else
-                gap_row(row);
-            }
-        }
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            const unsigned int row = dim * p + i;
+            rhs[row]               = rows[p].value[i];
+            // sum_k gap[i][k] (C f - W gamma - g_bar)_k
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                const double a = rows[p].gap[i][k];
+                if (a == 0)
+                  continue;
+                const unsigned int source = dim * p + k;
+                for (unsigned int j = 0; j < n_forces; ++j)
+                  matrix(row, j) += a * flexibility(source, j);
+                for (unsigned int j = 0; j < n_rigid; ++j)
+                  matrix(row, n_forces + j) -= a * rigid_coupling(source, j);
+                rhs[row] += a * external_gap[source];
+              }
+            for (unsigned int k = 0; k < dim; ++k)
+              matrix(row, dim * p + k) += rows[p].force[i][k];
+          }
       // Equilibrium of the free modes: -W^T f = -omega^T F.
       for (unsigned int r = 0; r < n_rigid; ++r)
         {
@@ -243,9 +260,6 @@ namespace fdem
       const ReusableLU::Result result = lu.solve(matrix, rhs);
 
       ContactSolution solution;
-      solution.forces.reinit(n_forces);
-      solution.rigid_motions.reinit(n_rigid);
-      solution.relative_displacements = external_gap;
       solution.reciprocal_condition   = result.reciprocal_condition;
       solution.factorized             = result.factorized;
       solution.n_changed_rows         = result.n_changed_rows;
@@ -253,20 +267,44 @@ namespace fdem
       solution.reuse_method           = result.method != nullptr ? result.method : "";
       // Below rcond = 1e-14 the solution has no correct digit left.
       solution.solved = result.solved;
-      if (!solution.solved)
-        return solution;
+      if (solution.solved)
+        finish_solution(rhs, solution);
+      else
+        unsolved(solution);
+      return solution;
+    }
 
+    template <int dim>
+    void
+    MixedSystem<dim>::unsolved(ContactSolution &solution) const
+    {
+      solution.solved = false;
+      solution.forces.reinit(external_gap.size());
+      solution.rigid_motions.reinit(rigid_loads.size());
+      solution.elastic_displacements.reinit(external_gap.size());
+      solution.relative_displacements = external_gap;
+    }
+
+    template <int dim>
+    void
+    MixedSystem<dim>::finish_solution(const Vector<double> &x, ContactSolution &solution) const
+    {
+      const unsigned int n_forces = external_gap.size();
+      const unsigned int n_rigid  = rigid_loads.size();
+      solution.forces.reinit(n_forces);
+      solution.rigid_motions.reinit(n_rigid);
       for (unsigned int i = 0; i < n_forces; ++i)
-        solution.forces[i] = rhs[i];
+        solution.forces[i] = x[i];
       for (unsigned int i = 0; i < n_rigid; ++i)
-        solution.rigid_motions[i] = rhs[n_forces + i];
+        solution.rigid_motions[i] = x[n_forces + i];
 
+      solution.elastic_displacements.reinit(n_forces);
+      vmult_flexibility(solution.elastic_displacements, solution.forces);
+      solution.relative_displacements = external_gap;
+      solution.relative_displacements -= solution.elastic_displacements;
       Vector<double> product(n_forces);
-      flexibility.vmult(product, solution.forces);
-      solution.relative_displacements -= product;
       rigid_coupling.vmult(product, solution.rigid_motions);
       solution.relative_displacements += product;
-      return solution;
     }
 
     template <int dim>

@@ -215,9 +215,8 @@ namespace fdem
             }
 
           // Runaway: rigid relative motion far beyond the elastic scale.
-          Vector<double> elastic(solution.forces.size());
-          system.flexibility.vmult(elastic, solution.forces);
-          const double elastic_scale = std::max(gap_scale, elastic.linfty_norm());
+          const double elastic_scale =
+            std::max(gap_scale, solution.elastic_displacements.linfty_norm());
           Vector<double> rigid(solution.forces.size());
           system.rigid_coupling.vmult(rigid, solution.rigid_motions);
           const bool finite = std::all_of(solution.forces.begin(), solution.forces.end(),
@@ -352,11 +351,14 @@ namespace fdem
           if (dim == 3)
             log << ", slip directions turned up to " << std::setprecision(3) << record.max_turn
                 << " deg" << std::setprecision(6);
-          log << "; " << solution.n_changed_rows << " rows changed, LU "
-              << (solution.factorized ?
-                    std::string("factorised: ") + solution.why_factorized :
-                    std::string("reused: ") + solution.reuse_method)
-              << std::endl;
+          if (system.solver() == MixedSystemSolver::iterative)
+            log << "; " << solution.n_krylov_iterations << " GMRES iterations" << std::endl;
+          else
+            log << "; " << solution.n_changed_rows << " rows changed, LU "
+                << (solution.factorized ?
+                      std::string("factorised: ") + solution.why_factorized :
+                      std::string("reused: ") + solution.reuse_method)
+                << std::endl;
 
           if (record.n_changes == 0)
             {

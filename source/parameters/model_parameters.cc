@@ -436,6 +436,27 @@ namespace fdem
                         "Except for MUMPS_Schur the interface flexibility is "
                         "solved with blocks of 64 right-hand sides. See "
                         "doc/flexibility_solvers.md for timings.");
+      prm.declare_entry("Mixed system",
+                        "dense",
+                        Patterns::Selection("dense|iterative"),
+                        "How the mixed system of the contact forces (eq. 9) is "
+                        "solved in each status iteration. dense: the interface "
+                        "flexibility C is formed (memory (dim x pairs)^2) and "
+                        "the system LU-factorised; fastest for up to about a "
+                        "thousand pairs. iterative: C is never formed but "
+                        "applied through the blocks' factorisations (one solve "
+                        "per block and GMRES iteration), preconditioned by the "
+                        "pairs' own flexibility; memory grows as the FE model. "
+                        "For large 3D interfaces, see doc/scaling.md for the "
+                        "crossover. It needs no Schur complement: MUMPS_Schur "
+                        "then factorises as MUMPS does.");
+      prm.declare_entry("GMRES tolerance",
+                        "1e-12",
+                        Patterns::Double(1e-16, 1e-4),
+                        "Mixed system = iterative: GMRES stops when the "
+                        "preconditioned residual (in force units) is this "
+                        "fraction of the preconditioned right-hand side "
+                        "(dimensionless).");
       prm.leave_subsection();
     }
 
@@ -443,7 +464,9 @@ namespace fdem
     SolverParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      direct_solver = prm.get("Direct solver");
+      direct_solver   = prm.get("Direct solver");
+      mixed_system    = prm.get("Mixed system");
+      gmres_tolerance = prm.get_double("GMRES tolerance");
       prm.leave_subsection();
     }
 

@@ -159,6 +159,16 @@ namespace fdem
       flexibility(const std::vector<types::global_dof_index> &dofs) const;
 
       /**
+       * The dim x dim blocks on the diagonal of the flexibility, one per node
+       * of @p nodes (its dim dofs): what flexibility() gives for those dofs,
+       * without the rest of C. With "MUMPS" they are MUMPS's selected
+       * entries of K^{-1}; with the other solvers, dim solves per node.
+       */
+      std::vector<FullMatrix<double>>
+      flexibility_diagonal_blocks(
+        const std::vector<std::array<types::global_dof_index, dim>> &nodes) const;
+
+      /**
        * The flexibility of @p dofs into @p C (n x n) from the inverse Schur
        * complement, if the block was factorised with "MUMPS_Schur" and its
        * Schur dofs hold every dof of @p dofs and its constraint's dofs;

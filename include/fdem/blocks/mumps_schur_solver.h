@@ -7,6 +7,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace fdem
@@ -78,6 +79,18 @@ namespace fdem
        */
       std::vector<double>
       inverse_on_schur_dofs() const;
+
+      /**
+       * Selected entries (K^{-1})_{ij}, one per (i, j) of @p entries, from
+       * the factors without a solve of all of K^{-1}'s columns: MUMPS
+       * computes just those entries, exploiting the sparsity of the
+       * right-hand sides (ICNTL(30), "entries of the inverse"). Only
+       * without Schur dofs. Collective; the result is on every rank.
+       */
+      std::vector<double>
+      inverse_entries(
+        const std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+          &entries) const;
 
     private:
       struct Data;

@@ -5,6 +5,7 @@
 #include <fdem/blocks/elastic_block.h>
 #include <fdem/contact/contact_law.h>
 #include <fdem/contact/interface_pairs.h>
+#include <fdem/contact/pair_rows.h>
 #include <fdem/contact/reusable_lu.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -28,6 +29,8 @@ namespace fdem
       Vector<double> rigid_motions;
       /** Relative displacements g = g_bar - C f + W gamma, local, dim per pair. */
       Vector<double> relative_displacements;
+      /** The elastic part C f of the relative displacements. */
+      Vector<double> elastic_displacements;
       /** Estimate of the reciprocal condition number of the scaled system. */
       double reciprocal_condition = 1;
       /** False if the system was singular (no static equilibrium). */
@@ -40,6 +43,35 @@ namespace fdem
       const char *why_factorized = "";
       /** How the factors were reused, if they were. */
       const char *reuse_method = "";
+      /** Iterative solver: GMRES iterations of this solve (0 for the dense one). */
+      unsigned int n_krylov_iterations = 0;
+    };
+
+    /** How the mixed system is solved: subsection "Contact" of the parameters. */
+    enum class MixedSystemSolver
+    {
+      /**
+       * C formed as a dense matrix (dim per pair squared) and the system
+       * LU-factorised, the factors reused while few rows change.
+       */
+      dense,
+      /**
+       * C never formed: applied as C f = T^T (K_I^{-1} + K_J^{-1}) T f through
+       * the blocks' factorisations inside GMRES, preconditioned by the same
+       * system with C replaced by its pairs' own blocks (solved exactly,
+       * rigid unknowns included). Memory and work per iteration grow as the
+       * FE model, not as pairs squared.
+       */
+      iterative
+    };
+
+    /** Controls of the iterative solver. */
+    struct KrylovControl
+    {
+      /** Relative reduction of the preconditioned residual (forces). */
+      double tolerance = 1e-12;
+      /** Largest number of GMRES iterations per solve. */
+      unsigned int max_iterations = 2000;
     };
 
     /**
@@ -68,7 +100,8 @@ namespace fdem
       MixedSystem(
         const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
         const std::vector<Vector<double>> &external_displacements,
-        const std::vector<Interface<dim>> &interfaces);
+        const std::vector<Interface<dim>> &interfaces,
+        const MixedSystemSolver            solver = MixedSystemSolver::dense);
 
       /**
        * Solves the system with the rows of every pair set by its state
@@ -104,7 +137,32 @@ namespace fdem
        * is a force of the size of f_t; 0 if the pair is held tangentially.
        */
       double
-      tangential_stiffness(const unsigned int p) const;
+      tangential_stiffness(const unsigned int p) const
+      {
+        return contact::tangential_stiffness(self_flexibility[p]);
+      }
+
+      /**
+       * dst = C src, with the dense C or, for the iterative solver, through
+       * one solve of each block that a pair touches.
+       */
+      void
+      vmult_flexibility(Vector<double> &dst, const Vector<double> &src) const;
+
+      /** The solver of the system. */
+      MixedSystemSolver
+      solver() const
+      {
+        return solver_type;
+      }
+
+      /** Controls of the iterative solver. */
+      KrylovControl krylov_control;
+
+      /** Products C f computed so far (the iterative solver's block solves). */
+      mutable unsigned long n_flexibility_products = 0;
+      /** GMRES iterations so far. */
+      mutable unsigned long n_krylov_iterations = 0;
 
       /** The dense solver: its counts of factorisations and reused solves. */
       const ReusableLU &
@@ -137,8 +195,13 @@ namespace fdem
       /** First rigid unknown of block b. */
       std::vector<unsigned int> first_rigid_unknown;
 
-      /** Interface flexibility C (eq. 6), local frames, dim per pair. */
+      /**
+       * Interface flexibility C (eq. 6), local frames, dim per pair. Empty
+       * for the iterative solver, which never forms it.
+       */
       FullMatrix<double> flexibility;
+      /** The pairs' own dim x dim blocks of C (both solvers). */
+      std::vector<Tensor<2, dim>> self_flexibility;
       /** Relative displacement under the external loads, plus gaps. */
       Vector<double> external_gap;
       /** d g / d gamma: relative motion of the pairs under each free mode. */
@@ -148,9 +211,46 @@ namespace fdem
 
     private:
       const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks;
+      const MixedSystemSolver                                         solver_type;
       /** All pairs of all interfaces, in order, with their blocks. */
       std::vector<const NodePair<dim> *> pairs;
       std::vector<unsigned int>          pair_block_I, pair_block_J;
+
+      /**
+       * The pairs that touch one block, the sign of the load they put on it
+       * (I receives -f, J receives +f), and their dofs on it, dim per pair.
+       */
+      struct BlockTouch
+      {
+        unsigned int                         block = 0;
+        std::vector<unsigned int>            pairs;
+        std::vector<double>                  signs;
+        std::vector<types::global_dof_index> dofs;
+      };
+      /** Every block that a pair touches. */
+      std::vector<BlockTouch> touches;
+      /** A direction with at most this self-flexibility is held (pair_rows()). */
+      double held_flexibility = 0;
+      /** The mean of the diagonal of C: the scale of the rigid unknowns in GMRES. */
+      double mean_flexibility = 1;
+      /** The iterative solver's last solution: the start of the next solve. */
+      mutable Vector<double> last_iterate;
+
+      /** The system with the rows @p rows by the dense LU. */
+      ContactSolution
+      solve_dense(const std::vector<PairRows<dim>> &rows) const;
+
+      /** The system with the rows @p rows by GMRES (the iterative solver). */
+      ContactSolution
+      solve_iterative(const std::vector<PairRows<dim>> &rows) const;
+
+      /** g, C f and the unknowns into @p solution from x = [f; gamma]. */
+      void
+      finish_solution(const Vector<double> &x, ContactSolution &solution) const;
+
+      /** Zero forces and motions into @p solution, marked as not solved. */
+      void
+      unsolved(ContactSolution &solution) const;
       /**
        * The factors of the last factorised system, reused while few rows
        * change between solves. Mutable: solve() leaves the system as it is,

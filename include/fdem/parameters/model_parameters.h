@@ -185,6 +185,13 @@ namespace fdem
        * "MUMPS_Schur", "MUMPS" or an Amesos class name.
        */
       std::string direct_solver = "MUMPS_Schur";
+      /**
+       * How the mixed system (eq. 9) is solved: "dense" (C formed, LU) or
+       * "iterative" (C applied through the factorisations inside GMRES).
+       */
+      std::string mixed_system = "dense";
+      /** Relative tolerance of GMRES for the iterative mixed system. */
+      double gmres_tolerance = 1e-12;
     };
 
     /** What the run writes: subsection "Output". */

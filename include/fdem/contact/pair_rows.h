@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/contact/contact_law.h>
+
+#include <deal.II/base/tensor.h>
+
+namespace fdem
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    /**
+     * The dim rows of one pair in the mixed system (eq. 9 with the
+     * conditions of Table 1, design/formulation.md Sec. 3), set by the
+     * pair's state. With d = C f - W gamma the elastic-minus-rigid part of
+     * the pair's relative displacement (g = g_bar - d), row i reads
+     *
+     *   sum_k gap[i][k] d_k + sum_k force[i][k] f_k = sum_k gap[i][k] g_bar_k + value[i],
+     *
+     * so that a row of gap coefficients asks g = 0 along them, and a row of
+     * force coefficients fixes a combination of the pair's own forces. The
+     * dense and the iterative solvers build their systems from these rows.
+     */
+    template <int dim>
+    struct PairRows
+    {
+      Tensor<2, dim> gap;
+      Tensor<2, dim> force;
+      Tensor<1, dim> value;
+    };
+
+    /**
+     * The rows of a pair in @p state with @p strength (doc/theory.md):
+     * - stick: g = 0;
+     * - slip: g_n = 0, and the tangential force at the Mohr-Coulomb limit
+     *   along the slip direction (in 3D linearised about the previous
+     *   iterate, turning towards the slip, PairState);
+     * - open: f = 0;
+     * - at the tension cut-off: f_n = sigma_t A instead of g_n = 0.
+     * @p self_flexibility is the pair's own block of C (local frame); a
+     * direction whose self-flexibility is at most @p held_flexibility is held
+     * by Dirichlet conditions on both sides: f = 0 there (its force goes
+     * into the supports, one of the equivalent solutions).
+     */
+    template <int dim>
+    PairRows<dim>
+    pair_rows(const PairState<dim> &state,
+              const PairStrength &  strength,
+              const Tensor<2, dim> &self_flexibility,
+              const double          held_flexibility);
+
+    /**
+     * The augmentation r of z = f_t + r g_t (3D slip rows): the reciprocal
+     * of the pair's mean tangential self-flexibility, so that r g_t is a
+     * force of the size of f_t; 0 if the pair is held tangentially.
+     */
+    template <int dim>
+    double
+    tangential_stiffness(const Tensor<2, dim> &self_flexibility);
+  } // namespace contact
+} // namespace fdem
