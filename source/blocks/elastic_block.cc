@@ -460,6 +460,41 @@ namespace fdem
     }
 
     template <int dim>
+    std::vector<Vector<double>>
+    ElasticBlock<dim>::solve(const std::vector<Vector<double>> &nodal_forces) const
+    {
+      if (nodal_forces.size() == 1)
+        return {solve(nodal_forces[0])};
+      const unsigned int          block_size = 64;
+      const std::size_t           n_dofs     = dof_handler.n_dofs();
+      std::vector<Vector<double>> u(nodal_forces.size());
+      std::vector<double>         columns;
+      for (unsigned int first = 0; first < nodal_forces.size(); first += block_size)
+        {
+          const unsigned int n_columns =
+            std::min<unsigned int>(block_size, nodal_forces.size() - first);
+          columns.resize(n_dofs * n_columns);
+          for (unsigned int c = 0; c < n_columns; ++c)
+            {
+              Vector<double> rhs = nodal_forces[first + c];
+              constraints.condense(rhs);
+              std::copy(rhs.begin(), rhs.end(), columns.begin() + c * n_dofs);
+            }
+          solve_columns(columns, n_columns);
+          for (unsigned int c = 0; c < n_columns; ++c)
+            {
+              Vector<double> &column = u[first + c];
+              column.reinit(n_dofs);
+              std::copy(columns.begin() + c * n_dofs,
+                        columns.begin() + (c + 1) * n_dofs,
+                        column.begin());
+              constraints.distribute(column);
+            }
+        }
+      return u;
+    }
+
+    template <int dim>
     void
     ElasticBlock<dim>::solve_columns(std::vector<double> &b,
                                      const unsigned int   n_rhs) const
@@ -563,10 +598,31 @@ namespace fdem
       const std::vector<std::array<types::global_dof_index, dim>> &nodes) const
     {
       std::vector<FullMatrix<double>> blocks(nodes.size(), FullMatrix<double>(dim, dim));
-      if (!mumps_solver || !mumps_solver->schur_dofs().empty())
+      // MUMPS's entries of K^{-1} on a distributed matrix stopped with
+      // INFOG(1) = -22 in our runs (MUMPS 5.5): with more than one rank, and
+      // with the other solvers, the columns of the nodes' dofs are solved
+      // in blocks of right-hand sides and only their own blocks kept.
+      if (!mumps_solver || !mumps_solver->schur_dofs().empty() ||
+          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
         {
-          for (unsigned int k = 0; k < nodes.size(); ++k)
-            blocks[k] = flexibility({nodes[k].begin(), nodes[k].end()});
+          const unsigned int nodes_per_pass = 64 / dim;
+          for (unsigned int first = 0; first < nodes.size(); first += nodes_per_pass)
+            {
+              const unsigned int last =
+                std::min<unsigned int>(nodes.size(), first + nodes_per_pass);
+              std::vector<Vector<double>> loads;
+              for (unsigned int k = first; k < last; ++k)
+                for (unsigned int j = 0; j < dim; ++j)
+                  {
+                    loads.emplace_back(dof_handler.n_dofs());
+                    loads.back()[nodes[k][j]] = 1;
+                  }
+              const std::vector<Vector<double>> u = solve(loads);
+              for (unsigned int k = first; k < last; ++k)
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    blocks[k](i, j) = u[dim * (k - first) + j][nodes[k][i]];
+            }
           return blocks;
         }
       // C = P K^{-1} P^T with P the constraints (u = P u_free, a fixed dof

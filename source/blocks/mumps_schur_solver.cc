@@ -388,13 +388,18 @@ namespace fdem
         ++start;
       std::vector<double> values(entries.size(), 0.0);
 
-      icntl(id, 30)  = 1;
-      id.nrhs        = n;
-      id.lrhs        = n;
-      id.nz_rhs      = entries.size();
-      id.irhs_ptr    = column_start.data();
-      id.irhs_sparse = rows.data();
-      id.rhs_sparse  = values.data();
+      // The requests live on the host only: MUMPS refuses arrays on the
+      // other ranks (INFOG(1) = -22), and the dense pointer of the last
+      // solve is stale.
+      const bool host = Utilities::MPI::this_mpi_process(communicator) == 0;
+      id.rhs          = nullptr;
+      icntl(id, 30)   = 1;
+      id.nrhs         = n;
+      id.lrhs         = n;
+      id.nz_rhs       = entries.size();
+      id.irhs_ptr     = host ? column_start.data() : nullptr;
+      id.irhs_sparse  = host ? rows.data() : nullptr;
+      id.rhs_sparse   = host ? values.data() : nullptr;
       run(3, "computation of entries of the inverse");
       icntl(id, 30)  = 0;
       id.irhs_ptr    = nullptr;

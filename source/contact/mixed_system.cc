@@ -150,6 +150,8 @@ namespace fdem
       held_flexibility = 1e-12 * max_diagonal;
       if (sum_diagonal > 0)
         mean_flexibility = sum_diagonal / n_forces;
+      if (solver_type == MixedSystemSolver::iterative)
+        setup_preconditioner();
     }
 
     template <int dim>
@@ -157,40 +159,50 @@ namespace fdem
     MixedSystem<dim>::vmult_flexibility(Vector<double> &dst, const Vector<double> &src) const
     {
       if (solver_type == MixedSystemSolver::dense)
-        {
-          flexibility.vmult(dst, src);
-          return;
-        }
+        flexibility.vmult(dst, src);
+      else
+        dst = flexibility_products({src})[0];
+    }
+
+    template <int dim>
+    std::vector<Vector<double>>
+    MixedSystem<dim>::flexibility_products(const std::vector<Vector<double>> &sources) const
+    {
       // C f = sum_b s_k T_k K_b^{-1} (sum_l s_l T_l^T f_l): the load of the
       // pair forces on each block, one solve, its displacements at the pairs.
-      dst.reinit(src.size());
+      std::vector<Vector<double>> products(sources.size(), Vector<double>(external_gap.size()));
       for (const BlockTouch &touch : touches)
         {
           const blocks::ElasticBlock<dim> &block = *blocks[touch.block];
-          Vector<double> load(block.dof_handler.n_dofs());
-          for (unsigned int k = 0; k < touch.pairs.size(); ++k)
-            {
-              const unsigned int p = touch.pairs[k];
-              Tensor<1, dim>     f;
-              for (unsigned int i = 0; i < dim; ++i)
-                f[i] = src[dim * p + i];
-              const Tensor<1, dim> global = touch.signs[k] * (transpose(pairs[p]->frame) * f);
-              for (unsigned int i = 0; i < dim; ++i)
-                load[touch.dofs[dim * k + i]] += global[i];
-            }
-          const Vector<double> u = block.solve(load);
-          for (unsigned int k = 0; k < touch.pairs.size(); ++k)
-            {
-              const unsigned int p = touch.pairs[k];
-              Tensor<1, dim>     u_k;
-              for (unsigned int i = 0; i < dim; ++i)
-                u_k[i] = u[touch.dofs[dim * k + i]];
-              const Tensor<1, dim> local = touch.signs[k] * (pairs[p]->frame * u_k);
-              for (unsigned int i = 0; i < dim; ++i)
-                dst[dim * p + i] += local[i];
-            }
+          std::vector<Vector<double>> loads(sources.size(),
+                                            Vector<double>(block.dof_handler.n_dofs()));
+          for (unsigned int c = 0; c < sources.size(); ++c)
+            for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+              {
+                const unsigned int p = touch.pairs[k];
+                Tensor<1, dim>     f;
+                for (unsigned int i = 0; i < dim; ++i)
+                  f[i] = sources[c][dim * p + i];
+                const Tensor<1, dim> global =
+                  touch.signs[k] * (transpose(pairs[p]->frame) * f);
+                for (unsigned int i = 0; i < dim; ++i)
+                  loads[c][touch.dofs[dim * k + i]] += global[i];
+              }
+          const std::vector<Vector<double>> u = block.solve(loads);
+          for (unsigned int c = 0; c < sources.size(); ++c)
+            for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+              {
+                const unsigned int p = touch.pairs[k];
+                Tensor<1, dim>     u_k;
+                for (unsigned int i = 0; i < dim; ++i)
+                  u_k[i] = u[c][touch.dofs[dim * k + i]];
+                const Tensor<1, dim> local = touch.signs[k] * (pairs[p]->frame * u_k);
+                for (unsigned int i = 0; i < dim; ++i)
+                  products[c][dim * p + i] += local[i];
+              }
         }
-      ++n_flexibility_products;
+      n_flexibility_products += sources.size();
+      return products;
     }
 
     template <int dim>

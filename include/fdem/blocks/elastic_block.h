@@ -147,6 +147,14 @@ namespace fdem
       solve(const Vector<double> &nodal_forces) const;
 
       /**
+       * The displacements for several nodal force vectors, solved in blocks
+       * of right-hand sides (one pass through the factors for many).
+       * Collective.
+       */
+      std::vector<Vector<double>>
+      solve(const std::vector<Vector<double>> &nodal_forces) const;
+
+      /**
        * Flexibility matrix C(i,j) = (K^{-1})_{ij} restricted to @p dofs: the
        * displacement at dof i due to a unit force at dof j, through the
        * constraints (a force on a constrained dof acts on the dofs it

@@ -202,6 +202,15 @@ namespace fdem
       FullMatrix<double> flexibility;
       /** The pairs' own dim x dim blocks of C (both solvers). */
       std::vector<Tensor<2, dim>> self_flexibility;
+      /**
+       * The pairs' blocks of P C P, P the orthogonal projector onto the
+       * forces that the free modes do not feel (ker W^T): the pairs' own
+       * flexibility without the part that the minimal supports of free
+       * blocks add to every entry of C, a rigid motion that the rigid
+       * unknowns take up. The iterative solver's preconditioner uses them
+       * (empty for the dense solver).
+       */
+      std::vector<Tensor<2, dim>> projected_self_flexibility;
       /** Relative displacement under the external loads, plus gaps. */
       Vector<double> external_gap;
       /** d g / d gamma: relative motion of the pairs under each free mode. */
@@ -235,6 +244,15 @@ namespace fdem
       double mean_flexibility = 1;
       /** The iterative solver's last solution: the start of the next solve. */
       mutable Vector<double> last_iterate;
+
+      /** C times each of @p sources, through the block factorisations. */
+      std::vector<Vector<double>>
+      flexibility_products(const std::vector<Vector<double>> &sources) const;
+
+
+      /** Computes projected_self_flexibility (the iterative solver). */
+      void
+      setup_preconditioner();
 
       /** The system with the rows @p rows by the dense LU. */
       ContactSolution
