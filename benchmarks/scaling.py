@@ -6,13 +6,16 @@ limits the size of a model.
     /usr/bin/python3 benchmarks/scaling.py [--exe build/fdem-slope]
         [--budget SECONDS] [--quick] [--output-dir DIR]
 
-Two series, each refined until one run takes longer than --budget (default
+Three series, each refined until one run takes longer than --budget (default
 600 s) or fails:
 - 2D: the paper's slope (prm/paper_slope.prm), Geometry/Slope/Mesh size
   halved and more: dofs grow as h^-2, pairs only as h^-1;
 - 3D: a block on a plane (prm/block_on_plane_3d.prm), elements along the
   plane n x n with two across each block's height: pairs grow as n^2, as
-  fast as the dofs.
+  fast as the dofs;
+- the same 3D series with Solver/Mixed system = iterative (C never formed,
+  applied through the factorisations inside GMRES), further out, and the
+  crossover of the two 3D series.
 Writes DIR/scaling.md (default doc/) with the tables, fitted exponents and
 the extrapolation to 24 GiB, and DIR/benchmarks/scaling.csv. Every number in
 scaling.md comes from this run.
@@ -37,10 +40,14 @@ def series_2d(quick):
     return [({"Geometry/Slope/Mesh size": h}, f"h = {h} m", None) for h in sizes]
 
 
-def series_3d(quick):
-    counts = [6, 10] if quick else [6, 10, 16, 24, 32, 40, 48]
+def series_3d(quick, iterative=False):
+    if quick:
+        counts = [6, 10]
+    else:
+        counts = [6, 10, 16, 24, 32, 40, 48] + ([64, 80, 96] if iterative else [])
+    extra = {"Solver/Mixed system": "iterative"} if iterative else {}
     return [({"Geometry/Block on plane/Elements along length": n,
-              "Geometry/Block on plane/Elements along width": n},
+              "Geometry/Block on plane/Elements along width": n, **extra},
              f"n = {n}", BLOCK_ON_PLANE_K) for n in counts]
 
 
@@ -69,6 +76,8 @@ def row_of(run, label, exact):
         "peak memory (MiB)": s["peak_memory_MiB"],
         "K": K,
         "error": (K / exact - 1) if (exact and isinstance(K, (int, float))) else math.nan,
+        "GMRES per contact solve": (s["contact"].get("n_gmres_iterations", 0) / solves
+                                    if solves else math.nan),
     }
 
 
@@ -160,15 +169,56 @@ def growth_lines(rows):
     return lines
 
 
-def section(title, rows, stop, description):
+def section(title, rows, stop, description, columns=COLUMNS):
     lines = [f"## {title}", "", description, "",
-             *common.markdown_table(COLUMNS, [[fmt(r[c]) for c in COLUMNS] for r in rows],
-                                    "l" + "r" * (len(COLUMNS) - 1)),
+             *common.markdown_table(columns, [[fmt(r[c]) for c in columns] for r in rows],
+                                    "l" + "r" * (len(columns) - 1)),
              "", f"The series stopped: {stop}.", ""]
     return lines + growth_lines(rows) + [""]
 
 
-SERIES = [("2D paper slope", "2D: the paper's slope"), ("3D block on plane", "3D: block on a plane")]
+SERIES = [("2D paper slope", "2D: the paper's slope"), ("3D block on plane", "3D: block on a plane"),
+          ("3D block on plane, iterative", "3D: block on a plane, iterative mixed system")]
+ITERATIVE_COLUMNS = COLUMNS[:-2] + ["GMRES per contact solve", "K", "error"]
+
+
+def crossover_lines(dense, iterative, table=True):
+    """The dense and the iterative 3D series side by side, level by level
+    (if @p table), and where the iterative one becomes the faster."""
+    by_level = {r["level"]: r for r in dense}
+    columns = ["level", "pairs", "dense total (s)", "iterative total (s)", "time ratio",
+               "dense memory (MiB)", "iterative memory (MiB)", "memory ratio",
+               "K difference"]
+    rows, first_faster = [], None
+    for r in iterative:
+        d = by_level.get(r["level"])
+        if d is None:
+            rows.append([r["level"], r["pairs"], "–", fmt(r["total (s)"]), "–", "–",
+                          fmt(r["peak memory (MiB)"]), "–", "–"])
+            continue
+        ratio = d["total (s)"] / r["total (s)"]
+        if ratio > 1 and first_faster is None:
+            first_faster = r
+        rows.append([r["level"], r["pairs"], fmt(d["total (s)"]), fmt(r["total (s)"]),
+                      fmt(ratio), fmt(d["peak memory (MiB)"]), fmt(r["peak memory (MiB)"]),
+                      fmt(d["peak memory (MiB)"] / r["peak memory (MiB)"]),
+                      fmt(r["K"] - d["K"]) if isinstance(r["K"], float) and
+                      isinstance(d["K"], float) else "–"])
+    lines = ["## Crossover: dense against iterative mixed system (3D)", "",
+             "The two 3D series level by level (ratios dense / iterative; above 1 the "
+             "iterative solver is the cheaper).", "",
+             *common.markdown_table(columns, rows, "l" + "r" * (len(columns) - 1)),
+             ""] if table else []
+    if first_faster is not None:
+        lines.append(f"- The iterative solver is the faster from {first_faster['level']} "
+                     f"({first_faster['pairs']} pairs) on, in this run.")
+    else:
+        lines.append("- The iterative solver was not the faster at any level both series ran.")
+    if iterative and dense and iterative[-1]["pairs"] > dense[-1]["pairs"]:
+        lines.append(f"- The iterative series went on to {iterative[-1]['pairs']} pairs "
+                     f"({iterative[-1]['dofs']} dofs) in {fmt(iterative[-1]['total (s)'])} s "
+                     f"and {fmt(iterative[-1]['peak memory (MiB)'])} MiB.")
+    return lines + [""]
 
 
 def read_csv(path):
@@ -190,6 +240,10 @@ def benchmarks_section(csv_path):
     for key, title in SERIES:
         rows = by_series.get(key, [])
         lines += [f"**{title}**", ""] + growth_lines(rows) + [""]
+    dense, iterative = by_series.get(SERIES[1][0], []), by_series.get(SERIES[2][0], [])
+    if dense and iterative:
+        lines += ["**3D: dense against iterative**", ""] + crossover_lines(dense, iterative,
+                                                                           table=False)
     return lines + ["<!-- /scale -->", ""]
 
 
@@ -225,13 +279,16 @@ def main():
     print("3D: block on a plane", flush=True)
     rows_3d, stop_3d = run_series(args.exe, "block_on_plane_3d.prm", series_3d(args.quick),
                                   args.budget)
+    print("3D: block on a plane, iterative mixed system", flush=True)
+    rows_it, stop_it = run_series(args.exe, "block_on_plane_3d.prm",
+                                  series_3d(args.quick, iterative=True), args.budget)
 
     with open(os.path.join(doc_dir, "benchmarks", "scaling.csv"), "w", newline="") as f:
         writer = csv.writer(f)
-        writer.writerow(["series"] + COLUMNS)
-        for (name, _), rows in zip(SERIES, (rows_2d, rows_3d)):
+        writer.writerow(["series"] + ITERATIVE_COLUMNS)
+        for (name, _), rows in zip(SERIES, (rows_2d, rows_3d, rows_it)):
             for r in rows:
-                writer.writerow([name] + [r[c] for c in COLUMNS])
+                writer.writerow([name] + [r[c] for c in ITERATIVE_COLUMNS])
 
     lines = [
         "# Scale: how the cost grows, and what limits it", "",
@@ -253,12 +310,19 @@ def main():
                      "across each block's height: pairs (n + 1)^2 grow as fast as the dofs, "
                      "the case where the dense parts (the interface flexibility C, the Schur "
                      "complement of the interface dofs, the mixed system's LU) count most.")
+    lines += section("3D: block on a plane, iterative mixed system", rows_it, stop_it,
+                     "The same series with Solver/Mixed system = iterative: C is never formed "
+                     "but applied through the blocks' factorisations (one solve per block) in "
+                     "each GMRES iteration, preconditioned by the pairs' own blocks of C; "
+                     "*flexibility* is then only the pairs' blocks. *GMRES per contact "
+                     "solve* is the mean number of iterations.", ITERATIVE_COLUMNS)
+    lines += crossover_lines(rows_3d, rows_it)
     with open(os.path.join(doc_dir, "scaling.md"), "w") as f:
         f.write("\n".join(lines))
     csv_path = os.path.join(doc_dir, "benchmarks", "scaling.csv")
     put_benchmarks_section(os.path.join(doc_dir, "benchmarks.md"), benchmarks_section(csv_path))
     print(f"wrote {os.path.join(doc_dir, 'scaling.md')} and the Scale section of benchmarks.md")
-    return 0 if rows_2d and rows_3d else 1
+    return 0 if rows_2d and rows_3d and rows_it else 1
 
 
 if __name__ == "__main__":
