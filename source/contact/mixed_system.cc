@@ -170,37 +170,42 @@ namespace fdem
     {
       // C f = sum_b s_k T_k K_b^{-1} (sum_l s_l T_l^T f_l): the load of the
       // pair forces on each block, one solve, its displacements at the pairs.
+      // At most 64 sources at a time: the loads and displacements are
+      // vectors of the blocks' size.
       std::vector<Vector<double>> products(sources.size(), Vector<double>(external_gap.size()));
-      for (const BlockTouch &touch : touches)
-        {
-          const blocks::ElasticBlock<dim> &block = *blocks[touch.block];
-          std::vector<Vector<double>> loads(sources.size(),
-                                            Vector<double>(block.dof_handler.n_dofs()));
-          for (unsigned int c = 0; c < sources.size(); ++c)
-            for (unsigned int k = 0; k < touch.pairs.size(); ++k)
-              {
-                const unsigned int p = touch.pairs[k];
-                Tensor<1, dim>     f;
-                for (unsigned int i = 0; i < dim; ++i)
-                  f[i] = sources[c][dim * p + i];
-                const Tensor<1, dim> global =
-                  touch.signs[k] * (transpose(pairs[p]->frame) * f);
-                for (unsigned int i = 0; i < dim; ++i)
-                  loads[c][touch.dofs[dim * k + i]] += global[i];
-              }
-          const std::vector<Vector<double>> u = block.solve(loads);
-          for (unsigned int c = 0; c < sources.size(); ++c)
-            for (unsigned int k = 0; k < touch.pairs.size(); ++k)
-              {
-                const unsigned int p = touch.pairs[k];
-                Tensor<1, dim>     u_k;
-                for (unsigned int i = 0; i < dim; ++i)
-                  u_k[i] = u[c][touch.dofs[dim * k + i]];
-                const Tensor<1, dim> local = touch.signs[k] * (pairs[p]->frame * u_k);
-                for (unsigned int i = 0; i < dim; ++i)
-                  products[c][dim * p + i] += local[i];
-              }
-        }
+      const unsigned int          batch = 64;
+      for (unsigned int first = 0; first < sources.size(); first += batch)
+        for (const BlockTouch &touch : touches)
+          {
+            const unsigned int n_columns =
+              std::min<unsigned int>(batch, sources.size() - first);
+            const blocks::ElasticBlock<dim> &block = *blocks[touch.block];
+            std::vector<Vector<double>> loads(n_columns, Vector<double>(block.dof_handler.n_dofs()));
+            for (unsigned int c = 0; c < n_columns; ++c)
+              for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+                {
+                  const unsigned int p = touch.pairs[k];
+                  Tensor<1, dim>     f;
+                  for (unsigned int i = 0; i < dim; ++i)
+                    f[i] = sources[first + c][dim * p + i];
+                  const Tensor<1, dim> global =
+                    touch.signs[k] * (transpose(pairs[p]->frame) * f);
+                  for (unsigned int i = 0; i < dim; ++i)
+                    loads[c][touch.dofs[dim * k + i]] += global[i];
+                }
+            const std::vector<Vector<double>> u = block.solve(loads);
+            for (unsigned int c = 0; c < n_columns; ++c)
+              for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+                {
+                  const unsigned int p = touch.pairs[k];
+                  Tensor<1, dim>     u_k;
+                  for (unsigned int i = 0; i < dim; ++i)
+                    u_k[i] = u[c][touch.dofs[dim * k + i]];
+                  const Tensor<1, dim> local = touch.signs[k] * (pairs[p]->frame * u_k);
+                  for (unsigned int i = 0; i < dim; ++i)
+                    products[first + c][dim * p + i] += local[i];
+                }
+          }
       n_flexibility_products += sources.size();
       return products;
     }

@@ -249,8 +249,30 @@ namespace fdem
       std::vector<Vector<double>>
       flexibility_products(const std::vector<Vector<double>> &sources) const;
 
+      /**
+       * W (W^T W)^{-1} (n_forces x n_rigid): z - B W^T z is the part of z in
+       * ker W^T (empty without free modes).
+       */
+      FullMatrix<double> projector_coefficients;
 
-      /** Computes projected_self_flexibility (the iterative solver). */
+      /**
+       * The iterative solver's coarse space: the pairs in groups of
+       * neighbours, Z with one column per group and local direction (1 on
+       * the group's pairs in that direction, projected onto ker W^T), and
+       * C Z.
+       */
+      std::vector<unsigned int> pair_group;
+      unsigned int              n_groups = 0;
+      FullMatrix<double>        coarse_basis, coarse_flexibility;
+
+      /** Groups the pairs and computes Z and C Z. */
+      void
+      setup_coarse_space();
+
+      /**
+       * Computes projected_self_flexibility and the coarse space (the
+       * iterative solver).
+       */
       void
       setup_preconditioner();
 
