@@ -115,6 +115,7 @@ namespace
     const auto schur     = factorised_model<dim>(parameters, "MUMPS_Schur", extra_constraint);
     const auto mumps     = factorised_model<dim>(parameters, "MUMPS", extra_constraint);
     const auto umfpack   = factorised_model<dim>(parameters, "UMFPACK", extra_constraint);
+    const auto cholmod   = factorised_model<dim>(parameters, "CHOLMOD", extra_constraint);
     ASSERT_EQ(reference->blocks.size(), schur->blocks.size());
 
     unsigned int n_floating = 0, n_constrained_pair_dofs = 0;
@@ -149,6 +150,8 @@ namespace
           << block.name;
         EXPECT_LT(relative_difference(umfpack->blocks[b]->flexibility(dofs), C_reference), 1e-10)
           << block.name;
+        EXPECT_LT(relative_difference(cholmod->blocks[b]->flexibility(dofs), C_reference), 1e-10)
+          << block.name;
         // Constrained dofs: a fixed or support dof has zero flexibility.
         for (unsigned int r = 0; r < dofs.size(); ++r)
           if (block.constraints.is_constrained(dofs[r]) &&
@@ -175,6 +178,9 @@ namespace
         // And a full solve through the Schur factors.
         const dealii::Vector<double> u_reference = block.solve(block.load_vector);
         dealii::Vector<double>       u = schur->blocks[b]->solve(block.load_vector);
+        u -= u_reference;
+        EXPECT_LT(u.linfty_norm(), 1e-10 * u_reference.linfty_norm()) << block.name;
+        u = cholmod->blocks[b]->solve(block.load_vector);
         u -= u_reference;
         EXPECT_LT(u.linfty_norm(), 1e-10 * u_reference.linfty_norm()) << block.name;
       }

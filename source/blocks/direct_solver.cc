@@ -13,6 +13,7 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
+#include <cholmod.h>
 
 #include <algorithm>
 
@@ -20,6 +21,108 @@ namespace fdem
 {
   namespace blocks
   {
+    /**
+     * CHOLMOD's workspace and factor (the long-index interface, so that no
+     * count of entries can overflow). It factorises the upper triangle: the
+     * block stiffness is symmetric and, with its constraints, positive
+     * definite, as MUMPS (sym = 1) assumes too.
+     */
+    struct DirectSolver::Cholmod
+    {
+      cholmod_common  common;
+      cholmod_factor *factor = nullptr;
+
+      Cholmod()
+      {
+        cholmod_l_start(&common);
+      }
+
+      ~Cholmod()
+      {
+        if (factor != nullptr)
+          cholmod_l_free_factor(&factor, &common);
+        cholmod_l_finish(&common);
+      }
+
+      Cholmod(const Cholmod &) = delete;
+      Cholmod &
+      operator=(const Cholmod &) = delete;
+
+      void
+      factorize(const Epetra_CrsMatrix &crs)
+      {
+        const SuiteSparse_long n = crs.NumMyRows();
+        // Column j of the upper triangle is row j's entries left of and on
+        // the diagonal (the matrix is symmetric).
+        std::vector<SuiteSparse_long> column_start(n + 1, 0);
+        for (SuiteSparse_long j = 0; j < n; ++j)
+          {
+            column_start[j + 1] = column_start[j];
+            for_each_entry_in_row(crs, j, [&](const int i, double) {
+              if (i <= j)
+                ++column_start[j + 1];
+            });
+          }
+        cholmod_sparse *A = cholmod_l_allocate_sparse(
+          n, n, column_start[n], /*sorted=*/0, /*packed=*/1, /*stype=*/1, CHOLMOD_REAL, &common);
+        AssertThrow(A != nullptr,
+                    ExcMessage("CHOLMOD could not allocate a block stiffness matrix."));
+        auto *p = static_cast<SuiteSparse_long *>(A->p);
+        auto *i = static_cast<SuiteSparse_long *>(A->i);
+        auto *x = static_cast<double *>(A->x);
+        std::copy(column_start.begin(), column_start.end(), p);
+        for (SuiteSparse_long j = 0; j < n; ++j)
+          {
+            SuiteSparse_long k = column_start[j];
+            for_each_entry_in_row(crs, j, [&](const int row, const double value) {
+              if (row <= j)
+                {
+                  i[k] = row;
+                  x[k] = value;
+                  ++k;
+                }
+            });
+          }
+        factor = cholmod_l_analyze(A, &common);
+        const bool analysed = factor != nullptr && common.status == CHOLMOD_OK;
+        const bool factorised = analysed && cholmod_l_factorize(A, factor, &common) != 0 &&
+                                common.status == CHOLMOD_OK;
+        cholmod_l_free_sparse(&A, &common);
+        AssertThrow(analysed,
+                    ExcMessage("The symbolic factorisation of a block stiffness "
+                               "matrix failed (CHOLMOD status " +
+                               std::to_string(common.status) + ")."));
+        AssertThrow(factorised,
+                    ExcMessage("The factorisation of a block stiffness matrix "
+                               "failed: the block is not held (check its "
+                               "constraints); CHOLMOD status " +
+                               std::to_string(common.status) + "."));
+      }
+
+      /** Solves for the @p n_rhs columns of @p b (n x n_rhs, column-major). */
+      void
+      solve(std::vector<double> &b, const std::size_t n, const unsigned int n_rhs)
+      {
+        cholmod_dense rhs;
+        rhs.nrow  = n;
+        rhs.ncol  = n_rhs;
+        rhs.nzmax = n * n_rhs;
+        rhs.d     = n;
+        rhs.x     = b.data();
+        rhs.z     = nullptr;
+        rhs.xtype = CHOLMOD_REAL;
+        rhs.dtype = CHOLMOD_DOUBLE;
+        cholmod_dense *x = cholmod_l_solve(CHOLMOD_A, factor, &rhs, &common);
+        AssertThrow(x != nullptr,
+                    ExcMessage("A direct solve with a factorised block "
+                               "stiffness matrix failed (CHOLMOD status " +
+                               std::to_string(common.status) + ")."));
+        const double *values = static_cast<const double *>(x->x);
+        std::copy(values, values + n * n_rhs, b.begin());
+        cholmod_l_free_dense(&x, &common);
+      }
+    };
+
     DirectSolver::DirectSolver(const std::string &solver_type)
       : solver_type(solver_type)
     {}
@@ -30,12 +133,19 @@ namespace fdem
     DirectSolver::factorize(const TrilinosWrappers::SparseMatrix &A)
     {
       matrix = &A;
+      if (solver_type == "UMFPACK" || solver_type == "CHOLMOD")
+        AssertThrow(Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) == 1,
+                    ExcMessage("Solver/Direct solver: " + solver_type +
+                               " runs on one MPI rank only; with mpirun use "
+                               "MUMPS_Schur, MUMPS, Amesos_Mumps or Amesos_Klu."));
+      if (solver_type == "CHOLMOD")
+        {
+          cholmod = std::make_unique<Cholmod>();
+          cholmod->factorize(A.trilinos_matrix());
+          return;
+        }
       if (solver_type == "UMFPACK")
         {
-          AssertThrow(Utilities::MPI::n_mpi_processes(A.get_mpi_communicator()) == 1,
-                      ExcMessage("Solver/Direct solver: UMFPACK runs on one MPI "
-                                 "rank only; with mpirun use MUMPS_Schur, MUMPS, "
-                                 "Amesos_Mumps or Amesos_Klu."));
           const Epetra_CrsMatrix &crs = A.trilinos_matrix();
           DynamicSparsityPattern  dsp(crs.NumMyRows());
           for (int row = 0; row < crs.NumMyRows(); ++row)
@@ -98,6 +208,11 @@ namespace fdem
     void
     DirectSolver::solve(std::vector<double> &b, const unsigned int n_rhs) const
     {
+      if (cholmod)
+        {
+          cholmod->solve(b, matrix->m(), n_rhs);
+          return;
+        }
       const Epetra_Map & map     = matrix->trilinos_matrix().DomainMap();
       const std::size_t  n       = matrix->m();
       const int          n_local = map.NumMyElements();

@@ -423,13 +423,15 @@ namespace fdem
       prm.enter_subsection("Solver");
       prm.declare_entry("Direct solver",
                         "MUMPS_Schur",
-                        Patterns::Selection("MUMPS_Schur|MUMPS|Amesos_Klu|Amesos_Mumps|UMFPACK"),
+                        Patterns::Selection("MUMPS_Schur|MUMPS|CHOLMOD|Amesos_Klu|Amesos_Mumps|UMFPACK"),
                         "Sparse direct solver that factorises each block's "
                         "stiffness matrix once. MUMPS_Schur: MUMPS (C "
                         "interface, L D L^T) with the interface dofs eliminated "
                         "last, so their flexibility is the inverse of the "
                         "dense Schur complement (no solves). MUMPS: the same "
                         "factorisation without the Schur complement. "
+                        "CHOLMOD: SuiteSparse's supernodal Cholesky (one MPI "
+                        "rank). "
                         "Amesos_Klu, Amesos_Mumps: Trilinos Amesos (LU). "
                         "UMFPACK: deal.II's SparseDirectUMFPACK (LU, one "
                         "right-hand side at a time). "

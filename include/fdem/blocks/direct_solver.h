@@ -23,8 +23,10 @@ namespace fdem
     using namespace dealii;
 
     /**
-     * A sparse direct solver from Trilinos Amesos, or UMFPACK through
-     * deal.II's SparseDirectUMFPACK (on a copy of the matrix), that
+     * A sparse direct solver from Trilinos Amesos, UMFPACK through deal.II's
+     * SparseDirectUMFPACK (on a copy of the matrix), or SuiteSparse's
+     * CHOLMOD (supernodal Cholesky of the upper triangle, through its C
+     * interface), that
      * factorises a matrix once and then solves for any number of
      * right-hand sides, one or many at a time. The FE part of the method is
      * linear, so each block's stiffness is factorised exactly once per run.
@@ -33,13 +35,17 @@ namespace fdem
      * on one rank, Amesos_Mumps factorises in parallel). Right-hand sides and
      * solutions here are global-size arrays, the same on every rank; each
      * rank gives the entries of its rows and the solution is gathered on
-     * all. UMFPACK is serial: with more than one rank it is an error. Every
+     * all. UMFPACK and CHOLMOD are serial: with more than one rank they are
+     * an error. Every
      * call is collective.
      */
     class DirectSolver
     {
     public:
-      /** @p solver_type is an Amesos class name, e.g. "Amesos_Klu", or "UMFPACK". */
+      /**
+       * @p solver_type is an Amesos class name, e.g. "Amesos_Klu", "UMFPACK"
+       * or "CHOLMOD".
+       */
       explicit DirectSolver(const std::string &solver_type);
       ~DirectSolver();
 
@@ -71,6 +77,9 @@ namespace fdem
       SparsityPattern                       umfpack_pattern;
       SparseMatrix<double>                  umfpack_matrix;
       std::unique_ptr<SparseDirectUMFPACK>  umfpack;
+      /** CHOLMOD: its workspace and the factor (defined in the source). */
+      struct Cholmod;
+      std::unique_ptr<Cholmod> cholmod;
     };
   } // namespace blocks
 } // namespace fdem
