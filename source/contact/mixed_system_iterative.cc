@@ -15,7 +15,6 @@
 #include <fdem/contact/dense_lu.h>
 #include <fdem/contact/mixed_system.h>
 
-#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 

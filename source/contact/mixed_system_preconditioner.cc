@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace fdem
 {
@@ -186,7 +187,6 @@ namespace fdem
             coarse_flexibility(j, c) = CZ[c][j];
           }
     }
-
 
     template void
     MixedSystem<2>::setup_coarse_space();
