@@ -561,33 +561,19 @@ namespace fdem
       FullMatrix<double> C(n, n);
       if (flexibility_from_schur(dofs, C))
         return C;
-      // Blocks of right-hand sides: one pass through the factors for many.
-      const unsigned int  block_size = 64;
-      const unsigned int  n_dofs     = dof_handler.n_dofs();
-      Vector<double>      column(n_dofs);
-      std::vector<double> columns;
+      // Unit loads on the dofs, 64 at a time: one pass through the factors
+      // for many, and memory for 64 solutions only.
+      const unsigned int block_size = 64;
       for (unsigned int first = 0; first < n; first += block_size)
         {
-          const unsigned int n_columns = std::min(block_size, n - first);
-          columns.assign(std::size_t(n_dofs) * n_columns, 0.0);
+          const unsigned int          n_columns = std::min(block_size, n - first);
+          std::vector<Vector<double>> loads(n_columns, Vector<double>(dof_handler.n_dofs()));
           for (unsigned int c = 0; c < n_columns; ++c)
-            {
-              column                  = 0;
-              column[dofs[first + c]] = 1;
-              constraints.condense(column);
-              std::copy(column.begin(), column.end(),
-                        columns.begin() + std::size_t(c) * n_dofs);
-            }
-          solve_columns(columns, n_columns);
+            loads[c][dofs[first + c]] = 1;
+          const std::vector<Vector<double>> u = solve(loads);
           for (unsigned int c = 0; c < n_columns; ++c)
-            {
-              std::copy(columns.begin() + std::size_t(c) * n_dofs,
-                        columns.begin() + std::size_t(c + 1) * n_dofs,
-                        column.begin());
-              constraints.distribute(column);
-              for (unsigned int r = 0; r < n; ++r)
-                C(r, first + c) = column[dofs[r]];
-            }
+            for (unsigned int r = 0; r < n; ++r)
+              C(r, first + c) = u[c][dofs[r]];
         }
       return C;
     }

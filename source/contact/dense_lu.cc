@@ -22,6 +22,24 @@ namespace fdem
 {
   namespace contact
   {
+    namespace
+    {
+      std::vector<double>
+      by_columns(const dealii::FullMatrix<double> &matrix)
+      {
+        Assert(matrix.m() == matrix.n(), dealii::ExcInternalError());
+        std::vector<double> columns(std::size_t(matrix.m()) * matrix.n());
+        for (unsigned int c = 0; c < matrix.n(); ++c)
+          for (unsigned int r = 0; r < matrix.m(); ++r)
+            columns[r + std::size_t(c) * matrix.m()] = matrix(r, c);
+        return columns;
+      }
+    } // namespace
+
+    DenseLU::DenseLU(const dealii::FullMatrix<double> &matrix)
+      : DenseLU(matrix.m(), by_columns(matrix))
+    {}
+
     DenseLU::DenseLU(const unsigned int size, std::vector<double> column_major)
       : n(size)
       , lu(std::move(column_major))

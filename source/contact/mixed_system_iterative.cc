@@ -118,12 +118,9 @@ namespace fdem
       solution.reciprocal_condition = 1;
       if (n_rigid > 0)
         {
-          std::vector<double> S(std::size_t(n_rigid) * n_rigid);
-          for (unsigned int r = 0; r < n_rigid; ++r)
-            for (unsigned int c = 0; c < n_rigid; ++c)
-              for (unsigned int j = 0; j < n_forces; ++j)
-                S[r + std::size_t(c) * n_rigid] += rigid_coupling(j, r) * H(j, c);
-          rigid_lu = std::make_unique<DenseLU>(n_rigid, std::move(S));
+          FullMatrix<double> S(n_rigid, n_rigid);
+          rigid_coupling.Tmmult(S, H);
+          rigid_lu = std::make_unique<DenseLU>(S);
           solution.reciprocal_condition = rigid_lu->reciprocal_condition_number();
           // As for the dense solver: below 1e-14 no digit is left, and the
           // free modes are not held by the pairs in these states.
@@ -189,11 +186,7 @@ namespace fdem
           }
       FullMatrix<double> E(n_coarse, n_coarse);
       RZ.Tmmult(E, AZ);
-      std::vector<double> E_columns(std::size_t(n_coarse) * n_coarse);
-      for (unsigned int r = 0; r < n_coarse; ++r)
-        for (unsigned int c = 0; c < n_coarse; ++c)
-          E_columns[r + std::size_t(c) * n_coarse] = E(r, c);
-      const DenseLU coarse_lu(n_coarse, std::move(E_columns));
+      const DenseLU coarse_lu(E);
       // A coarse problem without a digit left (no such state is known) is
       // left out: the pairs' preconditioner alone is still a preconditioner.
       const bool coarse = n_coarse > 0 && coarse_lu.reciprocal_condition_number() > 1e-14;

@@ -37,12 +37,9 @@ namespace fdem
       projected_self_flexibility = self_flexibility;
       if (n_rigid > 0)
         {
-          std::vector<double> WW(std::size_t(n_rigid) * n_rigid);
-          for (unsigned int r = 0; r < n_rigid; ++r)
-            for (unsigned int c = 0; c < n_rigid; ++c)
-              for (unsigned int j = 0; j < n_forces; ++j)
-                WW[r + std::size_t(c) * n_rigid] += rigid_coupling(j, r) * rigid_coupling(j, c);
-          const DenseLU WW_lu(n_rigid, std::move(WW));
+          FullMatrix<double> WW(n_rigid, n_rigid);
+          rigid_coupling.Tmmult(WW, rigid_coupling);
+          const DenseLU WW_lu(WW);
           if (WW_lu.reciprocal_condition_number() > 1e-12)
             {
               std::vector<Vector<double>> W(n_rigid, Vector<double>(n_forces));

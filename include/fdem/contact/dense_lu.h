@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <vector>
@@ -21,6 +22,9 @@ namespace fdem
     public:
       /** @p column_major holds the n x n matrix by columns; it is overwritten. */
       DenseLU(const unsigned int n, std::vector<double> column_major);
+
+      /** Factorises a copy of the square @p matrix. */
+      explicit DenseLU(const dealii::FullMatrix<double> &matrix);
 
       /** False if a pivot was exactly zero. */
       bool
