@@ -504,7 +504,7 @@ def main():
              "Each run's `summary.json` gives the wall time of every phase "
              "(`timings`, seconds, not nested, so they add up to `total` but for "
              "reading the parameters) and the peak resident memory "
-             "(`peak_memory_MiB`, from getrusage, the whole process). The phases: "
+             "(`peak_memory_MiB`, VmHWM from deal.II's get_memory_stats, the whole process). The phases: "
              "geometry (Gmsh mesh), setup (dofs, constraints, free rigid modes), "
              "assembly (K and F of each block), factorisation (K factorised; one "
              "phase 'assembly and factorisation' in summaries of older programs), "

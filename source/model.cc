@@ -222,8 +222,9 @@ namespace fdem
           // The iterative mixed system never uses the interface's Schur
           // complement: computing it would only cost time and memory.
           const bool iterative = parameters.solver.mixed_system == "iterative";
-          block->factorize(iterative && parameters.solver.direct_solver == "MUMPS_Schur" ?
-                             "MUMPS" :
+          using parameters::DirectSolverType;
+          block->factorize(iterative && parameters.solver.direct_solver == DirectSolverType::mumps_schur ?
+                             DirectSolverType::mumps :
                              parameters.solver.direct_solver);
         }
         // Timed on its own: the cost of one linear solve of the model is the

@@ -66,7 +66,7 @@ namespace
   template <int dim>
   std::unique_ptr<Model<dim>>
   factorised_model(parameters::Parameters parameters,
-                   const std::string &    solver,
+                   const parameters::DirectSolverType solver,
                    const bool             extra_constraint)
   {
     parameters.solver.direct_solver = solver;
@@ -111,11 +111,11 @@ namespace
   void
   check_flexibility(const parameters::Parameters &parameters, const bool extra_constraint)
   {
-    const auto reference = factorised_model<dim>(parameters, "Amesos_Klu", extra_constraint);
-    const auto schur     = factorised_model<dim>(parameters, "MUMPS_Schur", extra_constraint);
-    const auto mumps     = factorised_model<dim>(parameters, "MUMPS", extra_constraint);
-    const auto umfpack   = factorised_model<dim>(parameters, "UMFPACK", extra_constraint);
-    const auto cholmod   = factorised_model<dim>(parameters, "CHOLMOD", extra_constraint);
+    const auto reference = factorised_model<dim>(parameters, parameters::DirectSolverType::amesos_klu, extra_constraint);
+    const auto schur     = factorised_model<dim>(parameters, parameters::DirectSolverType::mumps_schur, extra_constraint);
+    const auto mumps     = factorised_model<dim>(parameters, parameters::DirectSolverType::mumps, extra_constraint);
+    const auto umfpack   = factorised_model<dim>(parameters, parameters::DirectSolverType::umfpack, extra_constraint);
+    const auto cholmod   = factorised_model<dim>(parameters, parameters::DirectSolverType::cholmod, extra_constraint);
     ASSERT_EQ(reference->blocks.size(), schur->blocks.size());
 
     unsigned int n_floating = 0, n_constrained_pair_dofs = 0;
@@ -221,7 +221,8 @@ TEST(Flexibility, PaperSlopeSafetyFactorUnchanged)
   for (const unsigned int s : {0u, 1u})
     {
       auto parameters = test_support::case_parameters("paper_slope.prm");
-      parameters.solver.direct_solver = s == 0 ? "Amesos_Klu" : "MUMPS_Schur";
+      parameters.solver.direct_solver = s == 0 ? parameters::DirectSolverType::amesos_klu :
+                                                 parameters::DirectSolverType::mumps_schur;
       std::ostringstream log;
       Model<2>           model(parameters, "", log);
       model.run();
@@ -229,4 +230,23 @@ TEST(Flexibility, PaperSlopeSafetyFactorUnchanged)
       K[s] = model.summary["safety_factor"];
     }
   EXPECT_NEAR(K[1], K[0], 1e-10 * K[0]);
+}
+
+TEST(Flexibility, DirectSolverNamesAndCapabilities)
+{
+  // Every .prm string parses to its own type and back; only MUMPS_Schur
+  // asks for the interface dofs' Schur complement.
+  using parameters::DirectSolverType;
+  for (const DirectSolverType type :
+       {DirectSolverType::mumps_schur, DirectSolverType::mumps, DirectSolverType::cholmod,
+        DirectSolverType::amesos_klu, DirectSolverType::amesos_mumps, DirectSolverType::umfpack})
+    {
+      const std::string name = parameters::direct_solver_name(type);
+      EXPECT_TRUE(parameters::parse_direct_solver_type(name) == type) << name;
+      EXPECT_EQ(blocks::make_block_factorization(type)->keeps_schur_complement(),
+                type == DirectSolverType::mumps_schur)
+        << name;
+    }
+  EXPECT_EQ(parameters::direct_solver_name(DirectSolverType::mumps_schur), "MUMPS_Schur");
+  EXPECT_THROW(parameters::parse_direct_solver_type("Amesos_Lapack"), dealii::ExceptionBase);
 }

@@ -236,6 +236,6 @@ TEST(MinimalSupport, ReactionsVanishAtEquilibrium)
 TEST(StickEqualsMonolithic, BlockOnInclinedPlaneWithMumps)
 {
   auto parameters                 = test_support::case_parameters("inclined_block.prm");
-  parameters.solver.direct_solver = "Amesos_Mumps";
+  parameters.solver.direct_solver = parameters::DirectSolverType::amesos_mumps;
   check_stick_equals_monolithic(parameters);
 }

@@ -37,8 +37,9 @@ namespace fdem
       bool                   initialized = false;
     };
 
-    MumpsSchurSolver::MumpsSchurSolver()
-      : data(std::make_unique<Data>())
+    MumpsSchurSolver::MumpsSchurSolver(const bool keep_schur_complement)
+      : keep_schur_complement(keep_schur_complement)
+      , data(std::make_unique<Data>())
     {}
 
     MumpsSchurSolver::~MumpsSchurSolver()
@@ -104,6 +105,8 @@ namespace fdem
     MumpsSchurSolver::factorize(const TrilinosWrappers::SparseMatrix &A,
                                 const std::vector<types::global_dof_index> &schur_dofs)
     {
+      Assert(keep_schur_complement || schur_dofs.empty(),
+             ExcMessage("MUMPS without Schur complement got Schur dofs."));
       matrix = &A;
       schur  = schur_dofs;
       communicator = A.get_mpi_communicator();
@@ -331,14 +334,6 @@ namespace fdem
       for (unsigned int c = 0; c < n_rhs; ++c)
         for (unsigned int k = 0; k < n_schur; ++k)
           b[schur[k] + c * n] = r[k + c * n_schur];
-    }
-
-    Vector<double>
-    MumpsSchurSolver::solve(const Vector<double> &b) const
-    {
-      std::vector<double> x(b.begin(), b.end());
-      solve(x, 1);
-      return Vector<double>(x.begin(), x.end());
     }
 
     std::vector<double>

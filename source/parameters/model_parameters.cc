@@ -6,9 +6,11 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 namespace fdem
 {
@@ -417,13 +419,57 @@ namespace fdem
       prm.leave_subsection();
     }
 
+    namespace
+    {
+      /** Every direct solver with its .prm string, in the Selection's order. */
+      const std::array<std::pair<DirectSolverType, const char *>, 6> direct_solver_names = {
+        {{DirectSolverType::mumps_schur, "MUMPS_Schur"},
+         {DirectSolverType::mumps, "MUMPS"},
+         {DirectSolverType::cholmod, "CHOLMOD"},
+         {DirectSolverType::amesos_klu, "Amesos_Klu"},
+         {DirectSolverType::amesos_mumps, "Amesos_Mumps"},
+         {DirectSolverType::umfpack, "UMFPACK"}}};
+
+      /** "MUMPS_Schur|MUMPS|...": the names for Patterns::Selection. */
+      std::string
+      direct_solver_selection()
+      {
+        std::string selection;
+        for (const auto &[type, name] : direct_solver_names)
+          selection += (selection.empty() ? "" : "|") + std::string(name);
+        return selection;
+      }
+    } // namespace
+
+    std::string
+    direct_solver_name(const DirectSolverType type)
+    {
+      for (const auto &[t, name] : direct_solver_names)
+        if (t == type)
+          return name;
+      Assert(false, ExcInternalError());
+      return "";
+    }
+
+    DirectSolverType
+    parse_direct_solver_type(const std::string &name)
+    {
+      for (const auto &[type, t_name] : direct_solver_names)
+        if (name == t_name)
+          return type;
+      AssertThrow(false,
+                  ExcMessage("Solver/Direct solver: '" + name + "' is not one of " +
+                             direct_solver_selection() + "."));
+      return DirectSolverType::mumps_schur;
+    }
+
     void
     SolverParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
       prm.declare_entry("Direct solver",
                         "MUMPS_Schur",
-                        Patterns::Selection("MUMPS_Schur|MUMPS|CHOLMOD|Amesos_Klu|Amesos_Mumps|UMFPACK"),
+                        Patterns::Selection(direct_solver_selection()),
                         "Sparse direct solver that factorises each block's "
                         "stiffness matrix once. MUMPS_Schur: MUMPS (C "
                         "interface, L D L^T) with the interface dofs eliminated "
@@ -468,7 +514,7 @@ namespace fdem
     SolverParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      direct_solver   = prm.get("Direct solver");
+      direct_solver   = parse_direct_solver_type(prm.get("Direct solver"));
       mixed_system    = prm.get("Mixed system");
       gmres_tolerance = prm.get_double("GMRES tolerance");
       prm.leave_subsection();

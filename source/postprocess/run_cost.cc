@@ -2,7 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/postprocess/run_cost.h>
 
-#include <sys/resource.h>
+#include <deal.II/base/utilities.h>
 
 #include <iomanip>
 #include <sstream>
@@ -14,11 +14,9 @@ namespace fdem
     double
     peak_memory_mib()
     {
-      rusage usage;
-      if (getrusage(RUSAGE_SELF, &usage) != 0)
-        return 0;
-      // Linux gives ru_maxrss in KiB.
-      return usage.ru_maxrss / 1024.0;
+      Utilities::System::MemoryStats stats;
+      Utilities::System::get_memory_stats(stats);
+      return stats.VmHWM / 1024.0; // KiB
     }
 
     nlohmann::json

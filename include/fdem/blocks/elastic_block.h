@@ -2,9 +2,9 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
-#include <fdem/blocks/direct_solver.h>
+#include <fdem/blocks/block_factorization.h>
 #include <fdem/blocks/element_family.h>
-#include <fdem/blocks/mumps_schur_solver.h>
+#include <fdem/blocks/interface_node.h>
 #include <fdem/geometry/mesh_description.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -20,6 +20,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <map>
@@ -32,28 +33,6 @@ namespace fdem
   namespace blocks
   {
     using namespace dealii;
-
-    /**
-     * A node of a block on an interface: a support point of the finite
-     * element with its dofs and its consistent nodal weights.
-     */
-    template <int dim>
-    struct InterfaceNode
-    {
-      Point<dim>                                   position;
-      std::array<types::global_dof_index, dim>     dofs;
-      /** Tributary area A = int_Gamma phi dGamma (length in 2D, per unit thickness). */
-      double                                       area = 0;
-      /** int_Gamma phi n dGamma with n the block's outward normal. */
-      Tensor<1, dim>                               area_normal;
-      /**
-       * Area of the node's faces in the group: the scale against which a
-       * zero weight is recognised. At the vertices of quadratic triangles
-       * (faces of P2 tetrahedra) int phi dGamma = 0 on every face; those
-       * nodes get area = 0 exactly and no pair (contact::make_interface()).
-       */
-      double                                       adjacent_area = 0;
-    };
 
     /**
      * One linear elastic body meshed with finite elements: its stiffness K
@@ -74,9 +53,14 @@ namespace fdem
      * the same on every rank on global-size vectors. Only K is distributed:
      * each rank assembles its own cells (METIS partition) into the rows of
      * the dofs it owns, and the factorisation and the solves run on all
-     * ranks (MumpsSchurSolver, DirectSolver); they take and return
-     * global-size vectors, the same on every rank. With one rank this is
-     * the serial code.
+     * ranks (BlockFactorization); they take and return global-size
+     * vectors, the same on every rank. With one rank this is the serial
+     * code.
+     *
+     * The members are defined in four files: elastic_block.cc (mesh,
+     * assembly, factorisation, solves), supports.cc (Dirichlet conditions,
+     * rigid modes, minimal support), interface_nodes.cc and
+     * interface_flexibility.cc.
      */
     template <int dim>
     class ElasticBlock
@@ -119,16 +103,14 @@ namespace fdem
       find_free_rigid_modes();
 
       /**
-       * Assembles K and F, and factorises K with @p solver_type: an Amesos
-       * class name ("Amesos_Klu", "Amesos_Mumps"), "UMFPACK" (deal.II's
-       * SparseDirectUMFPACK), "MUMPS" (MUMPS's C
-       * interface, L D L^T) or "MUMPS_Schur" (the same, with the interface
-       * dofs eliminated last and their Schur complement kept, see
+       * Assembles K and F, and factorises K with the back-end @p solver_type
+       * (make_block_factorization(); with MUMPS_Schur the interface dofs
+       * are eliminated last and their Schur complement kept, see
        * MumpsSchurSolver). Collective: every rank assembles its cells.
        */
       void
       assemble_and_factorize(const parameters::LoadParameters &loads,
-                             const std::string &               solver_type);
+                             const parameters::DirectSolverType solver_type);
 
       /** Assembles K and F (the first half of assemble_and_factorize). */
       void
@@ -136,7 +118,7 @@ namespace fdem
 
       /** Factorises the assembled K (the second half of assemble_and_factorize). */
       void
-      factorize(const std::string &solver_type);
+      factorize(const parameters::DirectSolverType solver_type);
 
       /**
        * Displacement u = K^{-1} (F_nodal) for a nodal force vector on this
@@ -154,11 +136,29 @@ namespace fdem
       std::vector<Vector<double>>
       solve(const std::vector<Vector<double>> &nodal_forces) const;
 
+      /** Right-hand sides solved together at most: see solve_blocked(). */
+      static constexpr unsigned int max_rhs_per_solve = 64;
+
+      /**
+       * The blocked solve: the displacements for @p n_columns nodal force
+       * vectors, at most @p max_columns in one pass through the factors (one
+       * pass for many right-hand sides, and memory for that many solutions
+       * only). @p set_load(c, f) adds the forces of column c to f (zero, of
+       * this block's size); @p use_displacement(c, u) reads its displacement
+       * (Dirichlet and support dofs zero). Collective.
+       */
+      template <typename SetLoad, typename UseDisplacement>
+      void
+      solve_blocked(const unsigned int     n_columns,
+                    const SetLoad &        set_load,
+                    const UseDisplacement &use_displacement,
+                    const unsigned int     max_columns = max_rhs_per_solve) const;
+
       /**
        * Flexibility matrix C(i,j) = (K^{-1})_{ij} restricted to @p dofs: the
        * displacement at dof i due to a unit force at dof j, through the
        * constraints (a force on a constrained dof acts on the dofs it
-       * follows; a fixed dof does not move). With "MUMPS_Schur" it comes
+       * follows; a fixed dof does not move). With MUMPS_Schur it comes
        * from the inverse Schur complement on the interface dofs when they
        * hold every dof of @p dofs and its constraint's dofs; otherwise it is
        * solved with blocks of right-hand sides, the factorisation reused.
@@ -169,8 +169,9 @@ namespace fdem
       /**
        * The dim x dim blocks on the diagonal of the flexibility, one per node
        * of @p nodes (its dim dofs): what flexibility() gives for those dofs,
-       * without the rest of C. With "MUMPS" they are MUMPS's selected
-       * entries of K^{-1}; with the other solvers, dim solves per node.
+       * without the rest of C. With MUMPS (one rank) they are MUMPS's
+       * selected entries of K^{-1}; with the other solvers, dim solves per
+       * node.
        */
       std::vector<FullMatrix<double>>
       flexibility_diagonal_blocks(
@@ -178,7 +179,7 @@ namespace fdem
 
       /**
        * The flexibility of @p dofs into @p C (n x n) from the inverse Schur
-       * complement, if the block was factorised with "MUMPS_Schur" and its
+       * complement, if the block was factorised with MUMPS_Schur and its
        * Schur dofs hold every dof of @p dofs and its constraint's dofs;
        * false (and @p C untouched) otherwise.
        */
@@ -256,9 +257,8 @@ namespace fdem
       std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> tractions;
       std::vector<types::boundary_id> interface_ids;
       TrilinosWrappers::SparseMatrix  stiffness_matrix;
-      /** Amesos solver, or MUMPS through its C interface: one of the two. */
-      std::unique_ptr<DirectSolver>     direct_solver;
-      std::unique_ptr<MumpsSchurSolver> mumps_solver;
+      /** The factorisation of stiffness_matrix. */
+      std::unique_ptr<BlockFactorization> factorization;
       parameters::LoadParameters      loads;
 
       /** Support point and vector component of every dof. */
@@ -275,16 +275,12 @@ namespace fdem
                             AffineConstraints<double> &plate) const;
 
       /**
-       * The dofs whose Schur complement "MUMPS_Schur" keeps: the
+       * The dofs whose Schur complement MUMPS_Schur keeps: the
        * unconstrained dofs on the interfaces and the dofs that constrained
        * ones follow.
        */
       std::vector<types::global_dof_index>
       interface_schur_dofs() const;
-
-      /** Solves K X = B for the n_rhs columns of B (column-major, condensed). */
-      void
-      solve_columns(std::vector<double> &b, const unsigned int n_rhs) const;
 
       /** Values of every rigid mode at every dof (n_dofs x n_rigid_modes). */
       FullMatrix<double>
@@ -311,5 +307,40 @@ namespace fdem
       assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
                     CellScratch &scratch) const;
     };
+
+
+    template <int dim>
+    template <typename SetLoad, typename UseDisplacement>
+    void
+    ElasticBlock<dim>::solve_blocked(const unsigned int     n_columns,
+                                     const SetLoad &        set_load,
+                                     const UseDisplacement &use_displacement,
+                                     const unsigned int     max_columns) const
+    {
+      const std::size_t   n_dofs = dof_handler.n_dofs();
+      Vector<double>      column(n_dofs);
+      std::vector<double> columns;
+      for (unsigned int first = 0; first < n_columns; first += max_columns)
+        {
+          const unsigned int n = std::min(max_columns, n_columns - first);
+          columns.resize(n_dofs * n);
+          for (unsigned int c = 0; c < n; ++c)
+            {
+              column = 0;
+              set_load(first + c, column);
+              constraints.condense(column);
+              std::copy(column.begin(), column.end(), columns.begin() + c * n_dofs);
+            }
+          factorization->solve(columns, n);
+          for (unsigned int c = 0; c < n; ++c)
+            {
+              std::copy(columns.begin() + c * n_dofs,
+                        columns.begin() + (c + 1) * n_dofs,
+                        column.begin());
+              constraints.distribute(column);
+              use_displacement(first + c, static_cast<const Vector<double> &>(column));
+            }
+        }
+    }
   } // namespace blocks
 } // namespace fdem

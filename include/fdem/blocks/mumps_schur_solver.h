@@ -2,9 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
-#include <deal.II/base/types.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/vector.h>
+#include <fdem/blocks/block_factorization.h>
 
 #include <memory>
 #include <utility>
@@ -38,15 +36,26 @@ namespace fdem
      * are global-size arrays, the same on every rank: MUMPS reads rank 0's
      * (ICNTL(20) = 0), and its solution, on rank 0 (ICNTL(21) = 0), is
      * broadcast. Every call is collective.
+     *
+     * Solver/Direct solver = MUMPS_Schur keeps the Schur complement of the
+     * dofs given to factorize(); MUMPS gets none and is the plain L D L^T
+     * factorisation, which can compute selected entries of K^{-1}.
      */
-    class MumpsSchurSolver
+    class MumpsSchurSolver : public BlockFactorization
     {
     public:
-      MumpsSchurSolver();
-      ~MumpsSchurSolver();
+      /** @p keep_schur_complement: MUMPS_Schur (true) or MUMPS (false). */
+      explicit MumpsSchurSolver(const bool keep_schur_complement);
+      ~MumpsSchurSolver() override;
       MumpsSchurSolver(const MumpsSchurSolver &) = delete;
       MumpsSchurSolver &
       operator=(const MumpsSchurSolver &) = delete;
+
+      bool
+      keeps_schur_complement() const override
+      {
+        return keep_schur_complement;
+      }
 
       /**
        * Analysis and factorisation of @p matrix (kept by reference; only its
@@ -55,19 +64,16 @@ namespace fdem
        */
       void
       factorize(const TrilinosWrappers::SparseMatrix &       matrix,
-                const std::vector<types::global_dof_index> &schur_dofs);
+                const std::vector<types::global_dof_index> &schur_dofs) override;
 
       /** Solves K x = b for the columns of @p b (n x n_rhs, column-major). */
+      using BlockFactorization::solve;
       void
-      solve(std::vector<double> &b, const unsigned int n_rhs) const;
-
-      /** Solves K x = b for one right-hand side. */
-      Vector<double>
-      solve(const Vector<double> &b) const;
+      solve(std::vector<double> &b, const unsigned int n_rhs) const override;
 
       /** The Schur dofs, in the order given to factorize(). */
       const std::vector<types::global_dof_index> &
-      schur_dofs() const
+      schur_dofs() const override
       {
         return schur;
       }
@@ -78,7 +84,18 @@ namespace fdem
        * built once, and in 3D n_S^2 numbers are many.
        */
       std::vector<double>
-      inverse_on_schur_dofs() const;
+      inverse_on_schur_dofs() const override;
+
+      /**
+       * Without Schur dofs and on one MPI rank: MUMPS's entries of K^{-1}
+       * on a distributed matrix stopped with INFOG(1) = -22 in our runs
+       * (MUMPS 5.5).
+       */
+      bool
+      computes_inverse_entries() const override
+      {
+        return matrix != nullptr && schur.empty() && n_ranks == 1;
+      }
 
       /**
        * Selected entries (K^{-1})_{ij}, one per (i, j) of @p entries, from
@@ -90,9 +107,10 @@ namespace fdem
       std::vector<double>
       inverse_entries(
         const std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
-          &entries) const;
+          &entries) const override;
 
     private:
+      const bool keep_schur_complement;
       struct Data;
       std::unique_ptr<Data>                 data;
       const TrilinosWrappers::SparseMatrix *matrix = nullptr;

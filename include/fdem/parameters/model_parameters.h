@@ -172,6 +172,34 @@ namespace fdem
       double gravitational_acceleration = 9.81;
     };
 
+    /**
+     * The sparse direct solver of the block stiffness matrices, parsed once
+     * from "Solver/Direct solver" (the .prm strings in the comments).
+     */
+    enum class DirectSolverType
+    {
+      /** "MUMPS_Schur": MUMPS, the interface dofs' Schur complement kept. */
+      mumps_schur,
+      /** "MUMPS": MUMPS's C interface, L D L^T. */
+      mumps,
+      /** "CHOLMOD": SuiteSparse's supernodal Cholesky (one MPI rank). */
+      cholmod,
+      /** "Amesos_Klu": Trilinos Amesos, KLU. */
+      amesos_klu,
+      /** "Amesos_Mumps": Trilinos Amesos, MUMPS. */
+      amesos_mumps,
+      /** "UMFPACK": deal.II's SparseDirectUMFPACK (one MPI rank). */
+      umfpack
+    };
+
+    /** The .prm string of @p type ("MUMPS_Schur", ...). */
+    std::string
+    direct_solver_name(const DirectSolverType type);
+
+    /** The type of a .prm string; throws naming Solver/Direct solver otherwise. */
+    DirectSolverType
+    parse_direct_solver_type(const std::string &name);
+
     /** Linear solvers: subsection "Solver". */
     struct SolverParameters
     {
@@ -180,11 +208,8 @@ namespace fdem
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      /**
-       * Direct solver that factorises each block stiffness once:
-       * "MUMPS_Schur", "MUMPS" or an Amesos class name.
-       */
-      std::string direct_solver = "MUMPS_Schur";
+      /** Direct solver that factorises each block stiffness once. */
+      DirectSolverType direct_solver = DirectSolverType::mumps_schur;
       /**
        * How the mixed system (eq. 9) is solved: "dense" (C formed, LU) or
        * "iterative" (C applied through the factorisations inside GMRES).

@@ -15,8 +15,8 @@ namespace fdem
     using namespace dealii;
 
     /**
-     * Peak resident memory of this process so far (MiB), from getrusage's
-     * ru_maxrss. It counts everything the process holds: Gmsh, the
+     * Peak resident memory of this process so far (MiB): the high-water
+     * mark VmHWM of deal.II's Utilities::System::get_memory_stats(). It counts everything the process holds: Gmsh, the
      * factorisations, the flexibility matrices, and the libraries' baseline.
      */
     double
