@@ -75,6 +75,9 @@ namespace fdem
       for (const Point<dim> &v : triangulation.get_vertices())
         length_scale = std::max(length_scale, v.distance(centre));
 
+      // By hand: DoFTools::map_dofs_to_support_points() refuses its vector
+      // form on a parallel::shared triangulation (9.4); the map form would
+      // cost a std::map lookup per dof in every use.
       dof_support_points.resize(dof_handler.n_dofs());
       dof_components.resize(dof_handler.n_dofs());
       std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());

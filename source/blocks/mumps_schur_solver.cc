@@ -248,7 +248,8 @@ namespace fdem
                 for (unsigned int i = 0; i < j; ++i)
                   S[j + std::size_t(i) * n_schur] = S[i + std::size_t(j) * n_schur];
               // Cholesky factor of S: with MUMPS's factor of K_II, a complete
-              // factorisation of K.
+              // factorisation of K. LAPACK in place on MUMPS's array, not
+              // LAPACKFullMatrix: that would copy n_S^2 numbers (many in 3D).
               schur_factor.swap(S);
               std::vector<double>().swap(S);
               const types::blas_int n_s = n_schur;
