@@ -7,7 +7,7 @@
 // safety factor is below the initial K.
 #include "test_helpers.h"
 
-#include <fdem/safety_factor/safety_factor.h>
+#include <fdem/analyses/safety_factor_iteration.h>
 
 #include <deal.II/dofs/dof_tools.h>
 
@@ -275,10 +275,10 @@ TEST(Water, PiezometricLineEqualsItsExpression)
 namespace
 {
   /** A synthetic step: K* = K F_R/F_tau given as a function of K, no static solution from @p K_limit up. */
-  safety_factor::ReducedStrengthSolution
+  analyses::ReducedStrengthSolution
   synthetic_step(const double K, const double K_star, const double K_limit)
   {
-    safety_factor::ReducedStrengthSolution s;
+    analyses::ReducedStrengthSolution s;
     s.converged = K < K_limit;
     s.result    = s.converged ? "converged" : "singular system";
     if (s.converged)
@@ -298,7 +298,7 @@ TEST(SafetyFactorIteration, PlanarLimitFromTwoAgreeingFactorsWithoutSolvingAtIt)
   // distance to 1.5 down to the tolerance, ~20 more solves).
   parameters::SafetyFactorParameters control;
   std::ostringstream                 log;
-  const auto result = safety_factor::iterate(
+  const auto result = analyses::iterate(
     [](const double K) { return synthetic_step(K, 1.5, 1.5); }, control, log);
   ASSERT_TRUE(result.converged) << log.str();
   EXPECT_EQ(result.safety_factor, 1.5);
@@ -312,7 +312,7 @@ TEST(SafetyFactorIteration, AgreeingFactorsAboveAFailedSolveAreNotTheLimit)
   // the bracket below 1.2, not the K* that was never reachable.
   parameters::SafetyFactorParameters control;
   std::ostringstream                 log;
-  const auto result = safety_factor::iterate(
+  const auto result = analyses::iterate(
     [](const double K) { return synthetic_step(K, 1.5, 1.2); }, control, log);
   ASSERT_TRUE(result.converged) << log.str();
   EXPECT_EQ(result.reason, "bracket narrower than the tolerance");
@@ -326,7 +326,7 @@ TEST(SafetyFactorIteration, FactorThatDependsOnKConvergesToItsFixedPoint)
   // with K, so only eq. (13) itself can stop the iteration.
   parameters::SafetyFactorParameters control;
   std::ostringstream                 log;
-  const auto result = safety_factor::iterate(
+  const auto result = analyses::iterate(
     [](const double K) { return synthetic_step(K, K + 0.5 * (2 - K), 10); }, control, log);
   ASSERT_TRUE(result.converged) << log.str();
   EXPECT_NEAR(result.safety_factor, 2.0, 2 * control.tolerance * 2.0);
