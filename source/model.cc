@@ -305,7 +305,8 @@ namespace fdem
       external_displacements,
       interfaces,
       parameters.solver.mixed_system == "iterative" ? contact::MixedSystemSolver::iterative :
-                                                      contact::MixedSystemSolver::dense);
+                                                      contact::MixedSystemSolver::dense,
+      parameters.safety_factor.compute && parameters.safety_factor.stiffness_check);
     mixed_system->krylov_control.tolerance = parameters.solver.gmres_tolerance;
   }
 
@@ -355,8 +356,15 @@ namespace fdem
   void
   Model<dim>::solve_contact(const double strength_reduction_factor)
   {
+    solve_contact(pair_strengths(strength_reduction_factor), strength_reduction_factor);
+  }
+
+  template <int dim>
+  void
+  Model<dim>::solve_contact(const std::vector<contact::PairStrength> &strengths,
+                            const double                              strength_reduction_factor)
+  {
     TimerOutput::Scope scope(timer, "contact");
-    const auto strengths = pair_strengths(strength_reduction_factor);
     // Warm start from the last states with a static solution (Sec. 6).
     auto states = last_converged.states.size() == mixed_system->n_pairs() ?
                     last_converged.states :
@@ -406,6 +414,27 @@ namespace fdem
                         interface.pairs.size(),
                         parameters.interfaces.at(interface.name).sliding_surface);
     return on_surface;
+  }
+
+  template <int dim>
+  void
+  Model<dim>::set_contact_state(const contact::ContactOutcome<dim> &outcome, const double K)
+  {
+    contact_outcome    = outcome;
+    strength_reduction = K;
+    if (outcome.converged())
+      {
+        last_converged   = outcome;
+        last_converged_K = K;
+      }
+  }
+
+  template <int dim>
+  void
+  Model<dim>::warn(const std::string &warning)
+  {
+    warnings.push_back(warning);
+    log << "warning: " << warning << std::endl;
   }
 
   template <int dim>

@@ -66,6 +66,11 @@ namespace fdem
     void
     solve_contact(const double strength_reduction = 1.0);
 
+    /** The same with the pair strengths @p strengths of K = @p strength_reduction given. */
+    void
+    solve_contact(const std::vector<contact::PairStrength> &strengths,
+                  const double                              strength_reduction);
+
     /**
      * Pair strengths of all interfaces; on the sliding surfaces c and
      * tan(phi) are divided by @p K (eq. 10).
@@ -83,6 +88,27 @@ namespace fdem
      */
     void
     restore_last_static_state();
+
+    /** The next contact solve starts from the initial states, not the last static ones. */
+    void
+    forget_warm_start()
+    {
+      last_converged = contact::ContactOutcome<dim>();
+    }
+
+    /** Sets the contact state to @p outcome, solved at K = @p K. */
+    void
+    set_contact_state(const contact::ContactOutcome<dim> &outcome, const double K);
+
+    /**
+     * A judgement on the model or its results that is not an error: printed
+     * now, and listed in summary.json's "warnings".
+     */
+    void
+    warn(const std::string &warning);
+
+    /** The warnings of the run so far. */
+    std::vector<std::string> warnings;
 
     /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
     void

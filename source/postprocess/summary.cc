@@ -154,6 +154,17 @@ namespace fdem
                            {"contact_result", step.solution.result}});
         summary["iterations"] = steps;
         summary["certificate"] = certificate_json(sf.certificate);
+        const auto &check      = sf.stiffness;
+        summary["stiffness_sensitivity"] = {{"computed", check.computed},
+                                            {"not_computed", check.not_computed},
+                                            {"factor", check.factor},
+                                            {"wall_seconds", check.wall_seconds},
+                                            {"K_stiffer", number_or_null(check.K_stiffer)},
+                                            {"K_softer", number_or_null(check.K_softer)},
+                                            {"relative_change",
+                                             check.computed && std::isinf(check.relative_change) ?
+                                               nlohmann::json("not certified") :
+                                               number_or_null(check.relative_change)}};
       }
     summary["rigid_motions"] = std::vector<double>(model.contact_outcome.solution.rigid_motions.begin(),
                                                    model.contact_outcome.solution.rigid_motions.end());
@@ -185,7 +196,8 @@ namespace fdem
                           {"n_flexibility_products",
                            model.mixed_system ? model.mixed_system->n_flexibility_products : 0},
                           {"iterations", iterations}};
-    summary["status"] = status(model, safety_factor);
+    summary["warnings"] = model.warnings;
+    summary["status"]   = status(model, safety_factor);
     return summary;
     }
 

@@ -42,6 +42,15 @@ namespace fdem
       /** Per pair of all interfaces: on a sliding surface? */
       std::vector<bool> on_sliding_surface;
 
+      /**
+       * K again with the moving blocks' compliance scaled by 1/factor and
+       * by factor (Safety factor/Stiffness check), each from the same
+       * initial K as @p base; the model's contact state is put back
+       * afterwards.
+       */
+      StiffnessSensitivity
+      stiffness_sensitivity(const Result &base);
+
       /** Eqs. (10)-(11) at K: the contact solve and F_R, F_tau. */
       ReducedStrengthSolution
       solve(const double K);

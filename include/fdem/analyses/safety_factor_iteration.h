@@ -95,6 +95,27 @@ namespace fdem
       std::string reason;
     };
 
+    /**
+     * K recomputed with the moving blocks (those with free rigid modes)
+     * stiffer and softer by a factor (contact solves only): a sliding
+     * surface that is a mechanism for rigid blocks gives nearly the same K;
+     * one that is not (a kinked surface under one block) gives a K that
+     * measures the blocks' elasticity.
+     */
+    struct StiffnessSensitivity
+    {
+      bool computed = false;
+      /** Why it was not computed, if it was not. */
+      std::string not_computed;
+      double      factor    = 0;
+      double      K_stiffer = std::numeric_limits<double>::quiet_NaN();
+      double      K_softer  = std::numeric_limits<double>::quiet_NaN();
+      /** max |K_s - K| / K over both; infinite if either is not certified. */
+      double relative_change = std::numeric_limits<double>::quiet_NaN();
+      /** Wall time of the check (seconds). */
+      double wall_seconds = 0;
+    };
+
     /** The safety factor, or the bracket that holds it, and why. */
     struct Result
     {
@@ -108,8 +129,9 @@ namespace fdem
       std::string reason;
       /** Every solve failed, each as a mechanism: no static equilibrium. */
       bool no_equilibrium = false;
-      Certificate       certificate;
-      std::vector<Step> steps;
+      Certificate          certificate;
+      StiffnessSensitivity stiffness;
+      std::vector<Step>    steps;
     };
 
     /**
