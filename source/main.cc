@@ -104,8 +104,10 @@ main(int argc, char *argv[])
       const std::string    status  = summary["status"];
       if (status != "completed")
         {
-          // 3: no static equilibrium at all; 4: no converged safety factor
-          // (summary.json holds the bracket).
+          // 3: no static equilibrium at all (every solve failed as a
+          // mechanism); 4: no certified safety factor or an unsolved contact
+          // problem (summary.json holds the steps, the bracket and the
+          // certificate's numbers).
           if (host)
             std::cerr << "fdem-slope: " << status << " (see summary.json)." << std::endl;
           return status.rfind("no static equilibrium", 0) == 0 ? 3 : 4;

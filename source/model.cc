@@ -4,7 +4,9 @@
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/block_output.h>
-#include <fdem/postprocess/hertz_sphere.h>
+#include <fdem/analyses/safety_factor_analysis.h>
+#include <fdem/postprocess/hertz_reference.h>
+#include <fdem/postprocess/summary.h>
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_cost.h>
@@ -72,7 +74,19 @@ namespace fdem
     progress("flexibility C of " + std::to_string(n_pairs_of(interfaces)) + " node pairs");
     compute_flexibility();
     if (parameters.safety_factor.compute)
-      compute_safety_factor();
+      {
+        // Each step with a static solution can be looked at in ParaView.
+        const auto write_step = [this]() {
+          if (!parameters.output.write_vtu)
+            return;
+          // Both collective: every rank comes here, rank 0 writes.
+          recover_block_displacements();
+          TimerOutput::Scope scope(timer, "output");
+          const unsigned int step = step_files.empty() ? 0 : step_files.back().time + 1;
+          write_vtu("-step" + Utilities::int_to_string(step, 3), step, step_files);
+        };
+        safety_factor_result = analyses::SafetyFactorAnalysis<dim>(*this, write_step).run();
+      }
     else
       {
         progress("contact problem");
@@ -263,26 +277,9 @@ namespace fdem
                                                      sides[1], *blocks[sides[1]],
                                                      parameters.interfaces.at(name).search_distance));
         // A node on two interfaces (the line of intersection of a wedge) is
-        // paired once, in the interface listed first: two pairs of the same
-        // two nodes would constrain one relative displacement twice.
-        auto &     pairs         = interfaces.back().pairs;
-        auto &     shared_nodes  = interfaces.back().shared_nodes;
-        const auto paired_before = [&](const contact::NodePair<dim> &pair) {
-          for (unsigned int i = 0; i + 1 < interfaces.size(); ++i)
-            for (unsigned int k = 0; k < interfaces[i].pairs.size(); ++k)
-              {
-                const auto &other = interfaces[i].pairs[k];
-                if (interfaces[i].block_I == sides[0] && interfaces[i].block_J == sides[1] &&
-                    other.dofs_I == pair.dofs_I && other.dofs_J == pair.dofs_J)
-                  {
-                    shared_nodes.push_back({i, k, pair.area});
-                    return true;
-                  }
-              }
-          return false;
-        };
-        pairs.erase(std::remove_if(pairs.begin(), pairs.end(), paired_before), pairs.end());
-        interfaces.back().n_shared_nodes = shared_nodes.size();
+        // paired once, in the interface listed first.
+        contact::remove_pairs_of_earlier_interfaces(interfaces);
+        const auto &pairs = interfaces.back().pairs;
         AssertThrow(!pairs.empty(),
                     ExcMessage("Interfaces/" + name + ": all its node pairs belong to "
                                "interfaces listed before it."));
@@ -309,7 +306,8 @@ namespace fdem
       external_displacements,
       interfaces,
       parameters.solver.mixed_system == "iterative" ? contact::MixedSystemSolver::iterative :
-                                                      contact::MixedSystemSolver::dense);
+                                                      contact::MixedSystemSolver::dense,
+      parameters.safety_factor.compute && parameters.safety_factor.stiffness_check);
     mixed_system->krylov_control.tolerance = parameters.solver.gmres_tolerance;
   }
 
@@ -359,8 +357,15 @@ namespace fdem
   void
   Model<dim>::solve_contact(const double strength_reduction_factor)
   {
+    solve_contact(pair_strengths(strength_reduction_factor), strength_reduction_factor);
+  }
+
+  template <int dim>
+  void
+  Model<dim>::solve_contact(const std::vector<contact::PairStrength> &strengths,
+                            const double                              strength_reduction_factor)
+  {
     TimerOutput::Scope scope(timer, "contact");
-    const auto strengths = pair_strengths(strength_reduction_factor);
     // Warm start from the last states with a static solution (Sec. 6).
     auto states = last_converged.states.size() == mixed_system->n_pairs() ?
                     last_converged.states :
@@ -414,50 +419,34 @@ namespace fdem
 
   template <int dim>
   void
-  Model<dim>::compute_safety_factor()
+  Model<dim>::set_contact_state(const contact::ContactOutcome<dim> &outcome, const double K)
   {
-    const std::vector<bool> on_surface = pairs_on_sliding_surface();
-    AssertThrow(std::find(on_surface.begin(), on_surface.end(), true) != on_surface.end(),
-                ExcMessage("Interfaces: no interface is a sliding surface; set "
-                           "'Sliding surface = true' on one, or Safety factor/"
-                           "Compute = false."));
-    log << "Safety factor (eqs. 10-13):" << std::endl;
-    unsigned int n_steps = 0;
-    const auto   solve   = [&](const double K) {
-      std::ostringstream what;
-      what << "safety factor step " << ++n_steps << ": K = " << std::setprecision(8) << K;
-      progress(what.str());
-      solve_contact(K);
-      safety_factor::ReducedStrengthSolution solution;
+    contact_outcome    = outcome;
+    strength_reduction = K;
+    if (outcome.converged())
       {
-        TimerOutput::Scope scope(timer, "safety factor");
-        solution = safety_factor::resisting_and_sliding_forces(*mixed_system, contact_outcome,
-                                                               pair_strengths(K), on_surface);
+        last_converged   = outcome;
+        last_converged_K = K;
       }
-      // Each step with a static solution can be looked at in ParaView.
-      if (solution.converged && parameters.output.write_vtu)
-        {
-          // Both collective: every rank comes here, rank 0 writes.
-          recover_block_displacements();
-          TimerOutput::Scope scope(timer, "output");
-          const unsigned int step = step_files.empty() ? 0 : step_files.back().time + 1;
-          write_vtu("-step" + Utilities::int_to_string(step, 3), step, step_files);
-        }
-      return solution;
-    };
-    safety_factor_result = safety_factor::iterate(solve, parameters.safety_factor, log);
-    // The model's state: the last one with a static solution.
+  }
+
+  template <int dim>
+  void
+  Model<dim>::warn(const std::string &warning)
+  {
+    warnings.push_back(warning);
+    log << "warning: " << warning << std::endl;
+  }
+
+  template <int dim>
+  void
+  Model<dim>::restore_last_static_state()
+  {
     if (last_converged.states.size() == mixed_system->n_pairs())
       {
         contact_outcome    = last_converged;
         strength_reduction = last_converged_K;
       }
-    log << "Safety factor: ";
-    if (safety_factor_result.converged)
-      log << std::setprecision(8) << safety_factor_result.safety_factor;
-    else
-      log << "not converged";
-    log << " (" << safety_factor_result.reason << ")" << std::endl;
   }
 
   template <int dim>
@@ -524,7 +513,7 @@ namespace fdem
     TimerOutput::Scope scope(timer, "output");
 
     auto results = interface_results();
-    const nlohmann::json hertz = hertz_reference(results);
+    const nlohmann::json hertz = postprocess::hertz_reference(*this, results);
 
     // Without equilibrium there is no field to show: only the summary says why.
     const bool converged = contact_outcome.converged();
@@ -551,197 +540,14 @@ namespace fdem
         }
     scope.stop();
 
-    summary                = nlohmann::json::object();
-    summary["case"]        = parameters.case_name;
-    summary["dimension"]   = dim;
-    summary["fe_degree"]   = parameters.fe_degree;
-    summary["n_mpi_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    unsigned int n_dofs    = 0;
-    summary["blocks"]      = nlohmann::json::array();
-    for (unsigned int b = 0; b < blocks.size(); ++b)
-      {
-        const auto &block = *blocks[b];
-        n_dofs += block.dof_handler.n_dofs();
-        double volume = 0;
-        for (const auto &cell : block.triangulation.active_cell_iterators())
-          volume += cell->measure();
-        summary["blocks"].push_back({{"name", block.name},
-                                     {"volume", volume},
-                                     {"n_cells", block.triangulation.n_active_cells()},
-                                     {"n_dofs", block.dof_handler.n_dofs()},
-                                     {"free_rigid_modes", block.n_free_rigid_modes()},
-                                     {"max_support_reaction", reactions[b]},
-                                     {"max_load", block.load_vector.linfty_norm()}});
-      }
-    summary["n_dofs"]     = n_dofs;
-    summary["interfaces"] = nlohmann::json::array();
-    for (unsigned int i = 0; i < interfaces.size(); ++i)
-      {
-        unsigned int n_status[3] = {0, 0, 0};
-        double max_pressure = 0, normal_force = 0, tangential_force = 0;
-        Tensor<1, dim> tangential_resultant;
-        for (unsigned int k = 0; k < results[i].size(); ++k)
-          {
-            const auto &r = results[i][k];
-            ++n_status[static_cast<int>(r.status)];
-            max_pressure = std::max(max_pressure, r.normal_pressure);
-            normal_force += r.normal_force;
-            tangential_force += r.tangential_force[0];
-            for (unsigned int t = 0; t + 1 < dim; ++t)
-              tangential_resultant += r.tangential_force[t] * interfaces[i].pairs[k].frame[t + 1];
-          }
-        // In 3D the pairs' tangents differ: the magnitude of the resultant.
-        if (dim == 3)
-          tangential_force = tangential_resultant.norm();
-        const double extent = postprocess::contact_extent(results[i]);
-        summary["interfaces"].push_back(
-          {{"name", interfaces[i].name},
-           {"block_I", blocks[interfaces[i].block_I]->name},
-           {"block_J", blocks[interfaces[i].block_J]->name},
-           {"n_pairs", interfaces[i].pairs.size()},
-           {"area", std::accumulate(results[i].begin(), results[i].end(), 0.0,
-                                    [](const double a, const auto &r) { return a + r.area; }) +
-                      std::accumulate(interfaces[i].shared_nodes.begin(),
-                                      interfaces[i].shared_nodes.end(), 0.0,
-                                      [](const double a, const auto &n) { return a + n.area; })},
-           {"n_unpaired_nodes", interfaces[i].n_unpaired_I + interfaces[i].n_unpaired_J},
-           {"n_nodes_paired_in_an_earlier_interface", interfaces[i].n_shared_nodes},
-           {"n_stick", n_status[0]},
-           {"n_slip", n_status[1]},
-           {"n_open", n_status[2]},
-           {"max_normal_pressure", max_pressure},
-           {"contact_extent", extent},
-           {"total_normal_force", normal_force},
-           {"total_tangential_force", tangential_force}});
-      }
-    if (!hertz.empty())
-      summary["hertz"] = hertz;
-    summary["strength_reduction"] = strength_reduction;
-    if (parameters.safety_factor.compute)
-      {
-        const auto &sf = safety_factor_result;
-        const auto  number_or_null = [](const double x) {
-          return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
-        };
-        summary["safety_factor"]         = number_or_null(sf.safety_factor);
-        summary["converged"]             = sf.converged;
-        summary["safety_factor_reason"]  = sf.reason;
-        summary["safety_factor_bracket"] = {number_or_null(sf.bracket_low),
-                                            number_or_null(sf.bracket_high)};
-        nlohmann::json steps = nlohmann::json::array();
-        for (const auto &step : sf.steps)
-          steps.push_back({{"K", step.K},
-                           {"K_next", step.K_next},
-                           {"F_R", step.solution.resisting_force},
-                           {"F_tau", step.solution.sliding_force},
-                           {"n_stick", step.solution.n_stick},
-                           {"n_slip", step.solution.n_slip},
-                           {"n_open", step.solution.n_open},
-                           {"n_contact_iterations", step.solution.n_contact_iterations},
-                           {"contact_result", step.solution.result}});
-        summary["iterations"] = steps;
-      }
-    summary["rigid_motions"] = std::vector<double>(contact_outcome.solution.rigid_motions.begin(),
-                                                   contact_outcome.solution.rigid_motions.end());
-    nlohmann::json iterations = nlohmann::json::array();
-    for (const auto &record : contact_outcome.iterations)
-      iterations.push_back({{"n_stick", record.n_stick},
-                            {"n_slip", record.n_slip},
-                            {"n_open", record.n_open},
-                            {"n_at_cutoff", record.n_at_cutoff},
-                            {"n_changes", record.n_changes},
-                            {"reciprocal_condition", record.reciprocal_condition},
-                            {"factorized", record.factorized}});
-    summary["contact"] = {{"result", contact::result_description(contact_outcome.result)},
-                          {"converged", contact_outcome.converged()},
-                          {"n_solves", contact_outcome.iterations.size()},
-                          {"n_cycles_broken", contact_outcome.n_cycles_broken},
-                          {"max_slip_angle_degrees", contact_outcome.max_slip_angle},
-                          {"reciprocal_condition",
-                           contact_outcome.iterations.empty() ?
-                             1.0 :
-                             contact_outcome.iterations.back().reciprocal_condition},
-                          {"n_factorizations",
-                           mixed_system ? mixed_system->dense_solver().n_factorizations : 0},
-                          {"n_reused_solves",
-                           mixed_system ? mixed_system->dense_solver().n_reused_solves : 0},
-                          {"mixed_system", parameters.solver.mixed_system},
-                          {"n_gmres_iterations",
-                           mixed_system ? mixed_system->n_krylov_iterations : 0},
-                          {"n_flexibility_products",
-                           mixed_system ? mixed_system->n_flexibility_products : 0},
-                          {"iterations", iterations}};
+    summary = postprocess::make_summary(*this, results, hertz, reactions,
+                                        parameters.safety_factor.compute ? &safety_factor_result : nullptr);
     // The only entries that differ between two runs of the same input.
     summary["timings"]         = postprocess::section_wall_times(timer, run_timer.wall_time());
     summary["peak_memory_MiB"] = postprocess::peak_memory_mib();
-    if (!contact_outcome.converged())
-      summary["status"] = "no static equilibrium: " +
-                          (parameters.safety_factor.compute ?
-                             safety_factor_result.reason :
-                             contact::result_description(contact_outcome.result));
-    else if (parameters.safety_factor.compute && !safety_factor_result.converged)
-      summary["status"] = "safety factor not converged: " + safety_factor_result.reason;
-    else
-      summary["status"] = "completed";
     if (writes_files)
       postprocess::write_json(directory + "/summary.json", summary);
     log << "Results in " << directory << "/" << std::endl;
-  }
-
-  template <int dim>
-  nlohmann::json
-  Model<dim>::hertz_reference(
-    std::vector<std::vector<postprocess::PairResult<dim>>> &results) const
-  {
-    // Plane-strain Hertz contact of a cylinder on a half-space (the paper's
-    // example 4.A, its ref. [12]): a = sqrt(4 p r / (pi E')), q_max =
-    // 2 p / (pi a), 1/E' = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, and
-    // q(x) = q_max sqrt(1 - (x/a)^2). The generator's model is a half model,
-    // so p is twice the normal force on its interface. In 3D, the Hertz
-    // sphere generator's quarter model: see postprocess/hertz_sphere.h.
-    using Source = parameters::GeometryParameters::Source;
-    if (parameters.geometry.source != (dim == 2 ? Source::hertz : Source::hertz_sphere) ||
-        interfaces.size() != 1 || !contact_outcome.converged())
-      return {};
-    const auto &cylinder   = parameters.materials.at(blocks[interfaces[0].block_I]->name);
-    const auto &foundation = parameters.materials.at(blocks[interfaces[0].block_J]->name);
-    const double inverse_E = (1 - std::pow(cylinder.poissons_ratio, 2)) / cylinder.youngs_modulus +
-                             (1 - std::pow(foundation.poissons_ratio, 2)) / foundation.youngs_modulus;
-    if constexpr (dim == 3)
-      return postprocess::hertz_sphere_reference(
-        results[0], inverse_E,
-        parameters.geometry.hertz_sphere.radius * parameters.geometry.scale_factor);
-    double half_load = 0;
-    for (const auto &r : results[0])
-      half_load -= r.normal_force;
-    const double p = 2 * half_load, r = parameters.geometry.hertz.radius * parameters.geometry.scale_factor;
-    const double a_exact = std::sqrt(4 * p * r * inverse_E / numbers::PI);
-    const double q_exact = 2 * p / (numbers::PI * a_exact);
-    // Distance from the symmetry axis: the pair that touches before loading.
-    Point<dim> axis         = results[0][0].position;
-    double     smallest_gap = results[0][0].initial_gap;
-    for (const auto &pair : results[0])
-      if (pair.initial_gap < smallest_gap)
-        {
-          smallest_gap = pair.initial_gap;
-          axis         = pair.position;
-        }
-    for (auto &pair : results[0])
-      {
-        const double x         = pair.position.distance(axis) / a_exact;
-        pair.reference_pressure = x < 1 ? q_exact * std::sqrt(1 - x * x) : 0.0;
-      }
-    double q_max = 0;
-    for (const auto &pair : results[0])
-      q_max = std::max(q_max, pair.normal_pressure);
-    const double a = postprocess::contact_extent(results[0]);
-    return {{"load_per_unit_length", p},
-            {"contact_half_width_exact", a_exact},
-            {"max_pressure_exact", q_exact},
-            {"contact_half_width", a},
-            {"max_pressure", q_max},
-            {"contact_half_width_error", a / a_exact - 1},
-            {"max_pressure_error", q_max / q_exact - 1}};
   }
 
   nlohmann::json

@@ -125,7 +125,8 @@ TEST(ThreeD, BlockOnPlaneCaseOfPrmFolder)
   // prm/block_on_plane_3d.prm (the scaling benchmark's 3D case): every pair
   // stays closed (tensile strength), K = (c A + W cos 30 tan 30)/(W sin 30)
   // = 1.24, exact up to round-off. Its limit is singular, so the iteration
-  // must stop on two agreeing K* without solving at it: at most three solves.
+  // must stop on two agreeing K* without solving at it, and certify K* by
+  // one solve just below it: at most four solves.
   std::ostringstream log;
   Model<3> model(test_support::case_parameters("block_on_plane_3d.prm"), "", log);
   model.run();
@@ -133,7 +134,7 @@ TEST(ThreeD, BlockOnPlaneCaseOfPrmFolder)
   const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
   const double exact = (15.0 * 60 + W * std::cos(dip) * std::tan(PI / 6)) / (W * std::sin(dip));
   EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact);
-  EXPECT_LE(model.summary["iterations"].size(), 3u);
+  EXPECT_LE(model.summary["iterations"].size(), 4u);
 }
 
 TEST(ThreeD, HertzSphereContactRadiusAndPeakPressure)

@@ -10,7 +10,7 @@
 #include <fdem/parameters/parameters.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/interface_output.h>
-#include <fdem/safety_factor/safety_factor.h>
+#include <fdem/analyses/safety_factor_iteration.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -66,18 +66,49 @@ namespace fdem
     void
     solve_contact(const double strength_reduction = 1.0);
 
+    /** The same with the pair strengths @p strengths of K = @p strength_reduction given. */
+    void
+    solve_contact(const std::vector<contact::PairStrength> &strengths,
+                  const double                              strength_reduction);
+
     /**
      * Pair strengths of all interfaces; on the sliding surfaces c and
      * tan(phi) are divided by @p K (eq. 10).
      */
     std::vector<contact::PairStrength>
     pair_strengths(const double K) const;
+
+    /** Per pair of all interfaces: on a sliding surface? */
+    std::vector<bool>
+    pairs_on_sliding_surface() const;
+
     /**
-     * The safety factor by the iteration of eqs. (10)-(13) with its
-     * safeguards; leaves the model in the last state with a static solution.
+     * Back to the last contact state with a static solution (after an
+     * analysis whose last solve failed), if there is one.
      */
     void
-    compute_safety_factor();
+    restore_last_static_state();
+
+    /** The next contact solve starts from the initial states, not the last static ones. */
+    void
+    forget_warm_start()
+    {
+      last_converged = contact::ContactOutcome<dim>();
+    }
+
+    /** Sets the contact state to @p outcome, solved at K = @p K. */
+    void
+    set_contact_state(const contact::ContactOutcome<dim> &outcome, const double K);
+
+    /**
+     * A judgement on the model or its results that is not an error: printed
+     * now, and listed in summary.json's "warnings".
+     */
+    void
+    warn(const std::string &warning);
+
+    /** The warnings of the run so far. */
+    std::vector<std::string> warnings;
 
     /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
     void
@@ -99,7 +130,7 @@ namespace fdem
     contact::ContactOutcome<dim>                        contact_outcome;
     /** K of contact_outcome's strengths (1: full strength). */
     double                                              strength_reduction = 1;
-    safety_factor::Result                               safety_factor_result;
+    analyses::Result                                    safety_factor_result;
     std::vector<Vector<double>>                         displacements;
     nlohmann::json                                      summary;
 
@@ -110,10 +141,6 @@ namespace fdem
     /** VTU/PVD files of the steps of the safety-factor iteration. */
     std::vector<postprocess::PvdEntry> step_files;
 
-    /** Per pair of all interfaces: on a sliding surface? */
-    std::vector<bool>
-    pairs_on_sliding_surface() const;
-
     /** Results per interface for the current contact state. */
     std::vector<std::vector<postprocess::PairResult<dim>>>
     interface_results() const;
@@ -123,7 +150,23 @@ namespace fdem
     write_vtu(const std::string &suffix, const double time, std::vector<postprocess::PvdEntry> &entries);
 
     std::string   expanded_parameters;
+
+  public:
+    /** The run's log (screen); only rank 0's reaches it. */
     std::ostream &log;
+
+    /** A progress line: elapsed time, peak memory and @p what. */
+    void
+    progress(const std::string &what) const;
+
+    /** The wall-time sections of the run's phases. */
+    TimerOutput &
+    phase_timer()
+    {
+      return timer;
+    }
+
+  private:
     /**
      * Whether this process writes the output files: rank 0 of
      * MPI_COMM_WORLD. The other ranks compute the same results and write
@@ -137,20 +180,6 @@ namespace fdem
     TimerOutput   timer;
     /** Wall time since the model was made: the "total" of the timings. */
     Timer         run_timer;
-
-    /** A progress line: elapsed time, peak memory and @p what. */
-    void
-    progress(const std::string &what) const;
-
-    /**
-     * For the Hertz generator's model (2D) and the Hertz sphere generator's
-     * (3D, postprocess::hertz_sphere_reference()): the exact contact
-     * half-width or radius and maximum pressure and the relative errors of
-     * the computed ones; the exact pressure of each pair goes into
-     * @p results. Empty otherwise.
-     */
-    nlohmann::json
-    hertz_reference(std::vector<std::vector<postprocess::PairResult<dim>>> &results) const;
 
     /** Index of the face group called @p name, or throws naming @p what. */
     types::boundary_id

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/contact/interface_pairs.h>
 
+#include <algorithm>
+
 #include <deal.II/base/exceptions.h>
 
 #include <cmath>
@@ -133,6 +135,34 @@ namespace fdem
       return interface;
     }
 
+    template <int dim>
+    void
+    remove_pairs_of_earlier_interfaces(std::vector<Interface<dim>> &interfaces)
+    {
+      Interface<dim> &last          = interfaces.back();
+      const auto      paired_before = [&](const NodePair<dim> &pair) {
+        for (unsigned int i = 0; i + 1 < interfaces.size(); ++i)
+          for (unsigned int k = 0; k < interfaces[i].pairs.size(); ++k)
+            {
+              const auto &other = interfaces[i].pairs[k];
+              if (interfaces[i].block_I == last.block_I && interfaces[i].block_J == last.block_J &&
+                  other.dofs_I == pair.dofs_I && other.dofs_J == pair.dofs_J)
+                {
+                  last.shared_nodes.push_back({i, k, pair.area});
+                  return true;
+                }
+            }
+        return false;
+      };
+      last.pairs.erase(std::remove_if(last.pairs.begin(), last.pairs.end(), paired_before),
+                       last.pairs.end());
+      last.n_shared_nodes = last.shared_nodes.size();
+    }
+
+    template void
+    remove_pairs_of_earlier_interfaces(std::vector<Interface<2>> &);
+    template void
+    remove_pairs_of_earlier_interfaces(std::vector<Interface<3>> &);
     template Interface<2>
     make_interface(const std::string &, const types::boundary_id, const unsigned int,
                    const blocks::ElasticBlock<2> &, const unsigned int,

@@ -14,7 +14,8 @@ namespace fdem
       const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
       const std::vector<Vector<double>> &external_displacements,
       const std::vector<Interface<dim>> &interfaces,
-      const MixedSystemSolver            solver)
+      const MixedSystemSolver            solver,
+      const bool                         keep_moving_part)
       : blocks(blocks)
       , solver_type(solver)
     {
@@ -36,6 +37,12 @@ namespace fdem
 
       if (solver_type == MixedSystemSolver::dense)
         flexibility.reinit(n_forces, n_forces);
+      const bool keep_moving = keep_moving_part && solver_type == MixedSystemSolver::dense;
+      if (keep_moving)
+        {
+          moving_flexibility.reinit(n_forces, n_forces);
+          moving_external_gap.reinit(n_forces);
+        }
       self_flexibility.assign(pairs.size(), Tensor<2, dim>());
       external_gap.reinit(n_forces);
       rigid_coupling.reinit(n_forces, n_rigid);
@@ -86,6 +93,11 @@ namespace fdem
                       for (unsigned int j = 0; j < dim; ++j)
                         flexibility(dim * touching[k] + i, dim * touching[l] + j) +=
                           local[i][j];
+                    if (keep_moving && blocks[b]->n_free_rigid_modes() > 0)
+                      for (unsigned int i = 0; i < dim; ++i)
+                        for (unsigned int j = 0; j < dim; ++j)
+                          moving_flexibility(dim * touching[k] + i, dim * touching[l] + j) +=
+                            local[i][j];
                   }
             }
           else
@@ -113,6 +125,9 @@ namespace fdem
               const Tensor<1, dim> local = -sign[k] * (pairs[touching[k]]->frame * u);
               for (unsigned int i = 0; i < dim; ++i)
                 external_gap[dim * touching[k] + i] += local[i];
+              if (keep_moving && blocks[b]->n_free_rigid_modes() > 0)
+                for (unsigned int i = 0; i < dim; ++i)
+                  moving_external_gap[dim * touching[k] + i] += local[i];
             }
 
           // W and omega^T F for the free modes of block b (eqs. 1, 7, 8).
@@ -135,6 +150,15 @@ namespace fdem
       for (unsigned int p = 0; p < pairs.size(); ++p)
         external_gap[dim * p] += pairs[p]->initial_gap;
 
+      set_diagonal_scales();
+      if (solver_type == MixedSystemSolver::iterative)
+        setup_preconditioner();
+    }
+
+    template <int dim>
+    void
+    MixedSystem<dim>::set_diagonal_scales()
+    {
       if (solver_type == MixedSystemSolver::dense)
         for (unsigned int p = 0; p < pairs.size(); ++p)
           for (unsigned int i = 0; i < dim; ++i)
@@ -149,9 +173,22 @@ namespace fdem
           }
       held_flexibility = 1e-12 * max_diagonal;
       if (sum_diagonal > 0)
-        mean_flexibility = sum_diagonal / n_forces;
-      if (solver_type == MixedSystemSolver::iterative)
-        setup_preconditioner();
+        mean_flexibility = sum_diagonal / (dim * pairs.size());
+    }
+
+    template <int dim>
+    void
+    MixedSystem<dim>::set_moving_compliance_scale(const double scale)
+    {
+      AssertThrow(can_scale_moving_compliance(),
+                  ExcMessage("The moving blocks' compliance can be scaled only in a dense "
+                             "mixed system that kept its moving part."));
+      const double change = scale - moving_compliance_scale;
+      flexibility.add(change, moving_flexibility);
+      external_gap.add(change, moving_external_gap);
+      moving_compliance_scale = scale;
+      set_diagonal_scales();
+      lu.clear(); // the factors are of the old C
     }
 
     template <int dim>

@@ -265,8 +265,10 @@ namespace fdem
       prm.declare_entry("Tolerance",
                         "1e-6",
                         Patterns::Anything(),
-                        "Relative tolerance, > 0: the iteration stops when two "
-                        "successive K* agree to it (eq. 13).");
+                        "Relative tolerance, > 0 (dimensionless): the iteration "
+                        "stops when K* reproduces K to it (eq. 13), and a K is "
+                        "reported only if a solved state shows that (its "
+                        "certificate).");
       prm.declare_entry("Maximum iterations",
                         "60",
                         Patterns::Integer(1),
@@ -277,6 +279,28 @@ namespace fdem
                         Patterns::Anything(),
                         "If no K down to this value has a static solution, the "
                         "model has none (> 0, dimensionless).");
+      prm.declare_entry("Stiffness check",
+                        "true",
+                        Patterns::Bool(),
+                        "After the safety factor, compute it again with the "
+                        "moving blocks (those with free rigid modes) Stiffness "
+                        "check factor times stiffer and times softer: contact "
+                        "solves only, on the same factorisation. A K that "
+                        "changes by more than Stiffness check warning means the "
+                        "sliding surface is not a mechanism for a rigid block and "
+                        "K measures the blocks' elasticity. Dense mixed system "
+                        "only; set false to save its memory (one more matrix of "
+                        "the size of C) on large models.");
+      prm.declare_entry("Stiffness check factor",
+                        "10",
+                        Patterns::Double(1.0 + 1e-12, 1e6),
+                        "How much stiffer and softer the moving blocks are made "
+                        "for the stiffness check (dimensionless, > 1).");
+      prm.declare_entry("Stiffness check warning",
+                        "0.01",
+                        Patterns::Double(0, 1e6),
+                        "Relative change of K in the stiffness check beyond which "
+                        "the run warns (dimensionless, >= 0).");
       prm.leave_subsection();
     }
 
@@ -306,6 +330,9 @@ namespace fdem
       tolerance      = positive("Tolerance");
       minimum_factor = positive("Minimum factor");
       max_iterations = prm.get_integer("Maximum iterations");
+      stiffness_check         = prm.get_bool("Stiffness check");
+      stiffness_check_factor  = prm.get_double("Stiffness check factor");
+      stiffness_check_warning = prm.get_double("Stiffness check warning");
       prm.leave_subsection();
     }
 

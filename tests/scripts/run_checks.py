@@ -171,6 +171,62 @@ def check_no_equilibrium(exe, prm):
             assert not name.endswith((".vtu", ".pvd", ".csv")), f"{name} was written"
 
 
+def check_certified(exe, prm, warning="no-warning"):
+    """The reported K carries a certificate whose numbers hold: a solved
+    step of the iteration at the certificate's K with its K*, |K* - K| / K
+    within the tolerance, and the safety factor that K* (fixed point) or K
+    (bracket). The stiffness check: a warning, and a relative change above
+    the warning threshold, exactly when `warning` is "warning"."""
+    with tempfile.TemporaryDirectory() as workdir:
+        result = run(exe, prm, workdir)
+        assert result.returncode == 0, result.stderr
+        case = os.path.splitext(os.path.basename(prm))[0]
+        summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
+    c = summary["certificate"]
+    print("certificate:", json.dumps(c))
+    print("stiffness_sensitivity:", json.dumps(summary["stiffness_sensitivity"]))
+    assert summary["converged"] and c["holds"], c
+    K, K_star, tolerance = c["K"], c["K_star"], c["tolerance"]
+    assert abs(K_star - K) <= tolerance * K, (K, K_star)
+    steps = [s for s in summary["iterations"] if s["K"] == K and s["K_star"] == K_star]
+    assert steps, "no step of the iteration has the certificate's K and K*"
+    reported = K_star if c["kind"] == "fixed point" else K
+    assert summary["safety_factor"] == reported, (summary["safety_factor"], reported)
+    if c["kind"] == "bracket":
+        failed = [s for s in summary["iterations"] if s["K"] == c["K_failed"]]
+        assert failed and failed[0]["K_star"] is None, "no failed step at K_failed"
+        assert c["K_failed"] - K <= tolerance * K
+    check = summary["stiffness_sensitivity"]
+    assert check["computed"], check["not_computed"]
+    change = check["relative_change"]
+    # "not certified" when K could not be certified with the blocks scaled.
+    large = isinstance(change, str) or change > 0.01
+    warned = any("not a mechanism" in w for w in summary["warnings"])
+    if warning == "warning":
+        assert warned and large, (change, summary["warnings"])
+    else:
+        assert not warned and not large, (change, summary["warnings"])
+
+
+def check_stiffness_consistency(exe, prm, stiffer_prm, softer_prm):
+    """The stiffness check of @p prm against fresh runs: its K_stiffer and
+    K_softer must be the K of @p stiffer_prm and @p softer_prm (the moving
+    blocks' E times and divided by the factor) to 1e-9 relative: C and g_bar
+    are linear in the blocks' compliance, so the check solves the very
+    same problems up to round-off (measured: see tests/CMakeLists.txt)."""
+    def safety_factor(path):
+        with tempfile.TemporaryDirectory() as workdir:
+            result = run(exe, path, workdir)
+            assert result.returncode == 0, result.stderr
+            case = os.path.splitext(os.path.basename(path))[0]
+            return json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
+    check = safety_factor(prm)["stiffness_sensitivity"]
+    for key, path in (("K_stiffer", stiffer_prm), ("K_softer", softer_prm)):
+        K = safety_factor(path)["safety_factor"]
+        print(f"{key}: check {check[key]!r}, fresh run {K!r}, relative difference {abs(check[key] - K) / K:.2e}")
+        assert abs(check[key] - K) <= 1e-9 * K, (key, check[key], K)
+
+
 def check_deterministic(exe, prm):
     texts = []
     for _ in range(2):
@@ -182,6 +238,7 @@ def check_deterministic(exe, prm):
             # Wall times and peak memory differ from run to run; nothing else may.
             for key in VOLATILE_KEYS:
                 del summary[key]
+            summary.get("stiffness_sensitivity", {}).pop("wall_seconds", None)
             texts.append(json.dumps(summary, sort_keys=True))
     assert texts[0] == texts[1], "two runs of the same input differ"
 
@@ -290,5 +347,7 @@ if __name__ == "__main__":
         {"vtu": check_vtu, "bad-input": check_bad_input,
          "no-equilibrium": check_no_equilibrium,
          "deterministic": check_deterministic,
-         "wedge": check_wedge, "mpi": check_mpi}[command](exe, path, *sys.argv[4:])
+         "wedge": check_wedge, "mpi": check_mpi,
+         "certified": check_certified,
+         "stiffness-consistency": check_stiffness_consistency}[command](exe, path, *sys.argv[4:])
     print("passed")

@@ -80,5 +80,17 @@ namespace fdem
                    const unsigned int                   index_J,
                    const blocks::ElasticBlock<dim> &    block_J,
                    const double                         search_distance);
+
+    /**
+     * Removes from the last of @p interfaces the pairs of the same two nodes
+     * as a pair of an earlier interface between the same blocks (a node on
+     * two interfaces, e.g. the line of intersection of a wedge): two pairs
+     * of the same nodes would constrain one relative displacement twice.
+     * The node stays in the earlier interface; the last one records it in
+     * shared_nodes with its area, so that its strength is added there.
+     */
+    template <int dim>
+    void
+    remove_pairs_of_earlier_interfaces(std::vector<Interface<dim>> &interfaces);
   } // namespace contact
 } // namespace fdem

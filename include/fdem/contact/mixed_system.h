@@ -101,7 +101,26 @@ namespace fdem
         const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
         const std::vector<Vector<double>> &external_displacements,
         const std::vector<Interface<dim>> &interfaces,
-        const MixedSystemSolver            solver = MixedSystemSolver::dense);
+        const MixedSystemSolver            solver = MixedSystemSolver::dense,
+        const bool                         keep_moving_part = false);
+
+      /**
+       * Scales the compliance of the moving blocks (those with free rigid
+       * modes) by @p scale, relative to the assembled one: C and g_bar are
+       * linear in each block's compliance (eqs. 4-6), so C = C_fixed + s
+       * C_moving and g_bar likewise, without a new factorisation; W and
+       * omega^T F do not change. Needs the dense solver and the moving part
+       * kept at construction.
+       */
+      void
+      set_moving_compliance_scale(const double scale);
+
+      /** Whether set_moving_compliance_scale() can be used. */
+      bool
+      can_scale_moving_compliance() const
+      {
+        return moving_external_gap.size() > 0;
+      }
 
       /**
        * Solves the system with the rows of every pair set by its state
@@ -242,6 +261,16 @@ namespace fdem
       double held_flexibility = 0;
       /** The mean of the diagonal of C: the scale of the rigid unknowns in GMRES. */
       double mean_flexibility = 1;
+      /** The moving blocks' parts of C and g_bar (set_moving_compliance_scale()). */
+      FullMatrix<double> moving_flexibility;
+      Vector<double>     moving_external_gap;
+      /** The current scale of the moving blocks' compliance. */
+      double moving_compliance_scale = 1;
+
+      /** self_flexibility and the scales derived from C's diagonal. */
+      void
+      set_diagonal_scales();
+
       /** The iterative solver's last solution: the start of the next solve. */
       mutable Vector<double> last_iterate;
 

@@ -64,6 +64,17 @@ namespace fdem
       {
         return result == ContactResult::converged;
       }
+
+      /**
+       * Whether a failed solve is a mechanism: the blocks move without
+       * bound under these strengths (no static equilibrium), rather than a
+       * numerical breakdown.
+       */
+      bool
+      is_mechanism() const
+      {
+        return result == ContactResult::singular || result == ContactResult::runaway;
+      }
     };
 
     /** Limits of the status iteration. */

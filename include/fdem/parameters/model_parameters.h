@@ -124,6 +124,12 @@ namespace fdem
       unsigned int max_iterations = 60;
       /** Below this K the search for a statically admissible K gives up. */
       double minimum_factor = 1e-3;
+      /** Recompute K with the moving blocks stiffer and softer. */
+      bool stiffness_check = true;
+      /** By how much stiffer and softer (> 1). */
+      double stiffness_check_factor = 10;
+      /** Relative change of K beyond which the run warns. */
+      double stiffness_check_warning = 0.01;
     };
 
     /** Water: subsection "Water". */

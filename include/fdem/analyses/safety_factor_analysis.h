@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/analyses/safety_factor_iteration.h>
+#include <fdem/model.h>
+
+#include <functional>
+#include <vector>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    /**
+     * The safety factor of a factorised Model by the paper's eqs. (10)-(13):
+     * every step is one contact solve of the model with the sliding
+     * surfaces' c and tan(phi) divided by K, on the model's one
+     * factorisation. Then, if asked, the sensitivity of K to the stiffness
+     * of the moving blocks (contact solves only).
+     */
+    template <int dim>
+    class SafetyFactorAnalysis
+    {
+    public:
+      /**
+       * @p on_solved_step is called after each step with a static solution,
+       * the model in that state (e.g. to write the step's VTU files).
+       */
+      SafetyFactorAnalysis(Model<dim> &model, std::function<void()> on_solved_step = {});
+
+      /**
+       * The iteration with its certificate; leaves the model in the last
+       * state with a static solution.
+       */
+      Result
+      run();
+
+    private:
+      Model<dim> &          model;
+      std::function<void()> on_solved_step;
+      /** Per pair of all interfaces: on a sliding surface? */
+      std::vector<bool> on_sliding_surface;
+
+      /**
+       * K again with the moving blocks' compliance scaled by 1/factor and
+       * by factor (Safety factor/Stiffness check), each from the same
+       * initial K as @p base; the model's contact state is put back
+       * afterwards.
+       */
+      StiffnessSensitivity
+      stiffness_sensitivity(const Result &base);
+
+      /** Eqs. (10)-(11) at K: the contact solve and F_R, F_tau. */
+      ReducedStrengthSolution
+      solve(const double K);
+    };
+  } // namespace analyses
+} // namespace fdem

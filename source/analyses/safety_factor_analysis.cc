@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/analyses/safety_factor_analysis.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    template <int dim>
+    SafetyFactorAnalysis<dim>::SafetyFactorAnalysis(Model<dim> &          model,
+                                                    std::function<void()> on_solved_step)
+      : model(model)
+      , on_solved_step(std::move(on_solved_step))
+      , on_sliding_surface(model.pairs_on_sliding_surface())
+    {
+      AssertThrow(std::find(on_sliding_surface.begin(), on_sliding_surface.end(), true) !=
+                    on_sliding_surface.end(),
+                  ExcMessage("Interfaces: no interface is a sliding surface; set "
+                             "'Sliding surface = true' on one, or Safety factor/"
+                             "Compute = false."));
+    }
+
+    template <int dim>
+    ReducedStrengthSolution
+    SafetyFactorAnalysis<dim>::solve(const double K)
+    {
+      std::ostringstream what;
+      what << "safety factor step: K = " << std::setprecision(8) << K;
+      model.progress(what.str());
+      const std::vector<contact::PairStrength> strengths = model.pair_strengths(K); // eq. (10)
+      model.solve_contact(strengths, K);
+      ReducedStrengthSolution solution;
+      {
+        TimerOutput::Scope scope(model.phase_timer(), "safety factor");
+        solution = resisting_and_sliding_forces(*model.mixed_system, model.contact_outcome,
+                                                strengths, on_sliding_surface); // eq. (11)
+      }
+      if (solution.converged && on_solved_step)
+        on_solved_step();
+      return solution;
+    }
+
+    template <int dim>
+    Result
+    SafetyFactorAnalysis<dim>::run()
+    {
+      model.log << "Safety factor (eqs. 10-13):" << std::endl;
+      Result result = iterate([this](const double K) { return solve(K); },
+                                    model.parameters.safety_factor, model.log);
+      model.restore_last_static_state();
+      model.log << "Safety factor: ";
+      if (result.converged)
+        model.log << std::setprecision(8) << result.safety_factor << " (" << result.reason
+                  << "; certified: " << kind_name(result.certificate.kind) << ", "
+                  << result.certificate.reason << ")" << std::endl;
+      else
+        model.log << "not certified (" << result.certificate.reason << ")" << std::endl;
+      result.stiffness = stiffness_sensitivity(result);
+      const StiffnessSensitivity &check = result.stiffness;
+      if (check.computed && !(check.relative_change <= model.parameters.safety_factor.stiffness_check_warning))
+        {
+          std::ostringstream warning;
+          if (std::isinf(check.relative_change))
+            warning << "K could not be certified";
+          else
+            warning << "K changes by " << std::setprecision(3) << 100 * check.relative_change << " %";
+          warning << " with the moving blocks " << check.factor << " times stiffer or softer (K = "
+                  << std::setprecision(8) << check.K_stiffer << ", " << check.K_softer
+                  << "): the sliding surface is not a mechanism for rigid blocks, and K measures "
+                     "their elasticity; divide the sliding mass into blocks at the kinks of the "
+                     "surface";
+          model.warn(warning.str());
+        }
+      return result;
+    }
+
+    template <int dim>
+    StiffnessSensitivity
+    SafetyFactorAnalysis<dim>::stiffness_sensitivity(const Result &base)
+    {
+      const auto &         parameters = model.parameters.safety_factor;
+      StiffnessSensitivity check;
+      check.factor = parameters.stiffness_check_factor;
+      if (!parameters.stiffness_check)
+        check.not_computed = "Safety factor/Stiffness check = false";
+      else if (!base.converged)
+        check.not_computed = "no certified safety factor to compare with";
+      else if (!model.mixed_system->can_scale_moving_compliance())
+        check.not_computed = "the iterative mixed system does not keep the moving blocks' part of C";
+      if (!check.not_computed.empty())
+        return check;
+
+      // Each iteration starts where the first did, not from its K: off a
+      // mechanism the fixed point is not unique (every K at which all pairs
+      // can slip has K* = K), and only the same path compares alike.
+      Timer                              timer; // its share of the run: summary.json
+      const contact::ContactOutcome<dim> state = model.contact_outcome;
+      const double                       K     = model.strength_reduction;
+      const auto step_files = std::move(on_solved_step); // no VTU of these steps
+      check.computed        = true;
+      check.relative_change = 0;
+      for (const bool stiffer : {true, false})
+        {
+          const double scale = stiffer ? 1 / check.factor : check.factor;
+          model.log << "Stiffness check: the moving blocks " << check.factor << " times "
+                    << (stiffer ? "stiffer" : "softer") << std::endl;
+          model.mixed_system->set_moving_compliance_scale(scale);
+          model.forget_warm_start();
+          const Result r =
+            iterate([this](const double K) { return solve(K); }, parameters, model.log);
+          (stiffer ? check.K_stiffer : check.K_softer) = r.safety_factor;
+          check.relative_change =
+            r.converged ? std::max(check.relative_change,
+                                   std::abs(r.safety_factor - base.safety_factor) / base.safety_factor) :
+                          std::numeric_limits<double>::infinity();
+        }
+      model.mixed_system->set_moving_compliance_scale(1);
+      model.set_contact_state(state, K);
+      on_solved_step     = step_files;
+      check.wall_seconds = timer.wall_time();
+      model.log << "Stiffness check: K = " << std::setprecision(8) << check.K_stiffer << " stiffer, "
+                << check.K_softer << " softer; relative change " << std::setprecision(3)
+                << check.relative_change << std::endl;
+      return check;
+    }
+
+    template class SafetyFactorAnalysis<2>;
+    template class SafetyFactorAnalysis<3>;
+  } // namespace analyses
+} // namespace fdem

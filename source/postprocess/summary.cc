@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/postprocess/summary.h>
+
+#include <cmath>
+#include <numeric>
+
+namespace fdem
+{
+  namespace postprocess
+  {
+    namespace
+    {
+      nlohmann::json
+      number_or_null(const double x)
+      {
+        return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+      }
+
+      nlohmann::json
+      certificate_json(const analyses::Certificate &c)
+      {
+        return {{"kind", analyses::kind_name(c.kind)},
+                {"holds", c.holds},
+                {"K", number_or_null(c.K)},
+                {"K_star", number_or_null(c.K_star)},
+                {"relative_difference", number_or_null(c.relative_difference)},
+                {"relative_distance_left", number_or_null(c.relative_distance_left)},
+                {"K_failed", number_or_null(c.K_failed)},
+                {"failure", c.failure},
+                {"tolerance", c.tolerance},
+                {"reason", c.reason}};
+      }
+
+      /**
+       * "completed", or why not: "no static equilibrium: ..." (exit code 3)
+       * when every solve failed as a mechanism, else "safety factor not
+       * certified: ..." or "contact problem not solved: ..." (exit code 4).
+       */
+      template <int dim>
+      std::string
+      status(const Model<dim> &model, const analyses::Result *safety_factor)
+      {
+        const auto &outcome = model.contact_outcome;
+        if (safety_factor != nullptr)
+          {
+            if (safety_factor->converged)
+              return "completed";
+            if (safety_factor->no_equilibrium)
+              return "no static equilibrium: " + safety_factor->reason;
+            return "safety factor not certified: " + safety_factor->certificate.reason;
+          }
+        if (outcome.converged())
+          return "completed";
+        if (outcome.is_mechanism())
+          return "no static equilibrium: " + contact::result_description(outcome.result);
+        return "contact problem not solved: " + contact::result_description(outcome.result);
+      }
+    } // namespace
+
+    template <int dim>
+    nlohmann::json
+    make_summary(const Model<dim> &                                   model,
+                 const std::vector<std::vector<PairResult<dim>>> &results,
+                 const nlohmann::json &                               hertz,
+                 const std::vector<double> &                          reactions,
+                 const analyses::Result *                             safety_factor)
+    {
+    nlohmann::json summary = nlohmann::json::object();
+    summary["case"]        = model.parameters.case_name;
+    summary["dimension"]   = dim;
+    summary["fe_degree"]   = model.parameters.fe_degree;
+    summary["n_mpi_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    unsigned int n_dofs    = 0;
+    summary["blocks"]      = nlohmann::json::array();
+    for (unsigned int b = 0; b < model.blocks.size(); ++b)
+      {
+        const auto &block = *model.blocks[b];
+        n_dofs += block.dof_handler.n_dofs();
+        double volume = 0;
+        for (const auto &cell : block.triangulation.active_cell_iterators())
+          volume += cell->measure();
+        summary["blocks"].push_back({{"name", block.name},
+                                     {"volume", volume},
+                                     {"n_cells", block.triangulation.n_active_cells()},
+                                     {"n_dofs", block.dof_handler.n_dofs()},
+                                     {"free_rigid_modes", block.n_free_rigid_modes()},
+                                     {"max_support_reaction", reactions[b]},
+                                     {"max_load", block.load_vector.linfty_norm()}});
+      }
+    summary["n_dofs"]     = n_dofs;
+    summary["interfaces"] = nlohmann::json::array();
+    for (unsigned int i = 0; i < model.interfaces.size(); ++i)
+      {
+        unsigned int n_status[3] = {0, 0, 0};
+        double max_pressure = 0, normal_force = 0, tangential_force = 0;
+        Tensor<1, dim> tangential_resultant;
+        for (unsigned int k = 0; k < results[i].size(); ++k)
+          {
+            const auto &r = results[i][k];
+            ++n_status[static_cast<int>(r.status)];
+            max_pressure = std::max(max_pressure, r.normal_pressure);
+            normal_force += r.normal_force;
+            tangential_force += r.tangential_force[0];
+            for (unsigned int t = 0; t + 1 < dim; ++t)
+              tangential_resultant += r.tangential_force[t] * model.interfaces[i].pairs[k].frame[t + 1];
+          }
+        // In 3D the pairs' tangents differ: the magnitude of the resultant.
+        if (dim == 3)
+          tangential_force = tangential_resultant.norm();
+        const double extent = postprocess::contact_extent(results[i]);
+        summary["interfaces"].push_back(
+          {{"name", model.interfaces[i].name},
+           {"block_I", model.blocks[model.interfaces[i].block_I]->name},
+           {"block_J", model.blocks[model.interfaces[i].block_J]->name},
+           {"n_pairs", model.interfaces[i].pairs.size()},
+           {"area", std::accumulate(results[i].begin(), results[i].end(), 0.0,
+                                    [](const double a, const auto &r) { return a + r.area; }) +
+                      std::accumulate(model.interfaces[i].shared_nodes.begin(),
+                                      model.interfaces[i].shared_nodes.end(), 0.0,
+                                      [](const double a, const auto &n) { return a + n.area; })},
+           {"n_unpaired_nodes", model.interfaces[i].n_unpaired_I + model.interfaces[i].n_unpaired_J},
+           {"n_nodes_paired_in_an_earlier_interface", model.interfaces[i].n_shared_nodes},
+           {"n_stick", n_status[0]},
+           {"n_slip", n_status[1]},
+           {"n_open", n_status[2]},
+           {"max_normal_pressure", max_pressure},
+           {"contact_extent", extent},
+           {"total_normal_force", normal_force},
+           {"total_tangential_force", tangential_force}});
+      }
+    if (!hertz.empty())
+      summary["hertz"] = hertz;
+    summary["model.strength_reduction"] = model.strength_reduction;
+    if (safety_factor != nullptr)
+      {
+        const auto &sf = *safety_factor;
+        summary["safety_factor"]         = number_or_null(sf.safety_factor);
+        summary["converged"]             = sf.converged;
+        summary["safety_factor_reason"]  = sf.reason;
+        summary["safety_factor_bracket"] = {number_or_null(sf.bracket_low),
+                                            number_or_null(sf.bracket_high)};
+        nlohmann::json steps = nlohmann::json::array();
+        for (const auto &step : sf.steps)
+          steps.push_back({{"K", step.K},
+                           {"K_star", number_or_null(step.K_star)},
+                           {"K_next", step.K_next},
+                           {"F_R", step.solution.resisting_force},
+                           {"F_tau", step.solution.sliding_force},
+                           {"n_stick", step.solution.n_stick},
+                           {"n_slip", step.solution.n_slip},
+                           {"n_open", step.solution.n_open},
+                           {"n_contact_iterations", step.solution.n_contact_iterations},
+                           {"contact_result", step.solution.result}});
+        summary["iterations"] = steps;
+        summary["certificate"] = certificate_json(sf.certificate);
+        const auto &check      = sf.stiffness;
+        summary["stiffness_sensitivity"] = {{"computed", check.computed},
+                                            {"not_computed", check.not_computed},
+                                            {"factor", check.factor},
+                                            {"wall_seconds", check.wall_seconds},
+                                            {"K_stiffer", number_or_null(check.K_stiffer)},
+                                            {"K_softer", number_or_null(check.K_softer)},
+                                            {"relative_change",
+                                             check.computed && std::isinf(check.relative_change) ?
+                                               nlohmann::json("not certified") :
+                                               number_or_null(check.relative_change)}};
+      }
+    summary["rigid_motions"] = std::vector<double>(model.contact_outcome.solution.rigid_motions.begin(),
+                                                   model.contact_outcome.solution.rigid_motions.end());
+    nlohmann::json iterations = nlohmann::json::array();
+    for (const auto &record : model.contact_outcome.iterations)
+      iterations.push_back({{"n_stick", record.n_stick},
+                            {"n_slip", record.n_slip},
+                            {"n_open", record.n_open},
+                            {"n_at_cutoff", record.n_at_cutoff},
+                            {"n_changes", record.n_changes},
+                            {"reciprocal_condition", record.reciprocal_condition},
+                            {"factorized", record.factorized}});
+    summary["contact"] = {{"result", contact::result_description(model.contact_outcome.result)},
+                          {"converged", model.contact_outcome.converged()},
+                          {"n_solves", model.contact_outcome.iterations.size()},
+                          {"n_cycles_broken", model.contact_outcome.n_cycles_broken},
+                          {"max_slip_angle_degrees", model.contact_outcome.max_slip_angle},
+                          {"reciprocal_condition",
+                           model.contact_outcome.iterations.empty() ?
+                             1.0 :
+                             model.contact_outcome.iterations.back().reciprocal_condition},
+                          {"n_factorizations",
+                           model.mixed_system ? model.mixed_system->dense_solver().n_factorizations : 0},
+                          {"n_reused_solves",
+                           model.mixed_system ? model.mixed_system->dense_solver().n_reused_solves : 0},
+                          {"mixed_system", model.parameters.solver.mixed_system},
+                          {"n_gmres_iterations",
+                           model.mixed_system ? model.mixed_system->n_krylov_iterations : 0},
+                          {"n_flexibility_products",
+                           model.mixed_system ? model.mixed_system->n_flexibility_products : 0},
+                          {"iterations", iterations}};
+    summary["warnings"] = model.warnings;
+    summary["status"]   = status(model, safety_factor);
+    return summary;
+    }
+
+    template nlohmann::json
+    make_summary(const Model<2> &, const std::vector<std::vector<PairResult<2>>> &,
+                 const nlohmann::json &, const std::vector<double> &, const analyses::Result *);
+    template nlohmann::json
+    make_summary(const Model<3> &, const std::vector<std::vector<PairResult<3>>> &,
+                 const nlohmann::json &, const std::vector<double> &, const analyses::Result *);
+  } // namespace postprocess
+} // namespace fdem
