@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/blocks/surface_loads.h>
+#include <fdem/checks/layout_checks.h>
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/block_output.h>
@@ -117,7 +118,7 @@ namespace fdem
   {
     TimerOutput::Scope scope(timer, "geometry");
     // Every rank makes the same mesh; rank 0 writes it.
-    const std::string  msh = writes_files ? parameters.output_directory() + "/mesh.msh" : "";
+    const std::string  msh = writes_files && !validating ? parameters.output_directory() + "/mesh.msh" : "";
     mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh);
 
     // Every block of the mesh needs a material, and every name a block.
@@ -138,6 +139,7 @@ namespace fdem
       face_group(name, "Interfaces/Names");
     log << "Geometry: " << mesh.source << ", " << mesh.cells.size() << " cells, "
         << mesh.block_names.size() << " blocks" << std::endl;
+    checks::report(checks::check_mesh_layout(mesh, parameters.interface_names, parameters.boundary_names), warnings, log);
   }
 
   template <int dim>
@@ -296,6 +298,8 @@ namespace fdem
                     ExcMessage("Block '" + blocks[b]->name +
                                "' is not held: its constraints leave rigid "
                                "motions free and no interface touches it."));
+    checks::report(checks::pair_triple_points_once(interfaces, blocks), log);
+    checks::report(checks::check_interfaces(mesh, blocks, interfaces, parameters.interfaces), warnings, log);
   }
 
   template <int dim>
@@ -616,6 +620,7 @@ namespace fdem
     if (!hertz.empty())
       summary["hertz"] = hertz;
     summary["strength_reduction"] = strength_reduction;
+    summary["warnings"]           = warnings;
     if (parameters.safety_factor.compute)
       {
         const auto &sf = safety_factor_result;
@@ -741,6 +746,33 @@ namespace fdem
             {"max_pressure", q_max},
             {"contact_half_width_error", a / a_exact - 1},
             {"max_pressure_error", q_max / q_exact - 1}};
+  }
+
+  template <int dim>
+  void
+  Model<dim>::validate()
+  {
+    validating = true;
+    make_geometry();
+    setup_blocks();
+    for (const auto &block : blocks)
+      block->assemble(parameters.loads);
+    build_interfaces();
+  }
+
+  std::vector<std::string>
+  validate_case(const std::string &prm_file, std::ostream &log)
+  {
+    const parameters::Parameters parameters = parameters::read_parameters(prm_file);
+    if (parameters.dimension == 2)
+      {
+        Model<2> model(parameters, "", log);
+        model.validate();
+        return model.warnings;
+      }
+    Model<3> model(parameters, "", log);
+    model.validate();
+    return model.warnings;
   }
 
   nlohmann::json

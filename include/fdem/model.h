@@ -43,6 +43,14 @@ namespace fdem
     void
     run();
 
+    /**
+     * The checks of --validate: the mesh, the blocks (with their loads,
+     * not factorised) and the node pairs, with the layout checks of
+     * doc/layout_checks.md; writes nothing.
+     */
+    void
+    validate();
+
     /** Mesh from Gmsh (a file or a generator): blocks, face groups. */
     void
     make_geometry();
@@ -102,8 +110,12 @@ namespace fdem
     safety_factor::Result                               safety_factor_result;
     std::vector<Vector<double>>                         displacements;
     nlohmann::json                                      summary;
+    /** Judgements of the layout checks (doc/layout_checks.md), for summary.json. */
+    std::vector<std::string>                            warnings;
 
   private:
+    /** Set by validate(): make_geometry() writes no mesh.msh. */
+    bool validating = false;
     /** The last contact solution that converged, and its K. */
     contact::ContactOutcome<dim> last_converged;
     double                       last_converged_K = 1;
@@ -164,4 +176,12 @@ namespace fdem
    */
   nlohmann::json
   run_case(const std::string &prm_file, std::ostream &log);
+
+  /**
+   * Reads the .prm file and makes the model up to its node pairs, with the
+   * layout checks (Model::validate()); throws at the first error, returns
+   * the warnings.
+   */
+  std::vector<std::string>
+  validate_case(const std::string &prm_file, std::ostream &log);
 } // namespace fdem
