@@ -239,7 +239,9 @@ namespace fdem
                      const std::vector<contact::Interface<dim>> &                   interfaces,
                      const std::map<std::string, parameters::InterfaceParameters> & parameters)
     {
-      std::vector<std::string> warnings;
+      // The pairs' count and support first: an interface of one pair is
+      // better told so than that its sides overlap little.
+      std::vector<std::string> warnings = internal::check_support(blocks, interfaces, parameters);
       const FaceTable<dim>     table(mesh);
       for (const auto &interface : interfaces)
         {
@@ -281,8 +283,6 @@ namespace fdem
                                number_text(100 * paired / shorter) +
                                " % of its shorter side (" + measures + ").");
         }
-      const auto support = internal::check_support(blocks, interfaces, parameters);
-      warnings.insert(warnings.end(), support.begin(), support.end());
       return warnings;
     }
 

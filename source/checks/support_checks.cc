@@ -249,11 +249,12 @@ namespace fdem
                   }
               }
             AssertThrow(n_independent >= dim,
-                        ExcMessage("Interfaces/" + interface.name + ": its " +
+                        ExcMessage("Interfaces/" + interface.name + ": its node pairs (" +
                                    std::to_string(places.size()) +
-                                   " node pairs cannot carry a moment; an interface needs " +
+                                   ") cannot carry a moment; an interface needs at least " +
                                    (dim == 2 ? "2 pairs" : "3 pairs not on one line") +
-                                   " at least: refine the mesh along it."));
+                                   ": check that its sides meet over more than a point, "
+                                   "or refine the mesh along it."));
           }
 
         // A free block held only by frictionless interfaces: its load on the

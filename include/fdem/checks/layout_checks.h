@@ -63,13 +63,13 @@ namespace fdem
 
     /**
      * Checks of the interfaces once their node pairs are made:
+     * - an interface needs pairs enough to carry a moment: 2 in 2D, 3 not on
+     *   one line in 3D; otherwise throws;
      * - its pairs must cover at least half of the shorter of its two sides
      *   (the face group's faces on each block): otherwise the sides touch
      *   only in places (e.g. at their end points) and the pairs do not stand
      *   for the contact that was meant: throws with the measures; between
      *   half and 90 % a warning;
-     * - an interface needs pairs enough to carry a moment: 2 in 2D, 3 not on
-     *   one line in 3D; otherwise throws;
      * - a block with free rigid modes whose interfaces are all frictionless
      *   must be able to balance its load omega^T F with normal forces alone
      *   (compressive ones, or of either sign where a tensile strength is
