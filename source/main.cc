@@ -17,7 +17,8 @@ namespace
     "  sliding surface by the mixed FEM-DEM method (Liu et al. 2012).\n"
     "  --print-parameters  print every parameter (for case.prm, or the\n"
     "                      default case) with its default and help text\n"
-    "  --validate          read and check case.prm, then stop\n"
+    "  --validate          read and check case.prm and the model's layout\n"
+    "                      (mesh, blocks, node pairs), then stop\n"
     "  --help              this text\n";
 
   /**
@@ -94,9 +95,16 @@ main(int argc, char *argv[])
         }
       if (validate)
         {
-          fdem::parameters::read_parameters(prm_file);
+          // The parameters, and the layout: mesh, blocks and node pairs
+          // (doc/layout_checks.md), without any solve.
+          std::ostream nowhere(nullptr);
+          const auto   warnings = fdem::validate_case(prm_file, nowhere);
           if (host)
-            std::cout << prm_file << ": valid." << std::endl;
+            {
+              for (const std::string &warning : warnings)
+                std::cout << "warning: " << warning << std::endl;
+              std::cout << prm_file << ": valid." << std::endl;
+            }
           return 0;
         }
       std::ostream         nowhere(nullptr);

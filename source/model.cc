@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/blocks/surface_loads.h>
+#include <fdem/checks/layout_checks.h>
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/block_output.h>
@@ -131,7 +132,7 @@ namespace fdem
   {
     TimerOutput::Scope scope(timer, "geometry");
     // Every rank makes the same mesh; rank 0 writes it.
-    const std::string  msh = writes_files ? parameters.output_directory() + "/mesh.msh" : "";
+    const std::string  msh = writes_files && !validating ? parameters.output_directory() + "/mesh.msh" : "";
     mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh);
 
     // Every block of the mesh needs a material, and every name a block.
@@ -152,6 +153,7 @@ namespace fdem
       face_group(name, "Interfaces/Names");
     log << "Geometry: " << mesh.source << ", " << mesh.cells.size() << " cells, "
         << mesh.block_names.size() << " blocks" << std::endl;
+    checks::report(checks::check_mesh_layout(mesh, parameters.interface_names, parameters.boundary_names), warnings, log);
   }
 
   template <int dim>
@@ -294,6 +296,8 @@ namespace fdem
                     ExcMessage("Block '" + blocks[b]->name +
                                "' is not held: its constraints leave rigid "
                                "motions free and no interface touches it."));
+    checks::report(checks::pair_triple_points_once(interfaces, blocks), log);
+    checks::report(checks::check_interfaces(mesh, blocks, interfaces, parameters.interfaces), warnings, log);
   }
 
   template <int dim>

@@ -43,6 +43,14 @@ namespace fdem
     void
     run();
 
+    /**
+     * The checks of --validate: the mesh, the blocks (with their loads,
+     * not factorised) and the node pairs, with the layout checks of
+     * doc/layout_checks.md; writes nothing.
+     */
+    void
+    validate();
+
     /** Mesh from Gmsh (a file or a generator): blocks, face groups. */
     void
     make_geometry();
@@ -107,7 +115,10 @@ namespace fdem
     void
     warn(const std::string &warning);
 
-    /** The warnings of the run so far. */
+    /**
+     * The warnings of the run so far: of the layout checks
+     * (doc/layout_checks.md) and of the analyses, for summary.json.
+     */
     std::vector<std::string> warnings;
 
     /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
@@ -135,6 +146,8 @@ namespace fdem
     nlohmann::json                                      summary;
 
   private:
+    /** Set by validate(): make_geometry() writes no mesh.msh. */
+    bool validating = false;
     /** The last contact solution that converged, and its K. */
     contact::ContactOutcome<dim> last_converged;
     double                       last_converged_K = 1;
@@ -193,4 +206,12 @@ namespace fdem
    */
   nlohmann::json
   run_case(const std::string &prm_file, std::ostream &log);
+
+  /**
+   * Reads the .prm file and makes the model up to its node pairs, with the
+   * layout checks (Model::validate()); throws at the first error, returns
+   * the warnings.
+   */
+  std::vector<std::string>
+  validate_case(const std::string &prm_file, std::ostream &log);
 } // namespace fdem

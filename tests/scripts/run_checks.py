@@ -38,6 +38,13 @@
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
                                          exit, and no summary.json
+  run_checks.py bad-layout EXE BAD.prm   as bad-input, and `--validate` must
+                                         fail with the same line
+  run_checks.py triple-point EXE CASE.prm
+                                         blocks meeting at a point: the run
+                                         completes, the one pair that closes
+                                         the loop there is left out (log), and
+                                         the last solved K* is within 1e-3 of K
 
 Placeholders in a .prm: @PRM_DIR@ (the project's prm/ folder) and @DATA_DIR@
 (the .prm file's own data/ folder) become absolute paths; the case runs in a
@@ -153,6 +160,50 @@ def check_bad_input(exe, prm):
         assert expect in lines[0], f"'{expect}' not in the message"
         for root, _, files in os.walk(workdir):
             assert "summary.json" not in files, "a summary.json was written"
+
+
+def check_bad_layout(exe, prm):
+    check_bad_input(exe, prm)
+    with tempfile.TemporaryDirectory() as workdir:
+        full = run(exe, prm, workdir)
+    with tempfile.TemporaryDirectory() as workdir:
+        copy = prepare(prm, workdir)
+        before = set(os.listdir(workdir))
+        result = subprocess.run([exe, "--validate", copy], cwd=workdir,
+                                capture_output=True, text=True, timeout=600)
+        print("--validate stderr:", result.stderr.strip())
+        assert result.returncode == 1, f"--validate exit {result.returncode}, expected 1"
+        assert result.stderr == full.stderr, "--validate and the run say different things"
+        assert set(os.listdir(workdir)) == before, "--validate wrote files"
+
+
+def check_triple_point(exe, prm):
+    import re
+    with tempfile.TemporaryDirectory() as workdir:
+        result = subprocess.run([exe, "--validate", prepare(prm, workdir)], cwd=workdir,
+                                capture_output=True, text=True, timeout=600)
+        assert result.returncode == 0 and result.stdout.strip().endswith("valid."), result
+        result = run(exe, prm, workdir)
+        assert result.returncode == 0, result.stderr
+        left_out = [l for l in result.stdout.splitlines() if "is left out" in l]
+        print("\n".join(left_out))
+        assert len(left_out) == 1, f"{len(left_out)} pairs left out, expected 1"
+        made = {m.group(1): int(m.group(2)) for m in
+                re.finditer(r"interface '([^']*)': (\d+) node pairs", result.stdout)}
+        case = os.path.splitext(os.path.basename(prm))[0]
+        summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
+        assert summary["status"] == "completed" and summary["converged"], summary["status"]
+        assert summary["warnings"] == [], summary["warnings"]
+        name = re.match(r"\s*interface '([^']*)'", left_out[0]).group(1)
+        pairs = {i["name"]: i["n_pairs"] for i in summary["interfaces"]}
+        for interface, n in made.items():
+            assert pairs[interface] == n - (interface == name), (interface, n, pairs)
+        K = summary["safety_factor"]
+        solved = [s for s in summary["iterations"] if s["K"] <= K and s["F_tau"] > 0]
+        step = max(solved, key=lambda s: s["K"])
+        K_star = step["F_R"] / step["F_tau"] * step["K"]
+        print(f"K = {K}, last solved K = {step['K']}, its K* = {K_star}")
+        assert abs(K_star - step["K"]) < 1e-3 * K and abs(step["K"] - K) < 1e-3 * K
 
 
 def check_no_equilibrium(exe, prm):
@@ -345,6 +396,7 @@ if __name__ == "__main__":
         parameters_doc(exe, path, "--write" in sys.argv)
     else:
         {"vtu": check_vtu, "bad-input": check_bad_input,
+         "bad-layout": check_bad_layout, "triple-point": check_triple_point,
          "no-equilibrium": check_no_equilibrium,
          "deterministic": check_deterministic,
          "wedge": check_wedge, "mpi": check_mpi,

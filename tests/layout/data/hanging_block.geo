@@ -1,0 +1,17 @@
+// A block beside a wall, touching nothing else: the interface along the
+// wall is vertical, so its normal forces cannot hold the block's weight.
+h = 0.5;
+Point(1) = {0, 0, 0, h}; Point(2) = {20, 0, 0, h}; Point(3) = {20, 2, 0, h};
+Point(4) = {5, 2, 0, h}; Point(5) = {5, 4, 0, h}; Point(6) = {5, 10, 0, h};
+Point(7) = {0, 10, 0, h}; Point(8) = {10, 4, 0, h}; Point(9) = {10, 10, 0, h};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5};
+Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 1};
+Line(8) = {5, 8}; Line(9) = {8, 9}; Line(10) = {9, 6};
+Curve Loop(1) = {1, 2, 3, 4, 5, 6, 7}; Plane Surface(1) = {1};
+Curve Loop(2) = {8, 9, 10, -5}; Plane Surface(2) = {2};
+Physical Surface("base") = {1};
+Physical Surface("block") = {2};
+Physical Curve("contact") = {5};
+Physical Curve("bottom") = {1};
+Physical Curve("sides") = {2, 7};
+Mesh.Algorithm = 6; Mesh.RecombineAll = 1; Mesh.SubdivisionAlgorithm = 1;
