@@ -39,7 +39,8 @@ namespace fdem
       const double   angle = geometry.rotation_angle * numbers::PI / 180;
       Tensor<2, dim> rotation;
       if constexpr (dim == 2)
-        rotation = Physics::Transformations::Rotations::rotation_matrix_2d(angle);
+        rotation =
+          Physics::Transformations::Rotations::rotation_matrix_2d(angle);
       else
         rotation = Physics::Transformations::Rotations::rotation_matrix_3d(
           geometry.rotation_axis / geometry.rotation_axis.norm(), angle);

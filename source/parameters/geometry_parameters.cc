@@ -116,9 +116,11 @@ namespace fdem
         case_input::require(
           source != Source::mesh_file || !mesh_file.empty(),
           "Geometry/Mesh file: must be given when Source is 'mesh file'.");
-        case_input::require(scale_factor > 0, "Geometry/Scale factor: must be positive.");
-        case_input::require(rotation_axis.norm() > 0,
-                "Geometry/Rotation axis: must not be the zero vector.");
+        case_input::require(scale_factor > 0,
+                            "Geometry/Scale factor: must be positive.");
+        case_input::require(
+          rotation_axis.norm() > 0,
+          "Geometry/Rotation axis: must not be the zero vector.");
         rotation_axis /= rotation_axis.norm();
 
         slope.parse_parameters(prm);

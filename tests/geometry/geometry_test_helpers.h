@@ -9,8 +9,8 @@
 #include <fdem/geometry/block_mesh.h>
 #include <fdem/geometry/cases/block_on_plane.h>
 #include <fdem/geometry/cases/hertz.h>
-#include <fdem/geometry/cases/slope.h>
 #include <fdem/geometry/cases/hertz_sphere.h>
+#include <fdem/geometry/cases/slope.h>
 #include <fdem/geometry/cases/wedge.h>
 #include <fdem/geometry/gmsh_mesh.h>
 #include <fdem/geometry/make_mesh.h>

@@ -65,6 +65,60 @@ TEST(InclinedBlock, StructuredMeshOnThePlane)
 
 
 
+// With Element shape = triangle, the 2D case splits each quadrilateral of
+// the same structured grid into two triangles: the same vertices and face
+// groups, twice the cells, each of half the area, and the sliding surface
+// an edge of a triangle on both sides.
+TEST(InclinedBlock, TrianglesSplitEachQuadrilateralInTwo)
+{
+  const Parameters::InclinedBlock quadrilaterals = parse("").inclined_block;
+  Parameters::InclinedBlock       triangles      = quadrilaterals;
+  triangles.element_shape = Parameters::ElementShape::simplex;
+  const auto quad_mesh    = geometry::make_block_on_plane_mesh(quadrilaterals);
+  const auto mesh         = geometry::make_block_on_plane_mesh(triangles);
+
+  EXPECT_EQ(mesh.vertices, quad_mesh.vertices);
+  EXPECT_EQ(mesh.face_group_names, quad_mesh.face_group_names);
+  EXPECT_EQ(mesh.faces.size(), quad_mesh.faces.size());
+  ASSERT_EQ(mesh.cells.size(), 2 * quad_mesh.cells.size());
+  for (const auto &cell : mesh.cells)
+    {
+      ASSERT_EQ(cell.vertices.size(), 3u);
+      EXPECT_NEAR(measure(mesh, cell), 0.5, 1e-10); // 1 m x 1 m halved
+    }
+  EXPECT_NEAR(block_area(mesh, 0), 50, 1e-9);
+  EXPECT_NEAR(block_area(mesh, 1), 100, 1e-9);
+
+  // Each face of the sliding surface is an edge of a triangle of the block
+  // and of one of the foundation.
+  const auto has_edge = [&](const CellData<1> &face, const unsigned int block) {
+    for (const auto &cell : mesh.cells)
+      if (cell.material_id == block &&
+          std::count(cell.vertices.begin(),
+                     cell.vertices.end(),
+                     face.vertices[0]) == 1 &&
+          std::count(cell.vertices.begin(),
+                     cell.vertices.end(),
+                     face.vertices[1]) == 1)
+        return true;
+    return false;
+  };
+  const auto sliding = faces_of(mesh, "sliding surface");
+  EXPECT_EQ(sliding.size(), 10u);
+  for (const auto &face : sliding)
+    {
+      EXPECT_TRUE(has_edge(face, 0));
+      EXPECT_TRUE(has_edge(face, 1));
+    }
+
+  Triangulation<2> triangulation;
+  EXPECT_NO_THROW(triangulation.create_triangulation(mesh.vertices,
+                                                     mesh.cells,
+                                                     SubCellData()));
+}
+
+
+
 TEST(BlockOnPlane, StructuredMeshOnTheRotatedPlane)
 {
   const Parameters geometry             = parse("set Source = block on plane");

@@ -14,7 +14,7 @@ namespace
   /** The x coordinates of the listed vertices, sorted. */
   std::vector<double>
   sorted_x_coordinates(const fdem::geometry::MeshDescription<2> &mesh,
-                       const std::set<unsigned int> &            vertices)
+                       const std::set<unsigned int>             &vertices)
   {
     std::vector<double> x;
     for (const unsigned int v : vertices)
@@ -23,24 +23,24 @@ namespace
     return x;
   }
 
-const std::string full_model = "subsection Hertz\n set Full model = true\n";
+  const std::string full_model = "subsection Hertz\n set Full model = true\n";
 
-/** Minimum and maximum of coordinate @p d over the vertices of @p group. */
-std::pair<double, double>
-coordinate_range(const MeshDescription<2> &mesh,
-                 const std::string        &group,
-                 const unsigned int        d)
-{
-  std::pair<double, double> range(std::numeric_limits<double>::max(),
-                                  std::numeric_limits<double>::lowest());
-  for (const auto &face : faces_of(mesh, group))
-    for (const unsigned int v : face.vertices)
-      {
-        range.first  = std::min(range.first, mesh.vertices[v][d]);
-        range.second = std::max(range.second, mesh.vertices[v][d]);
-      }
-  return range;
-}
+  /** Minimum and maximum of coordinate @p d over the vertices of @p group. */
+  std::pair<double, double>
+  coordinate_range(const MeshDescription<2> &mesh,
+                   const std::string        &group,
+                   const unsigned int        d)
+  {
+    std::pair<double, double> range(std::numeric_limits<double>::max(),
+                                    std::numeric_limits<double>::lowest());
+    for (const auto &face : faces_of(mesh, group))
+      for (const unsigned int v : face.vertices)
+        {
+          range.first  = std::min(range.first, mesh.vertices[v][d]);
+          range.second = std::max(range.second, mesh.vertices[v][d]);
+        }
+    return range;
+  }
 } // namespace
 
 
@@ -240,8 +240,10 @@ TEST(Hertz, FullModelContactZoneVerticesMatchInX)
       ASSERT_EQ(arc_vertices.size(), 2u * n + 1);
       ASSERT_EQ(top_vertices.size(), 2u * n + 1);
 
-      const std::vector<double> arc_x = sorted_x_coordinates(mesh, arc_vertices),
-                                top_x = sorted_x_coordinates(mesh, top_vertices);
+      const std::vector<double> arc_x =
+                                  sorted_x_coordinates(mesh, arc_vertices),
+                                top_x =
+                                  sorted_x_coordinates(mesh, top_vertices);
       for (int i = -n; i <= n; ++i)
         {
           EXPECT_NEAR(arc_x[i + n], top_x[i + n], 1e-12 * lc);

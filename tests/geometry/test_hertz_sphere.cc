@@ -10,8 +10,8 @@ using namespace geometry_test;
 
 TEST(HertzSphere, QuarterModelWithTheSphereAboveTheFoundationNodes)
 {
-  const Parameters geometry = parse("set Source = hertz sphere");
-  const Parameters::HertzSphere &p = geometry.hertz_sphere;
+  const Parameters               geometry = parse("set Source = hertz sphere");
+  const Parameters::HertzSphere &p        = geometry.hertz_sphere;
   EXPECT_EQ(p.radius, 100);
   EXPECT_EQ(p.n_contact_zone_elements, 6u);
   const auto mesh = geometry::make_mesh<3>(geometry, "", "");
@@ -33,8 +33,8 @@ TEST(HertzSphere, QuarterModelWithTheSphereAboveTheFoundationNodes)
   EXPECT_NEAR(block_area(mesh, 1), W * W * D, 1e-9 * W * W * D);
 
   // Every vertex of the sphere lies in the ball, in [0, S]^2, below H.
-  const double   R = p.radius, S = p.cap_half_width, H = p.load_height;
-  const Point<3> centre(0, 0, R);
+  const double           R = p.radius, S = p.cap_half_width, H = p.load_height;
+  const Point<3>         centre(0, 0, R);
   std::set<unsigned int> sphere_vertices;
   for (const auto &cell : mesh.cells)
     if (cell.material_id == 0)
@@ -51,7 +51,7 @@ TEST(HertzSphere, QuarterModelWithTheSphereAboveTheFoundationNodes)
     }
   // Its volume is that of the truncated ball, up to the chords of the
   // spherical surface (sag h^2/(8R) over faces of size h <= 25: < 1 %).
-  double exact = 0;
+  double             exact        = 0;
   const unsigned int n_quadrature = 400;
   for (unsigned int i = 0; i < n_quadrature; ++i)
     for (unsigned int j = 0; j < n_quadrature; ++j)
@@ -65,8 +65,8 @@ TEST(HertzSphere, QuarterModelWithTheSphereAboveTheFoundationNodes)
 
   // The contact surface: n x n faces on each side, the sphere's vertices on
   // the sphere straight above the foundation's, on the grid (i, j) Lc/n.
-  const unsigned int n  = p.n_contact_zone_elements;
-  const double       lc = p.contact_zone_width;
+  const unsigned int n       = p.n_contact_zone_elements;
+  const double       lc      = p.contact_zone_width;
   const auto         contact = faces_of(mesh, "contact surface");
   EXPECT_EQ(contact.size(), 2u * n * n);
   std::set<std::pair<long, long>> on_sphere, on_foundation;
@@ -100,9 +100,13 @@ TEST(HertzSphere, QuarterModelWithTheSphereAboveTheFoundationNodes)
   double longest = 0;
   for (const auto &cell : mesh.cells)
     for (unsigned int l = 0; l < GeometryInfo<3>::lines_per_cell; ++l)
-      longest = std::max(longest,
-                         mesh.vertices[cell.vertices[GeometryInfo<3>::line_to_cell_vertices(l, 0)]]
-                           .distance(mesh.vertices[cell.vertices[GeometryInfo<3>::line_to_cell_vertices(l, 1)]]));
+      longest = std::max(
+        longest,
+        mesh
+          .vertices[cell.vertices[GeometryInfo<3>::line_to_cell_vertices(l, 0)]]
+          .distance(
+            mesh.vertices
+              [cell.vertices[GeometryInfo<3>::line_to_cell_vertices(l, 1)]]));
   EXPECT_LE(longest, 1.7 * p.mesh_size);
 }
 
@@ -110,7 +114,8 @@ TEST(HertzSphere, QuarterModelWithTheSphereAboveTheFoundationNodes)
 
 TEST(HertzSphere, BadInputs)
 {
-  const std::string prefix = "set Source = hertz sphere\nsubsection Hertz sphere\n";
+  const std::string prefix =
+    "set Source = hertz sphere\nsubsection Hertz sphere\n";
   expect_error([&] { parse(prefix + " set Contact zone width = 60\nend"); },
                "Geometry/Hertz sphere/Contact zone width: must be positive "
                "and smaller than Cap half width.");

@@ -348,8 +348,7 @@ TEST(Simplices, WedgeOfTetrahedra)
       ASSERT_EQ(cell.vertices.size(), 4u);
       EXPECT_GT(measure(mesh, cell), 0);
     }
-  const double exact =
-    tetrahedron_volume(exact_wedge_corners(geometry.wedge));
+  const double exact = tetrahedron_volume(exact_wedge_corners(geometry.wedge));
   EXPECT_NEAR(block_area(mesh, 0), exact, 1e-9 * exact);
 
   using Triangle = std::array<unsigned int, 3>;
@@ -376,7 +375,8 @@ TEST(Simplices, WedgeOfTetrahedra)
       for (const auto &face : faces)
         {
           ASSERT_EQ(face.vertices.size(), 3u);
-          Triangle key = {{face.vertices[0], face.vertices[1], face.vertices[2]}};
+          Triangle key = {
+            {face.vertices[0], face.vertices[1], face.vertices[2]}};
           std::sort(key.begin(), key.end());
           EXPECT_TRUE(block_faces[0].count(key)) << group;
           EXPECT_TRUE(block_faces[1].count(key)) << group;

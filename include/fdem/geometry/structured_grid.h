@@ -41,9 +41,9 @@ namespace fdem
       // not deduced: dim comes from the mesh
       const typename std::common_type<std::array<unsigned int, dim>>::type
                               &n_cells,
-                        const Index                         &index,
-                        const types::material_id             block,
-                        const GroupOf                       &group_of)
+      const Index             &index,
+      const types::material_id block,
+      const GroupOf           &group_of)
     {
       unsigned int n_grid_cells = 1;
       for (const unsigned int n : n_cells)

@@ -23,46 +23,44 @@ namespace fdem
       void
       declare_parameters_2d(ParameterHandler &prm)
       {
-      prm.declare_entry("Inclination",
-                        "30",
-                        Patterns::Double(0, 89),
-                        "Angle of the plane with the x axis, rising to "
-                        "the right (degrees).");
-      prm.declare_entry("Block length",
-                        "10",
-                        Patterns::Double(0),
-                        "Length of the block along the plane (m).");
-      prm.declare_entry("Block height",
-                        "5",
-                        Patterns::Double(0),
-                        "Height of the block normal to the plane (m).");
-      prm.declare_entry("Foundation thickness",
-                        "5",
-                        Patterns::Double(0),
-                        "Thickness of the foundation slab normal to the "
-                        "plane (m).");
-      prm.declare_entry("Foundation overhang",
-                        "5",
-                        Patterns::Double(0),
-                        "Length the foundation extends beyond each end "
-                        "of the block (m).");
-      prm.declare_entry(
-        "Elements along length",
-        "10",
-        Patterns::Integer(1),
-        "Number of elements of the block along the "
-        "plane; the foundation gets elements of that size.");
-      prm.declare_entry(
-        "Elements across height",
-        "5",
-        Patterns::Integer(1),
-        "Number of elements of the block normal to the "
-        "plane; the foundation gets elements of that size.");
-      case_input::declare_element_shape_2d(
-        prm,
-        "quadrilaterals (FE_Q elements), or "
-        "triangles (FE_SimplexP), two per quadrilateral of the same "
-        "structured grid.");
+        prm.declare_entry("Inclination",
+                          "30",
+                          Patterns::Double(0, 89),
+                          "Angle of the plane with the x axis, rising to "
+                          "the right (degrees).");
+        prm.declare_entry("Block length",
+                          "10",
+                          Patterns::Double(0),
+                          "Length of the block along the plane (m).");
+        prm.declare_entry("Block height",
+                          "5",
+                          Patterns::Double(0),
+                          "Height of the block normal to the plane (m).");
+        prm.declare_entry("Foundation thickness",
+                          "5",
+                          Patterns::Double(0),
+                          "Thickness of the foundation slab normal to the "
+                          "plane (m).");
+        prm.declare_entry("Foundation overhang",
+                          "5",
+                          Patterns::Double(0),
+                          "Length the foundation extends beyond each end "
+                          "of the block (m).");
+        prm.declare_entry("Elements along length",
+                          "10",
+                          Patterns::Integer(1),
+                          "Number of elements of the block along the "
+                          "plane; the foundation gets elements of that size.");
+        prm.declare_entry("Elements across height",
+                          "5",
+                          Patterns::Integer(1),
+                          "Number of elements of the block normal to the "
+                          "plane; the foundation gets elements of that size.");
+        case_input::declare_element_shape_2d(
+          prm,
+          "quadrilaterals (FE_Q elements), or "
+          "triangles (FE_SimplexP), two per quadrilateral of the same "
+          "structured grid.");
       }
 
 
@@ -71,61 +69,61 @@ namespace fdem
       void
       declare_parameters_3d(ParameterHandler &prm)
       {
-      prm.declare_entry(
-        "Dip",
-        "30",
-        Patterns::Double(0, 90),
-        "Dip psi of the plane, below the horizontal (degrees). 3D, x = "
-        "east, y = north, z = up: the plane passes through the origin "
-        "with the upward unit normal n = (sin psi sin alpha, sin psi cos "
-        "alpha, cos psi).");
-      prm.declare_entry(
-        "Dip direction",
-        "120",
-        Patterns::Double(0, 360),
-        "Dip direction alpha of the plane: azimuth of its line of "
-        "steepest descent, clockwise from north (degrees). The block's "
-        "length runs down the dip from the origin, its width is centred "
-        "on the origin along the strike.");
-      prm.declare_entry("Block length",
-                        "10",
-                        Patterns::Double(0),
-                        "Length of the block down the dip (m).");
-      prm.declare_entry("Block width",
-                        "6",
-                        Patterns::Double(0),
-                        "Width of the block along the strike (m).");
-      prm.declare_entry("Block height",
-                        "5",
-                        Patterns::Double(0),
-                        "Height of the block normal to the plane (m).");
-      prm.declare_entry("Foundation thickness",
-                        "5",
-                        Patterns::Double(0),
-                        "Thickness of the foundation slab normal to the "
-                        "plane (m).");
-      prm.declare_entry("Foundation overhang",
-                        "3",
-                        Patterns::Double(0),
-                        "Length the foundation extends beyond the block "
-                        "on each of its four sides (m).");
-      prm.declare_entry("Elements along length",
-                        "10",
-                        Patterns::Integer(1),
-                        "Number of elements of the block down the dip; "
-                        "the foundation gets elements of that length.");
-      prm.declare_entry("Elements along width",
-                        "6",
-                        Patterns::Integer(1),
-                        "Number of elements of the block along the "
-                        "strike; the foundation gets elements of that "
-                        "width.");
-      prm.declare_entry("Elements across height",
-                        "5",
-                        Patterns::Integer(1),
-                        "Number of elements of the block normal to the "
-                        "plane; the foundation gets elements of that "
-                        "height.");
+        prm.declare_entry(
+          "Dip",
+          "30",
+          Patterns::Double(0, 90),
+          "Dip psi of the plane, below the horizontal (degrees). 3D, x = "
+          "east, y = north, z = up: the plane passes through the origin "
+          "with the upward unit normal n = (sin psi sin alpha, sin psi cos "
+          "alpha, cos psi).");
+        prm.declare_entry(
+          "Dip direction",
+          "120",
+          Patterns::Double(0, 360),
+          "Dip direction alpha of the plane: azimuth of its line of "
+          "steepest descent, clockwise from north (degrees). The block's "
+          "length runs down the dip from the origin, its width is centred "
+          "on the origin along the strike.");
+        prm.declare_entry("Block length",
+                          "10",
+                          Patterns::Double(0),
+                          "Length of the block down the dip (m).");
+        prm.declare_entry("Block width",
+                          "6",
+                          Patterns::Double(0),
+                          "Width of the block along the strike (m).");
+        prm.declare_entry("Block height",
+                          "5",
+                          Patterns::Double(0),
+                          "Height of the block normal to the plane (m).");
+        prm.declare_entry("Foundation thickness",
+                          "5",
+                          Patterns::Double(0),
+                          "Thickness of the foundation slab normal to the "
+                          "plane (m).");
+        prm.declare_entry("Foundation overhang",
+                          "3",
+                          Patterns::Double(0),
+                          "Length the foundation extends beyond the block "
+                          "on each of its four sides (m).");
+        prm.declare_entry("Elements along length",
+                          "10",
+                          Patterns::Integer(1),
+                          "Number of elements of the block down the dip; "
+                          "the foundation gets elements of that length.");
+        prm.declare_entry("Elements along width",
+                          "6",
+                          Patterns::Integer(1),
+                          "Number of elements of the block along the "
+                          "strike; the foundation gets elements of that "
+                          "width.");
+        prm.declare_entry("Elements across height",
+                          "5",
+                          Patterns::Integer(1),
+                          "Number of elements of the block normal to the "
+                          "plane; the foundation gets elements of that "
+                          "height.");
       }
 
 
@@ -263,10 +261,10 @@ namespace fdem
             this->n_elements_along_width =
               prm.get_integer("Elements along width");
           }
-        block_length         = prm.get_double("Block length");
-        block_height         = prm.get_double("Block height");
-        foundation_thickness = prm.get_double("Foundation thickness");
-        foundation_overhang  = prm.get_double("Foundation overhang");
+        block_length             = prm.get_double("Block length");
+        block_height             = prm.get_double("Block height");
+        foundation_thickness     = prm.get_double("Foundation thickness");
+        foundation_overhang      = prm.get_double("Foundation overhang");
         n_elements_along_length  = prm.get_integer("Elements along length");
         n_elements_across_height = prm.get_integer("Elements across height");
       }
@@ -300,11 +298,11 @@ namespace fdem
     MeshDescription<dim>
     make_block_on_plane_mesh(const BlockOnPlane<dim> &block_on_plane)
     {
-      const auto  &b         = block_on_plane;
-      const double overhang  = b.foundation_overhang;
-      const double thickness = b.foundation_thickness;
-      const double height    = b.block_height;
-      const unsigned int n_height = b.n_elements_across_height;
+      const auto        &b         = block_on_plane;
+      const double       overhang  = b.foundation_overhang;
+      const double       thickness = b.foundation_thickness;
+      const double       height    = b.block_height;
+      const unsigned int n_height  = b.n_elements_across_height;
 
       // Along the plane: the block's extent [begin, end] and its number of
       // elements in each direction, and the foundation's grid lines there
@@ -330,8 +328,7 @@ namespace fdem
             {n_overhang[d], n_block[d], n_overhang[d]});
         }
       // Normal to the plane: the foundation's lines, then the block's.
-      const unsigned int n_thickness =
-        n_elements(thickness, height / n_height);
+      const unsigned int n_thickness = n_elements(thickness, height / n_height);
       lines[dim - 1] = grid_lines({-thickness, 0}, {n_thickness});
       const std::vector<double> normal_block_lines =
         grid_lines({0, height}, {n_height});
@@ -352,8 +349,8 @@ namespace fdem
         foundation_base,
         foundation_ends
       };
-      const Tensor<2, dim> rotation = b.rotation();
-      const auto add_vertex = [&](const Tensor<1, dim> &frame_point) {
+      const Tensor<2, dim> rotation   = b.rotation();
+      const auto           add_vertex = [&](const Tensor<1, dim> &frame_point) {
         mesh.vertices.emplace_back(rotation * frame_point);
         return static_cast<unsigned int>(mesh.vertices.size() - 1);
       };
@@ -374,7 +371,7 @@ namespace fdem
           foundation_vertex.push_back(add_vertex(frame_point));
         }
       const auto foundation_index = [&](const auto... indices) {
-        const std::array<unsigned int, dim> ijk = {{indices...}};
+        const std::array<unsigned int, dim> ijk  = {{indices...}};
         unsigned int                        flat = 0;
         for (unsigned int d = dim; d-- > 0;)
           flat = flat * n_foundation_points[d] + ijk[d];
@@ -394,7 +391,8 @@ namespace fdem
           std::array<unsigned int, dim> ijk; // in the foundation's grid
           for (unsigned int d = 0, rest = p; d < dim;
                rest /= n_block_points[d], ++d)
-            ijk[d] = rest % n_block_points[d] + (d + 1 < dim ? n_overhang[d] : 0);
+            ijk[d] =
+              rest % n_block_points[d] + (d + 1 < dim ? n_overhang[d] : 0);
           const unsigned int k = ijk[dim - 1];
           if (k == 0)
             {
@@ -411,7 +409,7 @@ namespace fdem
             }
         }
       const auto block_index = [&](const auto... indices) {
-        const std::array<unsigned int, dim> ijk = {{indices...}};
+        const std::array<unsigned int, dim> ijk  = {{indices...}};
         unsigned int                        flat = 0;
         for (unsigned int d = dim; d-- > 0;)
           flat = flat * n_block_points[d] + ijk[d];
@@ -447,11 +445,11 @@ namespace fdem
             return foundation_ends;
           if (side == 0)
             return foundation_base;
-          const std::array<unsigned int, dim - 1> cell = {{in_plane...}};
-          bool under_block = true;
+          const std::array<unsigned int, dim - 1> cell        = {{in_plane...}};
+          bool                                    under_block = true;
           for (unsigned int e = 0; e + 1 < dim; ++e)
-            under_block &= cell[e] >= n_overhang[e] &&
-                           cell[e] < n_overhang[e] + n_block[e];
+            under_block &=
+              cell[e] >= n_overhang[e] && cell[e] < n_overhang[e] + n_block[e];
           return under_block ? no_group :
                                static_cast<unsigned int>(foundation_surface);
         });

@@ -63,7 +63,8 @@ namespace fdem
             CellData<2> mirrored = cell;
             for (unsigned int i = 0; i < cell.vertices.size(); ++i)
               mirrored.vertices[i] =
-                image[cell.vertices[triangles ? (i == 0 ? 0 : 3 - i) : (i ^ 1u)]];
+                image[cell
+                        .vertices[triangles ? (i == 0 ? 0 : 3 - i) : (i ^ 1u)]];
             full.cells.push_back(mirrored);
           }
 
@@ -94,12 +95,11 @@ namespace fdem
     {
       prm.enter_subsection("Hertz");
       {
-        prm.declare_entry(
-          "Radius",
-          "100",
-          Patterns::Double(0),
-          "Radius of the cylinder (model length unit, "
-          "e.g. mm). The half model holds the lower quarter.");
+        prm.declare_entry("Radius",
+                          "100",
+                          Patterns::Double(0),
+                          "Radius of the cylinder (model length unit, "
+                          "e.g. mm). The half model holds the lower quarter.");
         prm.declare_entry("Foundation width",
                           "500",
                           Patterns::Double(0),
@@ -153,15 +153,14 @@ namespace fdem
     {
       prm.enter_subsection("Hertz");
       {
-        radius             = prm.get_double("Radius");
-        foundation_width   = prm.get_double("Foundation width");
-        foundation_depth   = prm.get_double("Foundation depth");
-        contact_zone_width = prm.get_double("Contact zone width");
-        n_contact_zone_elements =
-          prm.get_integer("Elements in contact zone");
-        mesh_size  = prm.get_double("Mesh size");
-        full_model = prm.get_bool("Full model");
-        element_shape = case_input::parse_element_shape(prm);
+        radius                  = prm.get_double("Radius");
+        foundation_width        = prm.get_double("Foundation width");
+        foundation_depth        = prm.get_double("Foundation depth");
+        contact_zone_width      = prm.get_double("Contact zone width");
+        n_contact_zone_elements = prm.get_integer("Elements in contact zone");
+        mesh_size               = prm.get_double("Mesh size");
+        full_model              = prm.get_bool("Full model");
+        element_shape           = case_input::parse_element_shape(prm);
       }
       prm.leave_subsection();
     }
@@ -174,16 +173,19 @@ namespace fdem
       const std::string path = "Geometry/Hertz/";
       case_input::require(radius > 0, path + "Radius: must be positive.");
       case_input::require(foundation_width > 0 && foundation_depth > 0,
-              path + "Foundation width and depth: must be positive.");
+                          path +
+                            "Foundation width and depth: must be positive.");
       case_input::require(contact_zone_width > 0 &&
-                contact_zone_width < radius &&
-                contact_zone_width < foundation_width,
-              path + "Contact zone width: must be positive and smaller "
-                     "than Radius and Foundation width.");
+                            contact_zone_width < radius &&
+                            contact_zone_width < foundation_width,
+                          path +
+                            "Contact zone width: must be positive and smaller "
+                            "than Radius and Foundation width.");
       case_input::require(n_contact_zone_elements % 2 == 0,
-              path + "Elements in contact zone: must be even (an "
-                     "all-quadrilateral mesh needs an even number of "
-                     "edges around each region).");
+                          path +
+                            "Elements in contact zone: must be even (an "
+                            "all-quadrilateral mesh needs an even number of "
+                            "edges around each region).");
       case_input::require(mesh_size > 0, path + "Mesh size: must be positive.");
     }
 
@@ -268,9 +270,7 @@ namespace fdem
 
           // Quadrilaterals: one segment, halved by the subdivision;
           // triangles: the two segments themselves.
-          const bool triangles =
-            hertz.element_shape ==
-            ElementShape::simplex;
+          const bool triangles = hertz.element_shape == ElementShape::simplex;
           for (const int curve : contact_curves)
             gmsh::model::mesh::setTransfiniteCurve(curve, triangles ? 3 : 2);
 
@@ -288,10 +288,10 @@ namespace fdem
           // bodies: keep the mesh as fine as the contact zone there, so that
           // refining the contact zone refines where the solution varies.
           gmsh_2d::set_size_field(contact_curves,
-                         hertz.contact_zone_width / n,
-                         hertz.mesh_size,
-                         0.5 * hertz.contact_zone_width,
-                         !triangles);
+                                  hertz.contact_zone_width / n,
+                                  hertz.mesh_size,
+                                  0.5 * hertz.contact_zone_width,
+                                  !triangles);
           if (triangles)
             gmsh_2d::set_triangle_options();
           else

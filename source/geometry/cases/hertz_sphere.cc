@@ -132,16 +132,15 @@ namespace fdem
     {
       prm.enter_subsection("Hertz sphere");
       {
-        radius             = prm.get_double("Radius");
-        load_height        = prm.get_double("Load height");
-        cap_half_width     = prm.get_double("Cap half width");
-        foundation_width   = prm.get_double("Foundation width");
-        foundation_depth   = prm.get_double("Foundation depth");
-        contact_zone_width = prm.get_double("Contact zone width");
-        n_contact_zone_elements =
-          prm.get_integer("Elements in contact zone");
-        growth_ratio = prm.get_double("Growth ratio");
-        mesh_size    = prm.get_double("Mesh size");
+        radius                  = prm.get_double("Radius");
+        load_height             = prm.get_double("Load height");
+        cap_half_width          = prm.get_double("Cap half width");
+        foundation_width        = prm.get_double("Foundation width");
+        foundation_depth        = prm.get_double("Foundation depth");
+        contact_zone_width      = prm.get_double("Contact zone width");
+        n_contact_zone_elements = prm.get_integer("Elements in contact zone");
+        growth_ratio            = prm.get_double("Growth ratio");
+        mesh_size               = prm.get_double("Mesh size");
       }
       prm.leave_subsection();
     }
@@ -154,28 +153,31 @@ namespace fdem
       const std::string path = "Geometry/Hertz sphere/";
       const double      r = radius, s = cap_half_width;
       case_input::require(r > 0, path + "Radius: must be positive.");
-      case_input::require(contact_zone_width > 0 &&
-                contact_zone_width < s,
-              path + "Contact zone width: must be positive and smaller "
-                     "than Cap half width.");
+      case_input::require(contact_zone_width > 0 && contact_zone_width < s,
+                          path +
+                            "Contact zone width: must be positive and smaller "
+                            "than Cap half width.");
       case_input::require(s * std::sqrt(2.0) < r,
-              path + "Cap half width: S sqrt(2) must be smaller than "
-                     "Radius, so that the sphere's surface spans the "
-                     "square plan.");
+                          path +
+                            "Cap half width: S sqrt(2) must be smaller than "
+                            "Radius, so that the sphere's surface spans the "
+                            "square plan.");
       case_input::require(load_height <= r &&
-                load_height >
-                  r - std::sqrt(r * r - 2 * s * s) +
-                    contact_zone_width,
-              path + "Load height: must be at most Radius and exceed "
-                     "the height of the sphere's surface at the corner "
-                     "(S, S) of its plan by more than Contact zone "
-                     "width.");
+                            load_height > r - std::sqrt(r * r - 2 * s * s) +
+                                            contact_zone_width,
+                          path +
+                            "Load height: must be at most Radius and exceed "
+                            "the height of the sphere's surface at the corner "
+                            "(S, S) of its plan by more than Contact zone "
+                            "width.");
       case_input::require(foundation_width > s,
-              path + "Foundation width: must be larger than Cap half "
-                     "width.");
+                          path +
+                            "Foundation width: must be larger than Cap half "
+                            "width.");
       case_input::require(foundation_depth > contact_zone_width,
-              path + "Foundation depth: must be larger than Contact "
-                     "zone width.");
+                          path +
+                            "Foundation depth: must be larger than Contact "
+                            "zone width.");
       case_input::require(mesh_size > 0, path + "Mesh size: must be positive.");
     }
 
@@ -288,7 +290,8 @@ namespace fdem
                               return side == 0 ? symmetry : sphere_surface;
                             if (side == 1)
                               return load;
-                            return (i < n && j < n) ? contact_surface : sphere_surface;
+                            return (i < n && j < n) ? contact_surface :
+                                                      sphere_surface;
                           });
       add_structured_grid(mesh,
                           {{n_xy - 1, n_xy - 1, n_depth - 1}},

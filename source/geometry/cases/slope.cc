@@ -91,11 +91,10 @@ namespace fdem
           Patterns::Selection("circular|polyline"),
           "Shape of the sliding surface. The sliding mass is the part of "
           "the model inside the circle, or above the polyline.");
-        prm.declare_entry(
-          "Circle centre",
-          "19.61, 46.32",
-          Patterns::List(Patterns::Double(), 2, 2, ","),
-          "Centre 'x,y' of the circular sliding surface (m).");
+        prm.declare_entry("Circle centre",
+                          "19.61, 46.32",
+                          Patterns::List(Patterns::Double(), 2, 2, ","),
+                          "Centre 'x,y' of the circular sliding surface (m).");
         prm.declare_entry("Circle radius",
                           "21.32",
                           Patterns::Double(0),
@@ -136,8 +135,8 @@ namespace fdem
         ground_surface  = case_input::parse_points(prm.get("Ground surface"));
         base_elevation  = prm.get_double("Base elevation");
         sliding_surface = (prm.get("Sliding surface") == "circular") ?
-                                  SlidingSurface::circular :
-                                  SlidingSurface::polyline;
+                            SlidingSurface::circular :
+                            SlidingSurface::polyline;
         circle_centre   = case_input::parse_point(prm.get("Circle centre"));
         circle_radius   = prm.get_double("Circle radius");
         sliding_surface_polyline =
@@ -160,34 +159,35 @@ namespace fdem
       const std::string path   = "Geometry/Slope/";
       const auto       &ground = ground_surface;
       case_input::require(x_increases(ground, true),
-              path + "Ground surface: the x coordinates must increase "
-                     "from left to right.");
-      case_input::require(std::all_of(ground.begin(),
-                          ground.end(),
-                          [&](const Point<2> &p) {
-                            return base_elevation < p[1];
-                          }),
-              path + "Base elevation: must lie below every point of the "
-                     "ground surface.");
+                          path +
+                            "Ground surface: the x coordinates must increase "
+                            "from left to right.");
+      case_input::require(
+        std::all_of(ground.begin(),
+                    ground.end(),
+                    [&](const Point<2> &p) { return base_elevation < p[1]; }),
+        path + "Base elevation: must lie below every point of the "
+               "ground surface.");
       case_input::require(mesh_size > 0, path + "Mesh size: must be positive.");
       if (sliding_surface == SlidingSurface::circular)
         case_input::require(circle_radius > 0,
-                path + "Circle radius: must be positive.");
+                            path + "Circle radius: must be positive.");
       else
         {
           const auto       &line = sliding_surface_polyline;
           const std::string name = path + "Sliding surface polyline: ";
           case_input::require(line.size() >= 2,
-                  name + "needs at least two points when Sliding "
-                         "surface is 'polyline'.");
+                              name + "needs at least two points when Sliding "
+                                     "surface is 'polyline'.");
           case_input::require(x_increases(line, false) &&
-                    line.back()[0] > line.front()[0],
-                  name + "the x coordinates must not decrease from left "
-                         "to right.");
+                                line.back()[0] > line.front()[0],
+                              name +
+                                "the x coordinates must not decrease from left "
+                                "to right.");
           case_input::require(on_or_above_ground(ground, line.front()) &&
-                    on_or_above_ground(ground, line.back()),
-                  name + "its first and last points must lie on or "
-                         "above the ground surface.");
+                                on_or_above_ground(ground, line.back()),
+                              name + "its first and last points must lie on or "
+                                     "above the ground surface.");
         }
     }
 
@@ -300,14 +300,12 @@ namespace fdem
       add_physical_group(1, bottom, "bottom");
 
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
-        const bool triangles =
-          slope.element_shape ==
-          ElementShape::simplex;
+        const bool triangles = slope.element_shape == ElementShape::simplex;
         gmsh_2d::set_size_field(sliding,
-                       slope.mesh_size_on_sliding_surface,
-                       slope.mesh_size,
-                       0,
-                       !triangles);
+                                slope.mesh_size_on_sliding_surface,
+                                slope.mesh_size,
+                                0,
+                                !triangles);
         if (triangles)
           gmsh_2d::set_triangle_options();
         else

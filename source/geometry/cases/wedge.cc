@@ -132,8 +132,9 @@ namespace fdem
         prm.declare_entry("Upper slope",
                           "0, 180",
                           case_input::orientation_pattern(),
-                          case_input::orientation_help("the upper slope, the ground "
-                                           "behind the crest"));
+                          case_input::orientation_help(
+                            "the upper slope, the ground "
+                            "behind the crest"));
         prm.declare_entry("Plane A",
                           "50, 140",
                           case_input::orientation_pattern(),
@@ -179,13 +180,13 @@ namespace fdem
     {
       prm.enter_subsection("Wedge");
       {
-        slope_height = prm.get_double("Slope height");
-        slope_face   = case_input::parse_orientation(prm.get("Slope face"));
-        upper_slope  = case_input::parse_orientation(prm.get("Upper slope"));
-        plane_a      = case_input::parse_orientation(prm.get("Plane A"));
-        plane_b      = case_input::parse_orientation(prm.get("Plane B"));
-        mesh_size    = prm.get_double("Mesh size");
-        rock_extent  = prm.get_double("Rock extent");
+        slope_height  = prm.get_double("Slope height");
+        slope_face    = case_input::parse_orientation(prm.get("Slope face"));
+        upper_slope   = case_input::parse_orientation(prm.get("Upper slope"));
+        plane_a       = case_input::parse_orientation(prm.get("Plane A"));
+        plane_b       = case_input::parse_orientation(prm.get("Plane B"));
+        mesh_size     = prm.get_double("Mesh size");
+        rock_extent   = prm.get_double("Rock extent");
         element_shape = case_input::parse_element_shape(prm);
         if (rock_extent == 0)
           rock_extent = 2 * slope_height;
@@ -200,23 +201,25 @@ namespace fdem
     {
       const std::string path = "Geometry/Wedge/";
       case_input::require(slope_height > 0,
-              path + "Slope height: must be positive.");
+                          path + "Slope height: must be positive.");
       case_input::require(mesh_size > 0, path + "Mesh size: must be positive.");
       case_input::require(rock_extent > 0,
-              path + "Rock extent: must be positive.");
+                          path + "Rock extent: must be positive.");
       for (const auto &[name, orientation] :
            {std::make_pair("Slope face", slope_face),
             std::make_pair("Upper slope", upper_slope),
             std::make_pair("Plane A", plane_a),
             std::make_pair("Plane B", plane_b)})
-        case_input::require(orientation.is_valid(),
-                path + name +
-                  ": the dip must lie in [0, 90] and the dip direction "
-                  "in [0, 360] degrees.");
+        case_input::require(
+          orientation.is_valid(),
+          path + name +
+            ": the dip must lie in [0, 90] and the dip direction "
+            "in [0, 360] degrees.");
       case_input::require(slope_face.dip > 0,
-              path + "Slope face: the dip must be positive.");
-      case_input::require(upper_slope.dip < 90,
-              path + "Upper slope: the dip must be less than 90 degrees.");
+                          path + "Slope face: the dip must be positive.");
+      case_input::require(
+        upper_slope.dip < 90,
+        path + "Upper slope: the dip must be less than 90 degrees.");
       (void)corners(); // throws if the planes form no wedge
     }
 
@@ -244,10 +247,11 @@ namespace fdem
       const Tensor<1, 3> n_b      = plane_b.upward_normal();
       const Point<3>     crest    = crest_point();
       // The toe (and the apex) must lie below the upper slope.
-      case_input::require(n_upper * crest > 1e-9 * h,
-              "Geometry/Wedge/Upper slope: must dip less steeply than the "
-              "slope face in the face's dip direction, so that the two meet "
-              "in a crest above the toe.");
+      case_input::require(
+        n_upper * crest > 1e-9 * h,
+        "Geometry/Wedge/Upper slope: must dip less steeply than the "
+        "slope face in the face's dip direction, so that the two meet "
+        "in a crest above the toe.");
 
       // The point on three planes n_i . x = d_i (the face, A and B pass
       // through the origin, the upper slope through the crest point).
@@ -277,8 +281,8 @@ namespace fdem
       edges[2]            = crest_b - apex;
       const double volume = std::abs(determinant(edges)) / 6;
       case_input::require(n_face * top < -1e-9 * h && crest_a[2] > 1e-9 * h &&
-                crest_b[2] > 1e-9 * h && volume > 1e-9 * h * h * h,
-              no_wedge);
+                            crest_b[2] > 1e-9 * h && volume > 1e-9 * h * h * h,
+                          no_wedge);
       return {{apex, top, crest_a, crest_b}};
     }
 
@@ -507,9 +511,7 @@ namespace fdem
       // inradius from its faces, growing by a quarter of the further
       // distance up to 5 times that size; each is then split into four
       // hexahedra. Tetrahedra that are kept have the mesh size.
-      const bool hexahedra =
-        wedge.element_shape ==
-        ElementShape::hypercube;
+      const bool hexahedra = wedge.element_shape == ElementShape::hypercube;
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
         namespace field       = gmsh::model::mesh::field;
         const double near     = (hexahedra ? 2 : 1) * wedge.mesh_size;
