@@ -165,6 +165,9 @@ namespace fdem
        * Every quadrilateral of @p mesh split into two triangles by its
        * diagonal from vertex 1 to vertex 2 (lexicographic numbering), both
        * positively oriented; the face groups are unchanged.
+       * Hand-written: GridGenerator::convert_hypercube_to_simplex_mesh
+       * makes eight triangles per quadrilateral, not the two that the
+       * Element shape entry promises.
        */
       void
       split_into_triangles(MeshDescription<2> &mesh)
