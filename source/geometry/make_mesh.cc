@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 
-#include <fdem/geometry/generators.h>
-#include <fdem/geometry/generators_3d.h>
+#include <fdem/geometry/cases/block_on_plane.h>
+#include <fdem/geometry/cases/hertz.h>
+#include <fdem/geometry/cases/hertz_sphere.h>
+#include <fdem/geometry/cases/slope.h>
+#include <fdem/geometry/cases/wedge.h>
 #include <fdem/geometry/gmsh_mesh.h>
 #include <fdem/geometry/make_mesh.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
-#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/physics/transformations.h>
 
 #include <cmath>
 
@@ -33,29 +36,14 @@ namespace fdem
       for (unsigned int d = 0; d < std::min<std::size_t>(dim, t.size()); ++d)
         translation[d] = t[d];
 
-      // Rodrigues' formula R = cos a I + sin a [k]x + (1 - cos a) k k^T,
-      // with k = e_z in 2D (the upper left 2x2 block).
-      const double angle = geometry.rotation_angle * numbers::PI / 180;
-      Tensor<1, 3> axis;
-      if (dim == 2)
-        axis[2] = 1;
-      else
-        axis = geometry.rotation_axis / geometry.rotation_axis.norm();
-      Tensor<2, 3> cross_product_matrix; // [k]x v = k x v
-      cross_product_matrix[0][1] = -axis[2];
-      cross_product_matrix[0][2] = axis[1];
-      cross_product_matrix[1][0] = axis[2];
-      cross_product_matrix[1][2] = -axis[0];
-      cross_product_matrix[2][0] = -axis[1];
-      cross_product_matrix[2][1] = axis[0];
-      const Tensor<2, 3> rotation_3d =
-        std::cos(angle) * Tensor<2, 3>(unit_symmetric_tensor<3>()) +
-        std::sin(angle) * cross_product_matrix +
-        (1 - std::cos(angle)) * outer_product(axis, axis);
+      const double   angle = geometry.rotation_angle * numbers::PI / 180;
       Tensor<2, dim> rotation;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          rotation[i][j] = rotation_3d[i][j];
+      if constexpr (dim == 2)
+        rotation =
+          Physics::Transformations::Rotations::rotation_matrix_2d(angle);
+      else
+        rotation = Physics::Transformations::Rotations::rotation_matrix_3d(
+          geometry.rotation_axis / geometry.rotation_axis.norm(), angle);
 
       for (Point<dim> &vertex : mesh.vertices)
         vertex =
@@ -98,7 +86,7 @@ namespace fdem
                      make_slope_mesh(geometry.slope) :
                    (geometry.source == Source::hertz) ?
                      make_hertz_mesh(geometry.hertz) :
-                     make_inclined_block_mesh(geometry.inclined_block);
+                     make_block_on_plane_mesh(geometry.inclined_block);
         }
 
       apply_transformation(geometry, mesh);

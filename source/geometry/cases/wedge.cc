@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 
-#include <fdem/geometry/generators_3d.h>
-#include <fdem/geometry/structured_grid.h>
+#include <fdem/geometry/cases/wedge.h>
 #include <fdem/geometry/gmsh_mesh.h>
 
 #include <deal.II/base/exceptions.h>
@@ -18,6 +17,7 @@
 #include <iterator>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fdem
@@ -108,8 +108,188 @@ namespace fdem
 
 
 
+    void
+    Wedge::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Wedge");
+      {
+        prm.declare_entry(
+          "Slope height",
+          "20",
+          Patterns::Double(0),
+          "Height H of the slope face (m). 3D, x = east, y = north, z = "
+          "up: the apex of the wedge (where the line of intersection of "
+          "Plane A and Plane B daylights in the slope face) is the origin, "
+          "on the toe of the face at z = 0; the crest passes through the "
+          "point at z = H straight up the face's line of steepest ascent "
+          "from the apex.");
+        prm.declare_entry("Slope face",
+                          "65, 180",
+                          case_input::orientation_pattern(),
+                          case_input::orientation_help("the slope face") +
+                            " The ground in front of the toe is horizontal "
+                            "(z = 0).");
+        prm.declare_entry("Upper slope",
+                          "0, 180",
+                          case_input::orientation_pattern(),
+                          case_input::orientation_help(
+                            "the upper slope, the ground "
+                            "behind the crest"));
+        prm.declare_entry("Plane A",
+                          "50, 140",
+                          case_input::orientation_pattern(),
+                          case_input::orientation_help(
+                            "the first joint plane (through the apex)"));
+        prm.declare_entry("Plane B",
+                          "50, 220",
+                          case_input::orientation_pattern(),
+                          case_input::orientation_help(
+                            "the second joint plane (through the apex)"));
+        prm.declare_entry(
+          "Mesh size",
+          "2",
+          Patterns::Double(0),
+          "Element size h in and near the wedge (m): Gmsh meshes "
+          "tetrahedra of size 2 h and splits each into four hexahedra, "
+          "whose edges are about h/3 to h long (0.65 h on average), or "
+          "with Element shape = tetrahedron keeps tetrahedra of size h. In "
+          "the rock the size grows with the distance from the wedge (by a "
+          "quarter of the distance) up to 5 h.");
+        prm.declare_entry(
+          "Element shape",
+          "hexahedron",
+          Patterns::Selection("hexahedron|tetrahedron"),
+          "Shape of the cells: hexahedra (FE_Q elements, Gmsh's Delaunay "
+          "tetrahedra each split into four), or the Delaunay tetrahedra "
+          "themselves (FE_SimplexP).");
+        prm.declare_entry(
+          "Rock extent",
+          "0",
+          Patterns::Double(0),
+          "Least distance from the wedge to the sides, the back and the "
+          "base of the rock box, and length of the ground in front of the "
+          "toe (m); 0 means 2 Slope height.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Wedge::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Wedge");
+      {
+        slope_height  = prm.get_double("Slope height");
+        slope_face    = case_input::parse_orientation(prm.get("Slope face"));
+        upper_slope   = case_input::parse_orientation(prm.get("Upper slope"));
+        plane_a       = case_input::parse_orientation(prm.get("Plane A"));
+        plane_b       = case_input::parse_orientation(prm.get("Plane B"));
+        mesh_size     = prm.get_double("Mesh size");
+        rock_extent   = prm.get_double("Rock extent");
+        element_shape = case_input::parse_element_shape(prm);
+        if (rock_extent == 0)
+          rock_extent = 2 * slope_height;
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Wedge::validate() const
+    {
+      const std::string path = "Geometry/Wedge/";
+      case_input::require(slope_height > 0,
+                          path + "Slope height: must be positive.");
+      case_input::require(mesh_size > 0, path + "Mesh size: must be positive.");
+      case_input::require(rock_extent > 0,
+                          path + "Rock extent: must be positive.");
+      for (const auto &[name, orientation] :
+           {std::make_pair("Slope face", slope_face),
+            std::make_pair("Upper slope", upper_slope),
+            std::make_pair("Plane A", plane_a),
+            std::make_pair("Plane B", plane_b)})
+        case_input::require(
+          orientation.is_valid(),
+          path + name +
+            ": the dip must lie in [0, 90] and the dip direction "
+            "in [0, 360] degrees.");
+      case_input::require(slope_face.dip > 0,
+                          path + "Slope face: the dip must be positive.");
+      case_input::require(
+        upper_slope.dip < 90,
+        path + "Upper slope: the dip must be less than 90 degrees.");
+      (void)corners(); // throws if the planes form no wedge
+    }
+
+
+
+    Point<3>
+    Wedge::crest_point() const
+    {
+      // Up the face's line of steepest ascent by the height H.
+      const Tensor<1, 3> up_dip = -slope_face.down_dip_direction();
+      return Point<3>(slope_height / up_dip[2] * up_dip);
+    }
+
+
+
+    std::array<Point<3>, 4>
+    Wedge::corners() const
+    {
+      const std::string  no_wedge = "Geometry/Wedge: the planes do not form a "
+                                    "wedge that daylights in the slope face.";
+      const double       h        = slope_height;
+      const Tensor<1, 3> n_face   = slope_face.upward_normal();
+      const Tensor<1, 3> n_upper  = upper_slope.upward_normal();
+      const Tensor<1, 3> n_a      = plane_a.upward_normal();
+      const Tensor<1, 3> n_b      = plane_b.upward_normal();
+      const Point<3>     crest    = crest_point();
+      // The toe (and the apex) must lie below the upper slope.
+      case_input::require(
+        n_upper * crest > 1e-9 * h,
+        "Geometry/Wedge/Upper slope: must dip less steeply than the "
+        "slope face in the face's dip direction, so that the two meet "
+        "in a crest above the toe.");
+
+      // The point on three planes n_i . x = d_i (the face, A and B pass
+      // through the origin, the upper slope through the crest point).
+      const auto meet = [&](const std::array<Tensor<1, 3>, 3> &normals,
+                            const std::array<double, 3>       &offsets) {
+        Tensor<2, 3> matrix;
+        for (unsigned int i = 0; i < 3; ++i)
+          matrix[i] = normals[i];
+        case_input::require(std::abs(determinant(matrix)) > 1e-6, no_wedge);
+        return Point<3>(invert(matrix) *
+                        Tensor<1, 3>({offsets[0], offsets[1], offsets[2]}));
+      };
+      const double   d_upper = n_upper * crest;
+      const Point<3> apex;
+      const Point<3> top = meet({{n_a, n_b, n_upper}}, {{0, 0, d_upper}});
+      const Point<3> crest_a =
+        meet({{n_face, n_upper, n_a}}, {{0, d_upper, 0}});
+      const Point<3> crest_b =
+        meet({{n_face, n_upper, n_b}}, {{0, d_upper, 0}});
+
+      // The line of intersection runs from the apex into the rock behind
+      // the face, and the face of the wedge lies between the toe level and
+      // the crest; then the tetrahedron is the wedge if it is not flat.
+      Tensor<2, 3> edges; // rows: the edges from the apex
+      edges[0]            = top - apex;
+      edges[1]            = crest_a - apex;
+      edges[2]            = crest_b - apex;
+      const double volume = std::abs(determinant(edges)) / 6;
+      case_input::require(n_face * top < -1e-9 * h && crest_a[2] > 1e-9 * h &&
+                            crest_b[2] > 1e-9 * h && volume > 1e-9 * h * h * h,
+                          no_wedge);
+      return {{apex, top, crest_a, crest_b}};
+    }
+
+
+
     MeshDescription<3>
-    make_wedge_mesh(const parameters::GeometryParameters::Wedge &wedge)
+    make_wedge_mesh(const Wedge &wedge)
     {
       namespace occ                        = gmsh::model::occ;
       const std::string             name   = "Geometry/Wedge";
@@ -331,9 +511,7 @@ namespace fdem
       // inradius from its faces, growing by a quarter of the further
       // distance up to 5 times that size; each is then split into four
       // hexahedra. Tetrahedra that are kept have the mesh size.
-      const bool hexahedra =
-        wedge.element_shape ==
-        parameters::GeometryParameters::ElementShape::hypercube;
+      const bool hexahedra = wedge.element_shape == ElementShape::hypercube;
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
         namespace field       = gmsh::model::mesh::field;
         const double near     = (hexahedra ? 2 : 1) * wedge.mesh_size;
@@ -365,133 +543,6 @@ namespace fdem
         gmsh::model::mesh::generate(3);
       });
       return extract_current_gmsh_model<3>(name);
-    }
-
-
-
-    MeshDescription<3>
-    make_block_on_plane_mesh(
-      const parameters::GeometryParameters::BlockOnPlane &block_on_plane)
-    {
-      const auto        &b         = block_on_plane;
-      const double       length    = b.block_length;
-      const double       width     = b.block_width;
-      const double       height    = b.block_height;
-      const double       overhang  = b.foundation_overhang;
-      const double       thickness = b.foundation_thickness;
-      const unsigned int n_length  = b.n_elements_along_length;
-      const unsigned int n_width   = b.n_elements_along_width;
-      const unsigned int n_height  = b.n_elements_across_height;
-      // The foundation gets elements of the block's size.
-      const auto n_elements = [](const double distance, const double size) {
-        return static_cast<unsigned int>(
-          std::max<long>(1, std::lround(distance / size)));
-      };
-      const unsigned int n_overhang_x = n_elements(overhang, length / n_length);
-      const unsigned int n_overhang_y = n_elements(overhang, width / n_width);
-      const unsigned int n_thickness = n_elements(thickness, height / n_height);
-
-      // Coordinates of the grid lines in the plane's frame.
-      const auto grid = [](const std::vector<double>       &breaks,
-                           const std::vector<unsigned int> &n_segments) {
-        std::vector<double> ticks = {breaks[0]};
-        for (unsigned int i = 0; i < n_segments.size(); ++i)
-          for (unsigned int j = 1; j <= n_segments[i]; ++j)
-            ticks.push_back((j == n_segments[i]) ?
-                              breaks[i + 1] :
-                              breaks[i] + (breaks[i + 1] - breaks[i]) * j /
-                                            n_segments[i]);
-        return ticks;
-      };
-      const std::vector<double> x =
-        grid({-overhang, 0, length, length + overhang},
-             {n_overhang_x, n_length, n_overhang_x});
-      const std::vector<double> y = grid(
-        {-width / 2 - overhang, -width / 2, width / 2, width / 2 + overhang},
-        {n_overhang_y, n_width, n_overhang_y});
-      const std::vector<double> z_foundation =
-        grid({-thickness, 0}, {n_thickness});
-      const std::vector<double> z_block = grid({0, height}, {n_height});
-      const unsigned int        n_x = x.size(), n_y = y.size();
-
-      MeshDescription<3> mesh;
-      mesh.source                 = "Geometry/Block on plane";
-      mesh.block_names            = {"block", "foundation"};
-      mesh.face_group_names       = {"sliding surface",
-                                     "block surface",
-                                     "foundation surface",
-                                     "foundation base",
-                                     "foundation ends"};
-      const Tensor<2, 3> rotation = b.rotation();
-      const auto         add_vertex =
-        [&](const double xi, const double eta, const double zeta) {
-          mesh.vertices.emplace_back(rotation * Tensor<1, 3>({xi, eta, zeta}));
-          return static_cast<unsigned int>(mesh.vertices.size() - 1);
-        };
-
-      // Foundation vertices (i, j, k), then the block's above its top.
-      std::vector<unsigned int> foundation_vertex;
-      for (const double zeta : z_foundation)
-        for (const double eta : y)
-          for (const double xi : x)
-            foundation_vertex.push_back(add_vertex(xi, eta, zeta));
-      const auto foundation_index =
-        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
-          return foundation_vertex[(k * n_y + j) * n_x + i];
-        };
-      std::vector<unsigned int> block_vertex;
-      for (unsigned int k = 0; k < z_block.size(); ++k)
-        for (unsigned int j = 0; j <= n_width; ++j)
-          for (unsigned int i = 0; i <= n_length; ++i)
-            block_vertex.push_back((k == 0) ? foundation_index(i + n_overhang_x,
-                                                               j + n_overhang_y,
-                                                               n_thickness) :
-                                              add_vertex(x[i + n_overhang_x],
-                                                         y[j + n_overhang_y],
-                                                         z_block[k]));
-      const auto block_index =
-        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
-          return block_vertex[(k * (n_width + 1) + j) * (n_length + 1) + i];
-        };
-
-      enum Group
-      {
-        sliding_surface,
-        block_surface,
-        foundation_surface,
-        foundation_base,
-        foundation_ends
-      };
-      add_structured_grid(mesh,
-                          {{n_length, n_width, n_height}},
-                          block_index,
-                          0,
-                          [&](const unsigned int d,
-                              const unsigned int side,
-                              unsigned int,
-                              unsigned int) {
-                            return (d == 2 && side == 0) ? sliding_surface : block_surface;
-                          });
-      add_structured_grid(mesh,
-                          {{n_x - 1, n_y - 1, n_thickness}},
-                          foundation_index,
-                          1,
-                          [&](const unsigned int d,
-                              const unsigned int side,
-                              const unsigned int i,
-                              const unsigned int j) -> unsigned int {
-                            if (d < 2)
-                              return foundation_ends;
-                            if (side == 0)
-                              return foundation_base;
-                            const bool under_block =
-                              i >= n_overhang_x && i < n_overhang_x + n_length &&
-                              j >= n_overhang_y && j < n_overhang_y + n_width;
-                            return under_block ?
-                                     no_group :
-                                     static_cast<unsigned int>(foundation_surface);
-                          });
-      return mesh;
     }
   } // namespace geometry
 } // namespace fdem

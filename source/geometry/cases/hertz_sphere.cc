@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 
-#include <fdem/geometry/generators_3d.h>
+#include <fdem/geometry/cases/case_input.h>
+#include <fdem/geometry/cases/hertz_sphere.h>
 #include <fdem/geometry/structured_grid.h>
 
 #include <deal.II/base/exceptions.h>
@@ -57,9 +58,133 @@ namespace fdem
 
 
 
+    void
+    HertzSphere::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Hertz sphere");
+      {
+        prm.declare_entry(
+          "Radius",
+          "100",
+          Patterns::Double(0),
+          "Radius R of the sphere (model length unit, e.g. mm). 3D quarter "
+          "model x >= 0, y >= 0, z up: the sphere touches the foundation's "
+          "top z = 0 at the origin; x = 0 and y = 0 are symmetry planes.");
+        prm.declare_entry(
+          "Load height",
+          "60",
+          Patterns::Double(0),
+          "Height H of the sphere's flat top above the origin, where the "
+          "load is applied (model length unit); at most Radius, and above "
+          "the sphere's surface at the corner (S, S) of its plan.");
+        prm.declare_entry(
+          "Cap half width",
+          "50",
+          Patterns::Double(0),
+          "Half width S of the sphere's square plan: the sphere is cut by "
+          "the planes x = S and y = S (free faces) (model length unit); "
+          "larger than Contact zone width, S sqrt(2) < Radius.");
+        prm.declare_entry("Foundation width",
+                          "100",
+                          Patterns::Double(0),
+                          "Width W of the foundation [0, W] x [0, W] in "
+                          "plan (model length unit); larger than Cap half "
+                          "width.");
+        prm.declare_entry("Foundation depth",
+                          "100",
+                          Patterns::Double(0),
+                          "Depth D of the foundation below z = 0 (model "
+                          "length unit).");
+        prm.declare_entry(
+          "Contact zone width",
+          "7.5",
+          Patterns::Double(0),
+          "Side Lc of the square [0, Lc]^2 in plan in which the sphere and "
+          "the foundation get nodes at the same (x, y), so that pairs are "
+          "found along the vertical (model length unit). It should exceed "
+          "the contact radius; the elements keep its size Lc/n down to the "
+          "depth Lc and up to the height Lc.");
+        prm.declare_entry(
+          "Elements in contact zone",
+          "6",
+          Patterns::Integer(1, 200),
+          "Number n of equal elements along each side of the contact zone "
+          "(dimensionless).");
+        prm.declare_entry(
+          "Growth ratio",
+          "1.4",
+          Patterns::Double(1, 2),
+          "Ratio of the sizes of neighbouring elements outside the contact "
+          "zone, in plan and in depth (dimensionless, 1 to 2).");
+        prm.declare_entry("Mesh size",
+                          "25",
+                          Patterns::Double(0),
+                          "Largest element size, far from the contact "
+                          "(model length unit).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    HertzSphere::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Hertz sphere");
+      {
+        radius                  = prm.get_double("Radius");
+        load_height             = prm.get_double("Load height");
+        cap_half_width          = prm.get_double("Cap half width");
+        foundation_width        = prm.get_double("Foundation width");
+        foundation_depth        = prm.get_double("Foundation depth");
+        contact_zone_width      = prm.get_double("Contact zone width");
+        n_contact_zone_elements = prm.get_integer("Elements in contact zone");
+        growth_ratio            = prm.get_double("Growth ratio");
+        mesh_size               = prm.get_double("Mesh size");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    HertzSphere::validate() const
+    {
+      const std::string path = "Geometry/Hertz sphere/";
+      const double      r = radius, s = cap_half_width;
+      case_input::require(r > 0, path + "Radius: must be positive.");
+      case_input::require(contact_zone_width > 0 && contact_zone_width < s,
+                          path +
+                            "Contact zone width: must be positive and smaller "
+                            "than Cap half width.");
+      case_input::require(s * std::sqrt(2.0) < r,
+                          path +
+                            "Cap half width: S sqrt(2) must be smaller than "
+                            "Radius, so that the sphere's surface spans the "
+                            "square plan.");
+      case_input::require(load_height <= r &&
+                            load_height > r - std::sqrt(r * r - 2 * s * s) +
+                                            contact_zone_width,
+                          path +
+                            "Load height: must be at most Radius and exceed "
+                            "the height of the sphere's surface at the corner "
+                            "(S, S) of its plan by more than Contact zone "
+                            "width.");
+      case_input::require(foundation_width > s,
+                          path +
+                            "Foundation width: must be larger than Cap half "
+                            "width.");
+      case_input::require(foundation_depth > contact_zone_width,
+                          path +
+                            "Foundation depth: must be larger than Contact "
+                            "zone width.");
+      case_input::require(mesh_size > 0, path + "Mesh size: must be positive.");
+    }
+
+
+
     MeshDescription<3>
-    make_hertz_sphere_mesh(
-      const parameters::GeometryParameters::HertzSphere &hertz_sphere)
+    make_hertz_sphere_mesh(const HertzSphere &hertz_sphere)
     {
       const auto        &p     = hertz_sphere;
       const double       r     = p.radius;
@@ -165,7 +290,8 @@ namespace fdem
                               return side == 0 ? symmetry : sphere_surface;
                             if (side == 1)
                               return load;
-                            return (i < n && j < n) ? contact_surface : sphere_surface;
+                            return (i < n && j < n) ? contact_surface :
+                                                      sphere_surface;
                           });
       add_structured_grid(mesh,
                           {{n_xy - 1, n_xy - 1, n_depth - 1}},

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    using namespace dealii;
+
+    /**
+     * Shape of the cells a generator makes: quadrilaterals or hexahedra
+     * (FE_Q), or triangles or tetrahedra (FE_SimplexP).
+     */
+    enum class ElementShape
+    {
+      hypercube,
+      simplex
+    };
+
+    /**
+     * Orientation of a plane in 3D by its dip and dip direction, with x =
+     * east, y = north and z = up.
+     */
+    struct PlaneOrientation
+    {
+      /** Dip psi: angle below the horizontal (degrees, 0 to 90). */
+      double dip = 0;
+      /**
+       * Dip direction alpha: azimuth of the line of steepest descent
+       * (degrees clockwise from north, 0 to 360).
+       */
+      double dip_direction = 0;
+
+      /**
+       * The upward unit normal n = (sin psi sin alpha, sin psi cos alpha,
+       * cos psi).
+       */
+      Tensor<1, 3>
+      upward_normal() const;
+
+      /**
+       * The unit vector down the line of steepest descent,
+       * (cos psi sin alpha, cos psi cos alpha, -sin psi); horizontal towards
+       * the dip direction for a horizontal plane.
+       */
+      Tensor<1, 3>
+      down_dip_direction() const;
+
+      /** Whether the dip lies in [0, 90] and the dip direction in [0, 360]. */
+      bool
+      is_valid() const;
+    };
+
+    /**
+     * Pieces that the geometry cases share to declare, read and check their
+     * .prm entries (see the case headers in this folder).
+     */
+    namespace case_input
+    {
+      /** Throw ExcMessage(@p message) unless @p condition holds; messages
+       * start with the entry's path, e.g. "Geometry/Slope/Mesh size: ...". */
+      void
+      require(const bool condition, const std::string &message);
+
+      /** Pattern of a list of points "x,y; x,y; ..." of at least
+       * @p min_n_points points. */
+      Patterns::List
+      point_list_pattern(const unsigned int min_n_points);
+
+      /** The point "x,y". */
+      Point<2>
+      parse_point(const std::string &text);
+
+      /** The points "x,y; x,y; ...". */
+      std::vector<Point<2>>
+      parse_points(const std::string &text);
+
+      /**
+       * Declare "Element shape" of a 2D generator: quadrilateral or
+       * triangle; @p how says how the generator makes each.
+       */
+      void
+      declare_element_shape_2d(ParameterHandler &prm, const std::string &how);
+
+      /** The shape selected by "Element shape" ("triangle"/"tetrahedron":
+       * simplices). */
+      ElementShape
+      parse_element_shape(ParameterHandler &prm);
+
+      /** Pattern of a plane orientation "dip, dip direction". */
+      Patterns::List
+      orientation_pattern();
+
+      /** Help text of a plane orientation entry about @p plane. */
+      std::string
+      orientation_help(const std::string &plane);
+
+      /** The orientation "dip, dip direction". */
+      PlaneOrientation
+      parse_orientation(const std::string &text);
+    } // namespace case_input
+  }   // namespace geometry
+} // namespace fdem

@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/geometry/cases/case_input.h>
+#include <fdem/geometry/mesh_description.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <vector>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    /**
+     * The case "slope" (2D), subsection "Geometry/Slope": a slope cut by one
+     * sliding surface, made by Gmsh (make_slope_mesh()).
+     */
+    struct Slope
+    {
+      /** Shape of the sliding surface. */
+      enum class SlidingSurface
+      {
+        circular,
+        polyline
+      };
+
+      /** Ground surface from left to right (m). */
+      std::vector<Point<2>> ground_surface;
+      /** Elevation of the bottom of the model (m). */
+      double         base_elevation;
+      SlidingSurface sliding_surface;
+      /** Centre of the circular sliding surface (m). */
+      Point<2> circle_centre;
+      /** Radius of the circular sliding surface (m). */
+      double circle_radius;
+      /** Polyline sliding surface from left to right (m). */
+      std::vector<Point<2>> sliding_surface_polyline;
+      /** Element size away from the sliding surface (m). */
+      double mesh_size;
+      /** Element size on the sliding surface (m); mesh_size if 0 is given. */
+      double mesh_size_on_sliding_surface;
+      /** Quadrilaterals or triangles. */
+      ElementShape element_shape = ElementShape::hypercube;
+
+      /** Declare the subsection "Slope" (inside "Geometry"). */
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /** Read the subsection "Slope" (inside "Geometry"). */
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /** Throw a one-sentence message naming the entry if the data are
+       * invalid. */
+      void
+      validate() const;
+    };
+
+    /**
+     * A slope (the ground polyline closed down to the base elevation) split
+     * by a circular or polyline sliding surface. Blocks "sliding mass" (the
+     * part of the slope inside the circle, or above the polyline) and
+     * "foundation". Face groups "sliding surface" (the curve between the two
+     * blocks, with the same nodes on both sides), "ground" (the whole top
+     * surface), "left", "right", "bottom". The elements have the size
+     * mesh_size_on_sliding_surface there and grow to mesh_size away from it.
+     * Opens its own GmshSession.
+     */
+    MeshDescription<2>
+    make_slope_mesh(const Slope &slope);
+  } // namespace geometry
+} // namespace fdem

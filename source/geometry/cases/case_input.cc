@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+
+#include <fdem/geometry/cases/case_input.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    namespace
+    {
+      double
+      radians(const double degrees)
+      {
+        return degrees * numbers::PI / 180;
+      }
+    } // namespace
+
+
+
+    Tensor<1, 3>
+    PlaneOrientation::upward_normal() const
+    {
+      const double psi = radians(dip), alpha = radians(dip_direction);
+      return Tensor<1, 3>({std::sin(psi) * std::sin(alpha),
+                           std::sin(psi) * std::cos(alpha),
+                           std::cos(psi)});
+    }
+
+
+
+    Tensor<1, 3>
+    PlaneOrientation::down_dip_direction() const
+    {
+      const double psi = radians(dip), alpha = radians(dip_direction);
+      return Tensor<1, 3>({std::cos(psi) * std::sin(alpha),
+                           std::cos(psi) * std::cos(alpha),
+                           -std::sin(psi)});
+    }
+
+
+
+    bool
+    PlaneOrientation::is_valid() const
+    {
+      return dip >= 0 && dip <= 90 && dip_direction >= 0 &&
+             dip_direction <= 360;
+    }
+
+
+
+    namespace case_input
+    {
+      void
+      require(const bool condition, const std::string &message)
+      {
+        AssertThrow(condition, ExcMessage(message));
+      }
+
+
+
+      Patterns::List
+      point_list_pattern(const unsigned int min_n_points)
+      {
+        return Patterns::List(Patterns::List(Patterns::Double(), 2, 2, ","),
+                              min_n_points,
+                              Patterns::List::max_int_value,
+                              ";");
+      }
+
+
+
+      Point<2>
+      parse_point(const std::string &text)
+      {
+        const std::vector<double> xy =
+          Utilities::string_to_double(Utilities::split_string_list(text, ','));
+        return Point<2>(xy[0], xy[1]);
+      }
+
+
+
+      std::vector<Point<2>>
+      parse_points(const std::string &text)
+      {
+        std::vector<Point<2>> points;
+        for (const std::string &point : Utilities::split_string_list(text, ';'))
+          points.push_back(parse_point(point));
+        return points;
+      }
+
+
+
+      void
+      declare_element_shape_2d(ParameterHandler &prm, const std::string &how)
+      {
+        prm.declare_entry("Element shape",
+                          "quadrilateral",
+                          Patterns::Selection("quadrilateral|triangle"),
+                          "Shape of the cells: " + how);
+      }
+
+
+
+      ElementShape
+      parse_element_shape(ParameterHandler &prm)
+      {
+        const std::string shape = prm.get("Element shape");
+        return (shape == "triangle" || shape == "tetrahedron") ?
+                 ElementShape::simplex :
+                 ElementShape::hypercube;
+      }
+
+
+
+      Patterns::List
+      orientation_pattern()
+      {
+        return Patterns::List(Patterns::Double(), 2, 2, ",");
+      }
+
+
+
+      std::string
+      orientation_help(const std::string &plane)
+      {
+        return "Orientation of " + plane +
+               " as 'dip, dip direction' (degrees): the dip psi below the "
+               "horizontal (0 to 90) and the dip direction alpha, the "
+               "azimuth of the line of steepest descent clockwise from north "
+               "(0 to 360). With x = east, y = north, z = up, the plane's "
+               "upward unit normal is n = (sin psi sin alpha, sin psi cos "
+               "alpha, cos psi).";
+      }
+
+
+
+      PlaneOrientation
+      parse_orientation(const std::string &text)
+      {
+        const std::vector<double> values =
+          Utilities::string_to_double(Utilities::split_string_list(text, ','));
+        PlaneOrientation orientation;
+        orientation.dip           = values[0];
+        orientation.dip_direction = values[1];
+        return orientation;
+      }
+    } // namespace case_input
+  }   // namespace geometry
+} // namespace fdem
