@@ -80,7 +80,8 @@ namespace fdem
 
       /** The bracket certificate of a solved @p solved below a failed @p failed. */
       Certificate
-      bracket(const Step &solved, const Step &failed, const double tolerance)
+      bracket(const Step &solved, const Step &failed, const double tolerance,
+              const double agreement)
       {
         Certificate c;
         c.kind                = Certificate::Kind::bracket;
@@ -91,24 +92,31 @@ namespace fdem
         c.K_failed            = failed.K;
         c.failure             = failed.solution.result;
         const bool agrees     = c.relative_difference <= tolerance;
-        c.holds               = agrees && failed.solution.mechanism;
+        // K* above K_lo, by a little: the blocks have strength to spare by
+        // eq. (12), yet lose equilibrium just above K_lo. K_lo is the
+        // conservative answer of the two.
+        c.conservative = !agrees && c.K_star > c.K && c.relative_difference <= agreement;
+        c.holds        = (agrees || c.conservative) && failed.solution.mechanism;
         std::ostringstream numbers;
         numbers.precision(9);
         numbers << " and no static solution at K = " << c.K_failed << " (" << c.failure << ")";
-        if (!agrees)
+        if (!agrees && !c.conservative)
           c.reason = factors(solved) + ", the largest K with a static solution" + why_not_closed;
         else if (!failed.solution.mechanism)
           c.reason = "the solve at K = " + std::to_string(c.K_failed) + " above " +
                      factors(solved) + " failed numerically (" + c.failure +
                      "), not as a mechanism";
         else
-          c.reason = factors(solved) + numbers.str();
+          c.reason = factors(solved) + numbers.str() +
+                     (c.conservative ? "; K* exceeds K, within Bracket agreement: K is the "
+                                       "conservative value" :
+                                       "");
         return c;
       }
     } // namespace
 
     Certificate
-    certify(const Result &result, const double tolerance)
+    certify(const Result &result, const double tolerance, const double bracket_agreement)
     {
       Certificate none;
       none.tolerance = tolerance;
@@ -132,7 +140,7 @@ namespace fdem
           const Step *solved = step_at(result.steps, result.bracket_low, true);
           const Step *failed = step_at(result.steps, result.bracket_high, false);
           Assert(solved != nullptr && failed != nullptr, dealii::ExcInternalError());
-          return bracket(*solved, *failed, tolerance);
+          return bracket(*solved, *failed, tolerance, bracket_agreement);
         }
       if (!last.solution.converged && !last.solution.mechanism)
         none.reason += "; the last solve failed numerically (" + last.solution.result + ")";

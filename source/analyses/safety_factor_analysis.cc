@@ -62,6 +62,16 @@ namespace fdem
                   << result.certificate.reason << ")" << std::endl;
       else
         model.log << "not certified (" << result.certificate.reason << ")" << std::endl;
+      if (result.certificate.conservative)
+        {
+          std::ostringstream warning;
+          warning << "K* = " << std::setprecision(9) << result.certificate.K_star
+                  << " at the last static state, K = " << result.certificate.K
+                  << ": equilibrium is lost before K reaches K* (e.g. a plane lifting off); "
+                     "K is the conservative value, its relative distance to K* "
+                  << std::setprecision(3) << result.certificate.relative_difference;
+          model.warn(warning.str());
+        }
       result.stiffness = stiffness_sensitivity(result);
       const StiffnessSensitivity &check = result.stiffness;
       if (check.computed && !(check.relative_change <= model.parameters.safety_factor.stiffness_check_warning))
@@ -73,9 +83,9 @@ namespace fdem
             warning << "K changes by " << std::setprecision(3) << 100 * check.relative_change << " %";
           warning << " with the moving blocks " << check.factor << " times stiffer or softer (K = "
                   << std::setprecision(8) << check.K_stiffer << ", " << check.K_softer
-                  << "): the sliding surface is not a mechanism for rigid blocks, and K measures "
-                     "their elasticity; divide the sliding mass into blocks at the kinks of the "
-                     "surface";
+                  << "): K depends on the blocks' stiffness; the sliding surface may not be a "
+                     "mechanism for rigid blocks (one block on a kinked surface: divide the "
+                     "sliding mass into blocks at the kinks), and K then measures their elasticity";
           model.warn(warning.str());
         }
       return result;

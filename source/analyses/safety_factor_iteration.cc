@@ -156,7 +156,7 @@ namespace fdem
             previous_step = nan;
           K = result.steps.back().K_next;
         }
-      result.certificate = certify(result, tolerance);
+      result.certificate = certify(result, tolerance, parameters.bracket_agreement);
       result.converged   = result.certificate.holds;
       if (result.converged)
         result.safety_factor = result.certificate.kind == Certificate::Kind::fixed_point ?

@@ -279,6 +279,18 @@ namespace fdem
                         Patterns::Anything(),
                         "If no K down to this value has a static solution, the "
                         "model has none (> 0, dimensionless).");
+      prm.declare_entry("Bracket agreement",
+                        "0.01",
+                        Patterns::Double(0, 1),
+                        "A limit bracketed by a solved K_lo and a K_hi just above "
+                        "it whose solve fails as a mechanism is certified when K* "
+                        "at K_lo agrees with K_lo to Tolerance; or, conservatively, "
+                        "when K* exceeds K_lo by at most this much (relative, "
+                        "dimensionless): equilibrium is then lost before eq. (12) "
+                        "reaches its limit (e.g. a wedge whose second plane lifts "
+                        "off), K_lo is reported and the run warns. Larger "
+                        "disagreements (an undeclared contact gives K* many times "
+                        "K) are refused. 0 asks for agreement to Tolerance.");
       prm.declare_entry("Stiffness check",
                         "true",
                         Patterns::Bool(),
@@ -330,6 +342,7 @@ namespace fdem
       tolerance      = positive("Tolerance");
       minimum_factor = positive("Minimum factor");
       max_iterations = prm.get_integer("Maximum iterations");
+      bracket_agreement       = prm.get_double("Bracket agreement");
       stiffness_check         = prm.get_bool("Stiffness check");
       stiffness_check_factor  = prm.get_double("Stiffness check factor");
       stiffness_check_warning = prm.get_double("Stiffness check warning");

@@ -22,6 +22,7 @@ namespace fdem
       {
         return {{"kind", analyses::kind_name(c.kind)},
                 {"holds", c.holds},
+                {"conservative", c.conservative},
                 {"K", number_or_null(c.K)},
                 {"K_star", number_or_null(c.K_star)},
                 {"relative_difference", number_or_null(c.relative_difference)},

@@ -67,7 +67,9 @@ namespace fdem
      * the tolerance, with the estimated distance still to the fixed point
      * as small. A bracket: a solved K_lo whose K* agrees with K_lo to the
      * tolerance, and a K_hi within the tolerance above it whose solve failed
-     * as a mechanism (not a numerical breakdown).
+     * as a mechanism (not a numerical breakdown); conservatively, K* may
+     * exceed K_lo by up to Safety factor/Bracket agreement, and K_lo, the
+     * smaller, is the answer.
      */
     struct Certificate
     {
@@ -80,6 +82,12 @@ namespace fdem
       Kind kind = Kind::none;
       /** Whether the numbers below show the safety factor. */
       bool holds = false;
+      /**
+       * A bracket that holds only conservatively: K* at K_lo exceeds K_lo
+       * by more than the tolerance (at most by Bracket agreement), the
+       * equilibrium being lost before eq. (12) reaches its limit.
+       */
+      bool conservative = false;
       /** The solved state it rests on: its K and K*. */
       double K = std::numeric_limits<double>::quiet_NaN();
       double K_star = std::numeric_limits<double>::quiet_NaN();
@@ -174,7 +182,7 @@ namespace fdem
      * line that says what disagreed.
      */
     Certificate
-    certify(const Result &result, const double tolerance);
+    certify(const Result &result, const double tolerance, const double bracket_agreement = 0);
 
     /** "fixed point", "bracket" or "none". */
     std::string

@@ -124,6 +124,8 @@ namespace fdem
       unsigned int max_iterations = 60;
       /** Below this K the search for a statically admissible K gives up. */
       double minimum_factor = 1e-3;
+      /** How far K* may exceed K_lo in a conservative bracket certificate. */
+      double bracket_agreement = 0.01;
       /** Recompute K with the moving blocks stiffer and softer. */
       bool stiffness_check = true;
       /** By how much stiffer and softer (> 1). */
