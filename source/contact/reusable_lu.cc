@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 
 extern "C"
 {
@@ -19,8 +21,72 @@ namespace fdem
   {
     namespace
     {
-      /** Below this the solution has no correct digit left (as before reuse). */
-      constexpr double singular_condition = 1e-14;
+      /**
+       * A matrix whose reciprocal condition estimate is at most this is
+       * singular to working precision (the unit round-off). Anything above
+       * is merely ill-conditioned: solved, refined, and judged by its
+       * backward error. The matrices are dimensionless (MixedSystem), so
+       * this says the same in any units.
+       */
+      constexpr double singular_condition = std::numeric_limits<double>::epsilon();
+
+      /** Steps of iterative refinement before a solve is judged. */
+      constexpr unsigned int n_refinement_steps = 3;
+
+      /**
+       * Solves B y = b, B = diag(s) A diag(s), for @p y (b on entry) by
+       * @p apply_inverse (an approximate B^{-1}, in place), refining by up
+       * to @p max_steps steps while the normwise backward error
+       * |b - B y|_inf / (|B|_inf |y|_inf + |b|_inf) exceeds @p tolerance.
+       * Returns that backward error (NaN if y is not finite).
+       */
+      double
+      refined_solve(const dealii::FullMatrix<double> &       A,
+                    const std::vector<double> &              s,
+                    const std::function<void(double *)> &    apply_inverse,
+                    std::vector<double> &                    y,
+                    const double                             tolerance,
+                    const unsigned int                       max_steps)
+      {
+        const unsigned int  n = A.m();
+        std::vector<double> b = y, r(n);
+        double              b_norm = 0, B_norm = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            b_norm     = std::max(b_norm, std::abs(b[i]));
+            double row = 0;
+            for (unsigned int j = 0; j < n; ++j)
+              row += std::abs(A(i, j) * s[i] * s[j]);
+            B_norm = std::max(B_norm, row);
+          }
+        const auto backward_error = [&]() {
+          double r_norm = 0, y_norm = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              double sum = 0;
+              for (unsigned int j = 0; j < n; ++j)
+                sum += A(i, j) * (s[j] * y[j]);
+              r[i]   = b[i] - s[i] * sum;
+              r_norm = std::max(r_norm, std::abs(r[i]));
+              y_norm = std::max(y_norm, std::abs(y[i]));
+            }
+          if (!std::isfinite(r_norm) || !std::isfinite(y_norm))
+            return std::numeric_limits<double>::quiet_NaN();
+          const double scale = B_norm * y_norm + b_norm;
+          return scale > 0 ? r_norm / scale : (r_norm > 0 ? 1.0 : 0.0);
+        };
+        apply_inverse(y.data());
+        double error = backward_error();
+        for (unsigned int step = 0; step < max_steps && std::isfinite(error) && error > tolerance;
+             ++step)
+          {
+            apply_inverse(r.data());
+            for (unsigned int i = 0; i < n; ++i)
+              y[i] += r[i];
+            error = backward_error();
+          }
+        return error;
+      }
 
       /**
        * S_ii = 1/sqrt(max_j max(|A_ij|, |A_ji|)): rows and columns alike,
@@ -82,15 +148,7 @@ namespace fdem
           // The very matrix that was factorised (and so the same scaling):
           // the same operations as right after its factorisation.
           result.reciprocal_condition = factorized_condition;
-          result.solved               = factorized_solved;
-          if (result.solved)
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                rhs[i] *= scale[i];
-              lu->solve(rhs);
-              for (unsigned int i = 0; i < n; ++i)
-                rhs[i] *= scale[i];
-            }
+          result.solved               = factorized_solved && solve_factorized(matrix, rhs, result);
           ++n_reused_solves;
           return result;
         }
@@ -132,15 +190,31 @@ namespace fdem
 
       Result result;
       result.reciprocal_condition = factorized_condition;
-      result.solved               = factorized_solved;
-      if (!result.solved)
-        return result;
-      for (unsigned int i = 0; i < n; ++i)
-        rhs[i] *= factorized_scale[i];
-      lu->solve(rhs);
-      for (unsigned int i = 0; i < n; ++i)
-        rhs[i] *= factorized_scale[i];
+      result.solved               = factorized_solved && solve_factorized(matrix, rhs, result);
       return result;
+    }
+
+    bool
+    ReusableLU::solve_factorized(const dealii::FullMatrix<double> &matrix,
+                                 dealii::Vector<double> &          rhs,
+                                 Result &                          result) const
+    {
+      // The factorised matrix itself: its factors, refined if need be (an
+      // ill-conditioned system is refined, not declared singular).
+      const unsigned int         n = matrix.m();
+      const std::vector<double> &s = factorized_scale;
+      std::vector<double>        y(n);
+      for (unsigned int i = 0; i < n; ++i)
+        y[i] = rhs[i] * s[i];
+      const double error = refined_solve(
+        matrix, s, [this](double *x) { lu->solve(x, 1); }, y,
+        control.backward_error_tolerance, n_refinement_steps);
+      result.backward_error = error;
+      if (!(error <= control.backward_error_tolerance))
+        return false;
+      for (unsigned int i = 0; i < n; ++i)
+        rhs[i] = s[i] * y[i];
+      return true;
     }
 
     bool
@@ -163,17 +237,6 @@ namespace fdem
             D[static_cast<std::size_t>(c) * n + j] =
               matrix(i, j) * s0[i] * s0[j] - factorized_matrix(i, j) * s0[i] * s0[j];
         }
-
-      // B x with B = S_0 A' S_0, from A' as it is.
-      const auto apply = [&](const std::vector<double> &x, std::vector<double> &y) {
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            double sum = 0;
-            for (unsigned int j = 0; j < n; ++j)
-              sum += matrix(i, j) * (s0[j] * x[j]);
-            y[i] = s0[i] * sum;
-          }
-      };
 
       // Z = B_0^{-1} P (column-major, n x k) and the capacitance I + D Z.
       std::vector<double> Z(static_cast<std::size_t>(k) * n, 0.0);
@@ -229,42 +292,13 @@ namespace fdem
       result.method = "Woodbury";
 
       // Solve B y = S_0 b, refine, and judge by the normwise backward error
-      // |r|_inf / (|B|_inf |y|_inf + |S_0 b|_inf).
-      std::vector<double> b(n), y(n), r(n), By(n);
-      double              b_norm = 0, B_norm = 0;
+      // |r|_inf / (|B|_inf |y|_inf + |S_0 b|_inf). Each refinement step
+      // costs one solve; two reach round-off here.
+      std::vector<double> y(n);
       for (unsigned int i = 0; i < n; ++i)
-        {
-          b[i]   = rhs[i] * s0[i];
-          b_norm = std::max(b_norm, std::abs(b[i]));
-          double row = 0;
-          for (unsigned int j = 0; j < n; ++j)
-            row += std::abs(matrix(i, j) * s0[i] * s0[j]);
-          B_norm = std::max(B_norm, row);
-        }
-      const auto backward_error = [&]() {
-        apply(y, By);
-        double r_norm = 0, y_norm = 0;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            r[i]   = b[i] - By[i];
-            r_norm = std::max(r_norm, std::abs(r[i]));
-            y_norm = std::max(y_norm, std::abs(y[i]));
-          }
-        const double scale = B_norm * y_norm + b_norm;
-        return scale > 0 ? r_norm / scale : (r_norm > 0 ? 1.0 : 0.0);
-      };
-      y = b;
-      apply_inverse(y.data());
-      double error = backward_error();
-      // Each refinement step costs one solve; two reach round-off here.
-      for (unsigned int step = 0; step < 2 && !(error <= control.backward_error_tolerance);
-           ++step)
-        {
-          apply_inverse(r.data());
-          for (unsigned int i = 0; i < n; ++i)
-            y[i] += r[i];
-          error = backward_error();
-        }
+        y[i] = rhs[i] * s0[i];
+      const double error =
+        refined_solve(matrix, s0, apply_inverse, y, control.backward_error_tolerance, 2);
       if (!(error <= control.backward_error_tolerance))
         return false;
 
