@@ -30,23 +30,36 @@ namespace fdem
        */
       constexpr double singular_condition = std::numeric_limits<double>::epsilon();
 
-      /** Steps of iterative refinement before a solve is judged. */
-      constexpr unsigned int n_refinement_steps = 3;
+      /** Most steps of iterative refinement of one solve (LAPACK's dgerfs: 5). */
+      constexpr unsigned int max_refinement_steps = 5;
+
+      /** The backward errors of a solution y of B y = b. */
+      struct BackwardErrors
+      {
+        /** |b - B y|_inf / (|B|_inf |y|_inf + |b|_inf): judges the solve. */
+        double normwise = 0;
+        /** max_i |b - B y|_i / (|B| |y| + |b|)_i: drives the refinement. */
+        double componentwise = 0;
+      };
 
       /**
        * Solves B y = b, B = diag(s) A diag(s), for @p y (b on entry) by
-       * @p apply_inverse (an approximate B^{-1}, in place), refining by up
-       * to @p max_steps steps while the normwise backward error
-       * |b - B y|_inf / (|B|_inf |y|_inf + |b|_inf) exceeds @p tolerance.
-       * Returns that backward error (NaN if y is not finite).
+       * @p apply_inverse (an approximate B^{-1}, in place), with iterative
+       * refinement as LAPACK's dgerfs does it: a step while the
+       * componentwise backward error is above the unit round-off and has at
+       * least halved since the last step, at most @p max_steps. The
+       * componentwise error makes each unknown accurate relative to its own
+       * size: the accuracy of the small forces beside a large rigid motion
+       * then depends neither on the scaling of the unknowns nor on their
+       * units (Skeel 1980, Math. Comp. 35, 817-832). Returns both errors
+       * (NaN if y is not finite).
        */
-      double
-      refined_solve(const dealii::FullMatrix<double> &       A,
-                    const std::vector<double> &              s,
-                    const std::function<void(double *)> &    apply_inverse,
-                    std::vector<double> &                    y,
-                    const double                             tolerance,
-                    const unsigned int                       max_steps)
+      BackwardErrors
+      refined_solve(const dealii::FullMatrix<double> &    A,
+                    const std::vector<double> &           s,
+                    const std::function<void(double *)> & apply_inverse,
+                    std::vector<double> &                 y,
+                    const unsigned int                    max_steps)
       {
         const unsigned int  n = A.m();
         std::vector<double> b = y, r(n);
@@ -59,33 +72,58 @@ namespace fdem
               row += std::abs(A(i, j) * s[i] * s[j]);
             B_norm = std::max(B_norm, row);
           }
-        const auto backward_error = [&]() {
-          double r_norm = 0, y_norm = 0;
+        const double nan            = std::numeric_limits<double>::quiet_NaN();
+        const auto   backward_error = [&]() {
+          BackwardErrors errors;
+          double         r_norm = 0, y_norm = 0;
           for (unsigned int i = 0; i < n; ++i)
             {
-              double sum = 0;
+              double sum = 0, size = 0;
               for (unsigned int j = 0; j < n; ++j)
-                sum += A(i, j) * (s[j] * y[j]);
+                {
+                  const double term = A(i, j) * (s[j] * y[j]);
+                  sum += term;
+                  size += std::abs(term);
+                }
               r[i]   = b[i] - s[i] * sum;
               r_norm = std::max(r_norm, std::abs(r[i]));
               y_norm = std::max(y_norm, std::abs(y[i]));
+              size   = std::abs(s[i]) * size + std::abs(b[i]);
+              if (size > 0)
+                errors.componentwise = std::max(errors.componentwise, std::abs(r[i]) / size);
+              else if (r[i] != 0)
+                errors.componentwise = nan;
             }
           if (!std::isfinite(r_norm) || !std::isfinite(y_norm))
-            return std::numeric_limits<double>::quiet_NaN();
+            return BackwardErrors{nan, nan};
           const double scale = B_norm * y_norm + b_norm;
-          return scale > 0 ? r_norm / scale : (r_norm > 0 ? 1.0 : 0.0);
+          errors.normwise    = scale > 0 ? r_norm / scale : (r_norm > 0 ? 1.0 : 0.0);
+          return errors;
         };
         apply_inverse(y.data());
-        double error = backward_error();
-        for (unsigned int step = 0; step < max_steps && std::isfinite(error) && error > tolerance;
+        BackwardErrors errors = backward_error();
+        std::vector<double> previous_y;
+        for (unsigned int step = 0;
+             step < max_steps && errors.componentwise > std::numeric_limits<double>::epsilon();
              ++step)
           {
+            previous_y = y;
             apply_inverse(r.data());
             for (unsigned int i = 0; i < n; ++i)
               y[i] += r[i];
-            error = backward_error();
+            const BackwardErrors next = backward_error();
+            if (!(next.componentwise <= 0.5 * errors.componentwise))
+              {
+                // No longer halving: keep the better of the two.
+                if (!(next.componentwise <= errors.componentwise))
+                  y = previous_y;
+                else
+                  errors = next;
+                break;
+              }
+            errors = next;
           }
-        return error;
+        return errors;
       }
 
       /**
@@ -206,11 +244,10 @@ namespace fdem
       std::vector<double>        y(n);
       for (unsigned int i = 0; i < n; ++i)
         y[i] = rhs[i] * s[i];
-      const double error = refined_solve(
-        matrix, s, [this](double *x) { lu->solve(x, 1); }, y,
-        control.backward_error_tolerance, n_refinement_steps);
-      result.backward_error = error;
-      if (!(error <= control.backward_error_tolerance))
+      const BackwardErrors errors =
+        refined_solve(matrix, s, [this](double *x) { lu->solve(x, 1); }, y, max_refinement_steps);
+      result.backward_error = errors.normwise;
+      if (!(errors.normwise <= control.backward_error_tolerance))
         return false;
       for (unsigned int i = 0; i < n; ++i)
         rhs[i] = s[i] * y[i];
@@ -293,12 +330,12 @@ namespace fdem
 
       // Solve B y = S_0 b, refine, and judge by the normwise backward error
       // |r|_inf / (|B|_inf |y|_inf + |S_0 b|_inf). Each refinement step
-      // costs one solve; two reach round-off here.
+      // costs one solve with the updated factors.
       std::vector<double> y(n);
       for (unsigned int i = 0; i < n; ++i)
         y[i] = rhs[i] * s0[i];
-      const double error =
-        refined_solve(matrix, s0, apply_inverse, y, control.backward_error_tolerance, 2);
+      const BackwardErrors errors = refined_solve(matrix, s0, apply_inverse, y, max_refinement_steps);
+      const double         error  = errors.normwise;
       if (!(error <= control.backward_error_tolerance))
         return false;
 
