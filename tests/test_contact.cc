@@ -102,6 +102,8 @@ TEST(InclinedBlock, BelowTheLimitThereIsNoEquilibrium)
       EXPECT_TRUE(model->contact_outcome.result == contact::ContactResult::singular ||
                   model->contact_outcome.result == contact::ContactResult::runaway)
         << contact::result_description(model->contact_outcome.result);
+      // A mechanism, not a numerical breakdown (doc/theory.md).
+      EXPECT_TRUE(model->contact_outcome.is_mechanism());
     }
   std::ostringstream log;
   const auto model = test_support::solved_model<2>(inclined_block(30, 20), log);
@@ -117,6 +119,7 @@ TEST(StatusIteration, StopsAtTheIterationLimit)
   const auto model = test_support::solved_model<2>(parameters, log);
   EXPECT_EQ(model->contact_outcome.result, contact::ContactResult::iteration_limit);
   EXPECT_EQ(model->contact_outcome.iterations.size(), 2u);
+  EXPECT_FALSE(model->contact_outcome.is_mechanism());
 }
 
 TEST(CattaneoMindlin, StickZoneAndTangentialTractions)

@@ -159,6 +159,8 @@ namespace fdem
     void
     MixedSystem<dim>::set_diagonal_scales()
     {
+      // Also after set_moving_compliance_scale(): the scales are then those
+      // of a model whose moving blocks have the scaled moduli.
       if (solver_type == MixedSystemSolver::dense)
         for (unsigned int p = 0; p < pairs.size(); ++p)
           for (unsigned int i = 0; i < dim; ++i)
@@ -171,9 +173,38 @@ namespace fdem
             max_diagonal = std::max(max_diagonal, C_pp[i][i]);
             sum_diagonal += C_pp[i][i];
           }
+      // A direction whose flexibility is 1e-12 of the largest is held: a
+      // ratio of flexibilities, the same in any units and for any E.
       held_flexibility = 1e-12 * max_diagonal;
+      const unsigned int n_forces = dim * pairs.size();
+      const unsigned int n_rigid  = rigid_loads.size();
       if (sum_diagonal > 0)
-        mean_flexibility = sum_diagonal / (dim * pairs.size());
+        mean_flexibility = sum_diagonal / n_forces;
+
+      // The scales of the dimensionless system (doc/theory.md, "Scale-free
+      // decisions"). F_0: the largest total load of a block, a force that
+      // no modulus enters (the 1-norm of the nodal loads: the load's
+      // magnitude however it is directed). Without any load (only gaps or
+      // prescribed displacements drive the model) the force that closes
+      // the largest relative displacement elastically.
+      scales.flexibility = mean_flexibility;
+      scales.force       = 0;
+      for (const auto &block : blocks)
+        scales.force = std::max(scales.force, block->load_vector.l1_norm());
+      if (!(scales.force > 0))
+        scales.force = external_gap.linfty_norm() / scales.flexibility;
+      if (!(scales.force > 0) || !std::isfinite(scales.force))
+        scales.force = 1; // nothing loads the model: every force is zero
+      scales.displacement = scales.flexibility * scales.force;
+      scales.rigid.assign(n_rigid, 1.0);
+      for (unsigned int m = 0; m < n_rigid; ++m)
+        {
+          double largest = 0;
+          for (unsigned int j = 0; j < n_forces; ++j)
+            largest = std::max(largest, std::abs(rigid_coupling(j, m)));
+          if (largest > 0)
+            scales.rigid[m] = largest;
+        }
     }
 
     template <int dim>
@@ -265,7 +296,25 @@ namespace fdem
       std::vector<PairRows<dim>> rows(pairs.size());
       for (unsigned int p = 0; p < pairs.size(); ++p)
         rows[p] = pair_rows(states[p], strengths[p], self_flexibility[p], held_flexibility);
-      return solver_type == MixedSystemSolver::dense ? solve_dense(rows) : solve_iterative(rows);
+      // Whether the free modes can be held at all is a question of
+      // mechanics, answered on the small dimensionless rigid-mode system
+      // before any factorisation: a mechanism is never left to the
+      // condition number of the whole system (doc/theory.md).
+      const RigidModeTest test =
+        rigid_mode_test(rigid_coupling, rigid_loads, rows, scales, rigid_mode_tolerance);
+      ContactSolution solution;
+      if (!test.holds)
+        {
+          unsolved(solution);
+          solution.failure              = SolveFailure::mechanism;
+          solution.reciprocal_condition = 0;
+          solution.factorized           = false;
+        }
+      else
+        solution =
+          solver_type == MixedSystemSolver::dense ? solve_dense(rows) : solve_iterative(rows);
+      solution.rigid_modes = test;
+      return solution;
     }
 
     template <int dim>
@@ -307,11 +356,37 @@ namespace fdem
           rhs[n_forces + r] = -rigid_loads[r];
         }
 
-      // The rows and columns are scaled so that forces and rigid motions,
-      // whose units differ, weigh alike in the factorisation and in the
-      // condition estimate; the factors of an earlier system are reused
-      // while few rows have changed (ReusableLU).
+      // The dimensionless system D_r A D_c (D_c x~) = D_r b: unknowns f / F_0
+      // and gamma_m w_m / u_0, pair rows over their magnitudes, rigid rows
+      // over w_m F_0 (doc/theory.md, "Scale-free decisions"). Its entries
+      // are the same in any units and for any common E, so that what the
+      // factorisation decides (pivots, reuse, refinement) is too.
+      // ReusableLU equilibrates it further and reuses the factors of an
+      // earlier system while few rows have changed.
+      std::vector<double> row_scale(n), column_scale(n);
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        {
+          const Tensor<1, dim> rho = row_magnitudes(rows[p], scales);
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              row_scale[dim * p + i]    = 1.0 / rho[i];
+              column_scale[dim * p + i] = scales.force;
+            }
+        }
+      for (unsigned int r = 0; r < n_rigid; ++r)
+        {
+          row_scale[n_forces + r]    = 1.0 / (scales.rigid[r] * scales.force);
+          column_scale[n_forces + r] = scales.displacement / scales.rigid[r];
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          rhs[i] *= row_scale[i];
+          for (unsigned int j = 0; j < n; ++j)
+            matrix(i, j) *= row_scale[i] * column_scale[j];
+        }
       const ReusableLU::Result result = lu.solve(matrix, rhs);
+      for (unsigned int i = 0; i < n; ++i)
+        rhs[i] *= column_scale[i];
 
       ContactSolution solution;
       solution.reciprocal_condition   = result.reciprocal_condition;
@@ -319,12 +394,16 @@ namespace fdem
       solution.n_changed_rows         = result.n_changed_rows;
       solution.why_factorized         = result.why_factorized;
       solution.reuse_method           = result.method != nullptr ? result.method : "";
-      // Below rcond = 1e-14 the solution has no correct digit left.
+      // The rigid modes can be held (solve()): a system ReusableLU could
+      // not solve to its backward error is a numerical breakdown.
       solution.solved = result.solved;
       if (solution.solved)
         finish_solution(rhs, solution);
       else
-        unsolved(solution);
+        {
+          unsolved(solution);
+          solution.failure = SolveFailure::numerical;
+        }
       return solution;
     }
 

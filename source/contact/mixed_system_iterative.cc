@@ -2,14 +2,15 @@
 // Copyright (C) 2026 the fdem-slope authors
 //
 // The iterative solver of the mixed system: C is never formed. GMRES works
-// on x = [f; gamma / c_mean] (the rigid unknowns as forces, c_mean the mean
-// self-flexibility, so that the norm it reduces weighs both alike). Each
+// on x = [f; gamma w / c_0] (the rigid unknowns as forces: w_m the largest
+// relative motion of mode m, c_0 the mean self-flexibility, so that the
+// norm it reduces weighs both alike in any units). Each
 // iteration applies C once (one solve of every block a pair touches). The
 // preconditioner is the same system with C replaced by the pairs' own
 // blocks of P C P (P onto ker W^T), solved exactly: per pair
 // M_p = G_p D_p + F_p (dim x dim), and the rigid unknowns from a small
-// system S. S is where a free block that nothing holds shows up: S singular
-// means the mixed system is too (no static equilibrium). A coarse
+// system S. Whether the free blocks can be held at all is decided before,
+// on the rigid modes (MixedSystem::solve, RigidModeTest). A coarse
 // correction on groups of neighbouring pairs takes care of the smooth force
 // patterns, which the pairs' blocks precondition worst.
 #include <fdem/contact/dense_lu.h>
@@ -49,7 +50,10 @@ namespace fdem
       const unsigned int n_rigid  = rigid_loads.size();
       const unsigned int n        = n_forces + n_rigid;
       const unsigned int n_pairs  = pairs.size();
-      const double       scale    = mean_flexibility; // gamma = scale x_r
+      // gamma_r = rigid_scale[r] x_r: x_r = gamma_r w_r / c_0 is a force.
+      std::vector<double> rigid_scale(n_rigid);
+      for (unsigned int r = 0; r < n_rigid; ++r)
+        rigid_scale[r] = mean_flexibility / scales.rigid[r];
 
       ContactSolution solution;
       solution.factorized = false;
@@ -72,7 +76,7 @@ namespace fdem
         for (unsigned int i = 0; i < n_forces; ++i)
           f[i] = x[i];
         for (unsigned int r = 0; r < n_rigid; ++r)
-          gamma[r] = scale * x[n_forces + r];
+          gamma[r] = rigid_scale[r] * x[n_forces + r];
         vmult_flexibility(d, f);
         rigid_coupling.vmult(w, gamma);
         d -= w;
@@ -95,24 +99,31 @@ namespace fdem
           }
       }};
 
-      // The preconditioner: M_p^{-1}, H_p = M_p^{-1} G_p W'_p (W' = scale W),
-      // and S = sum_p W_p^T H_p.
+      // The preconditioner: M_p^{-1}, H_p = M_p^{-1} G_p W'_p (W' = W
+      // diag(rigid_scale)), and S = diag(1/w) sum_p W_p^T H_p (dimensionless).
+      // M_p's invertibility is judged on its rows over their magnitudes
+      // (row_magnitudes), which are dimensionless.
       std::vector<Tensor<2, dim>> M_inverse(n_pairs);
       FullMatrix<double>          H(n_forces, n_rigid);
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
-          const Tensor<2, dim> M    = rows[p].gap * projected_self_flexibility[p] + rows[p].force;
-          const double         size = M.norm();
+          const Tensor<2, dim> M   = rows[p].gap * projected_self_flexibility[p] + rows[p].force;
+          const Tensor<1, dim> rho = row_magnitudes(rows[p], scales);
+          Tensor<2, dim>       M_scaled; // rows over rho, columns times F_0
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int k = 0; k < dim; ++k)
+              M_scaled[i][k] = M[i][k] * scales.force / rho[i];
+          const double size = M_scaled.norm();
           // A pair whose block is singular (no such state is known) is
           // preconditioned by the identity: GMRES still solves the true system.
-          M_inverse[p] = std::abs(determinant(M)) > 1e-14 * std::pow(size, dim) ?
+          M_inverse[p] = std::abs(determinant(M_scaled)) > 1e-14 * std::pow(size, dim) ?
                            invert(M) :
                            Tensor<2, dim>(unit_symmetric_tensor<dim>());
           const Tensor<2, dim> MG = M_inverse[p] * rows[p].gap;
           for (unsigned int r = 0; r < n_rigid; ++r)
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int k = 0; k < dim; ++k)
-                H(dim * p + i, r) += MG[i][k] * scale * rigid_coupling(dim * p + k, r);
+                H(dim * p + i, r) += MG[i][k] * rigid_scale[r] * rigid_coupling(dim * p + k, r);
         }
       std::unique_ptr<DenseLU> rigid_lu;
       solution.reciprocal_condition = 1;
@@ -120,13 +131,17 @@ namespace fdem
         {
           FullMatrix<double> S(n_rigid, n_rigid);
           rigid_coupling.Tmmult(S, H);
+          for (unsigned int r = 0; r < n_rigid; ++r)
+            for (unsigned int c = 0; c < n_rigid; ++c)
+              S(r, c) /= scales.rigid[r];
           rigid_lu = std::make_unique<DenseLU>(S);
           solution.reciprocal_condition = rigid_lu->reciprocal_condition_number();
-          // As for the dense solver: below 1e-14 no digit is left, and the
-          // free modes are not held by the pairs in these states.
-          if (!(solution.reciprocal_condition > 1e-14))
+          // The rigid modes can be held (RigidModeTest): a preconditioner
+          // whose rigid part has no inverse is a numerical breakdown.
+          if (!rigid_lu->factorized())
             {
               unsolved(solution);
+              solution.failure = SolveFailure::numerical;
               return solution;
             }
         }
@@ -143,7 +158,7 @@ namespace fdem
           {
             rigid_coupling.Tvmult(coarse_rhs, t);
             for (unsigned int c = 0; c < n_rigid; ++c)
-              coarse_rhs[c] = -r[n_forces + c] - coarse_rhs[c];
+              coarse_rhs[c] = (-r[n_forces + c] - coarse_rhs[c]) / scales.rigid[c];
             rigid_lu->solve(coarse_rhs);
             H.vmult_add(t, coarse_rhs);
             for (unsigned int c = 0; c < n_rigid; ++c)
@@ -239,6 +254,7 @@ namespace fdem
               n_krylov_iterations += control.last_step();
               solution.reciprocal_condition = 0;
               unsolved(solution);
+              solution.failure = SolveFailure::numerical;
               return solution;
             }
           solution.n_krylov_iterations = control.last_step();
@@ -246,7 +262,7 @@ namespace fdem
         }
       last_iterate = x;
       for (unsigned int r = 0; r < n_rigid; ++r)
-        x[n_forces + r] *= scale;
+        x[n_forces + r] *= rigid_scale[r];
       solution.solved = true;
       finish_solution(x, solution);
       return solution;

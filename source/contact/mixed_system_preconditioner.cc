@@ -40,7 +40,13 @@ namespace fdem
           FullMatrix<double> WW(n_rigid, n_rigid);
           rigid_coupling.Tmmult(WW, rigid_coupling);
           const DenseLU WW_lu(WW);
-          if (WW_lu.reciprocal_condition_number() > 1e-12)
+          // Whether W has full rank is judged on its columns over their
+          // largest entries (translations and rotations differ in units).
+          FullMatrix<double> WW_scaled(n_rigid, n_rigid);
+          for (unsigned int r = 0; r < n_rigid; ++r)
+            for (unsigned int c = 0; c < n_rigid; ++c)
+              WW_scaled(r, c) = WW(r, c) / (scales.rigid[r] * scales.rigid[c]);
+          if (DenseLU(WW_scaled).reciprocal_condition_number() > 1e-12)
             {
               std::vector<Vector<double>> W(n_rigid, Vector<double>(n_forces));
               for (unsigned int r = 0; r < n_rigid; ++r)

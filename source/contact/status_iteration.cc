@@ -19,9 +19,14 @@ namespace fdem
           case ContactResult::converged:
             return "converged";
           case ContactResult::singular:
-            return "singular system: no static equilibrium";
+            return "no rigid-mode equilibrium under the current statuses (a mechanism): "
+                   "no static equilibrium";
           case ContactResult::runaway:
-            return "runaway solution: no static equilibrium";
+            return "runaway solution (the rigid motion grows without bound, a mechanism): "
+                   "no static equilibrium";
+          case ContactResult::numerical_breakdown:
+            return "numerical breakdown: the mixed system could not be solved to accuracy "
+                   "although the rigid modes can be held (not a mechanism)";
           default:
             return "status iteration limit reached";
         }
@@ -166,9 +171,12 @@ namespace fdem
       std::vector<bool>   tried_closed(n_pairs, false);
       std::vector<std::vector<PairState<dim>>> history;
 
-      // Scales for the checks: forces by the pairs' strengths and loads,
-      // gaps by the elastic relative displacements.
-      const double gap_scale = std::max(system.external_gap.linfty_norm(), 1e-300);
+      // Scales for the checks: forces by the largest pair force, gaps by
+      // the elastic relative displacements; where those are zero, by the
+      // model's characteristic force and displacement (SystemScales). All
+      // tolerances are fractions of them, dimensionless.
+      const double external_gap = system.external_gap.linfty_norm();
+      const double gap_scale    = external_gap > 0 ? external_gap : system.scales.displacement;
 
       for (unsigned int iteration = 0;; ++iteration)
         {
@@ -187,7 +195,8 @@ namespace fdem
             std::all_of(states.begin(), states.end(), [](const PairState<dim> &state) {
               return state.status == PairStatus::open;
             });
-          if (!solution.solved && all_open)
+          const bool mechanism = !solution.solved && solution.failure == SolveFailure::mechanism;
+          if (mechanism && all_open)
             {
               unsigned int n_closed = 0;
               for (unsigned int p = 0; p < n_pairs; ++p)
@@ -199,7 +208,7 @@ namespace fdem
                   }
               if (n_closed > 0)
                 {
-                  log << "    singular system with open pairs: " << n_closed
+                  log << "    no rigid-mode equilibrium with every pair open: " << n_closed
                       << " of them closed to hold the blocks" << std::endl;
                   history.clear();
                   continue;
@@ -207,7 +216,25 @@ namespace fdem
             }
           if (!solution.solved)
             {
-              outcome.result = ContactResult::singular;
+              const RigidModeTest &test = solution.rigid_modes;
+              if (mechanism)
+                {
+                  log << "    no rigid-mode equilibrium: singular-value ratio of the "
+                         "equilibrium matrix "
+                      << test.equilibrium_ratio << ", of the kinematic matrix "
+                      << test.kinematic_ratio;
+                  if (test.equilibrium_ratio <= system.rigid_mode_tolerance)
+                    log << ", unbalanced load " << test.unbalanced_load;
+                  log << std::endl;
+                }
+              else
+                log << "    numerical breakdown: the rigid modes can be held (singular-value "
+                       "ratios "
+                    << test.equilibrium_ratio << ", " << test.kinematic_ratio
+                    << ") but the system was not solved to accuracy (reciprocal condition "
+                    << solution.reciprocal_condition << ")" << std::endl;
+              outcome.result =
+                mechanism ? ContactResult::singular : ContactResult::numerical_breakdown;
               outcome.iterations.push_back(record);
               outcome.states   = states;
               outcome.solution = solution;
@@ -230,7 +257,8 @@ namespace fdem
               break;
             }
 
-          const double force_scale = std::max(solution.forces.linfty_norm(), 1e-300);
+          const double largest_force = solution.forces.linfty_norm();
+          const double force_scale   = largest_force > 0 ? largest_force : system.scales.force;
           const double force_tolerance = 1e-10 * force_scale;
           const double gap_tolerance   = 1e-10 * elastic_scale;
           const Vector<double> &f = solution.forces;

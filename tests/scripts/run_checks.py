@@ -34,6 +34,15 @@
                                          folders: the same safety factor to
                                          1e-10 relative, one log, the same output
                                          files with the same number of cells
+  run_checks.py invariance EXE REF.prm OTHER.prm...
+                                         the same model in other units or
+                                         with another common Young's modulus:
+                                         every run completes with the same K
+                                         as REF to 1e-8 relative, the same
+                                         safety-factor steps (contact result
+                                         and stick/slip/open counts of each)
+                                         and the same final statuses of every
+                                         interface
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -329,6 +338,42 @@ def check_wedge(exe, prm, tolerance="1e-5", max_share="0.05"):
         assert abs(share) <= float(max_share), "the plane that lifts off still carries the wedge"
 
 
+def check_invariance(exe, reference, *others):
+    """Runs REF and OTHERS; all must agree (see the usage above)."""
+    def outcome(prm):
+        with tempfile.TemporaryDirectory() as workdir:
+            result = run(exe, prm, workdir)
+            assert result.returncode == 0, f"{prm}: exit {result.returncode}: {result.stderr}"
+            case = os.path.splitext(os.path.basename(prm))[0]
+            summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
+        assert summary["status"] == "completed", f"{prm}: {summary['status']}"
+        steps = [(s["contact_result"], s["n_stick"], s["n_slip"], s["n_open"])
+                 for s in summary["iterations"]]
+        statuses = {i["name"]: (i["n_stick"], i["n_slip"], i["n_open"])
+                    for i in summary["interfaces"]}
+        return summary["safety_factor"], steps, statuses
+
+    # Two runs at a time: most of a small run's time is the program's start.
+    from concurrent.futures import ThreadPoolExecutor
+    with ThreadPoolExecutor(2) as pool:
+        results = list(pool.map(outcome, (reference,) + others))
+    K_ref, steps_ref, statuses_ref = results[0]
+    print(f"{os.path.basename(reference)}: K = {K_ref!r}, {len(steps_ref)} steps, "
+          f"statuses {statuses_ref}")
+    failures = []
+    for prm, (K, steps, statuses) in zip(others, results[1:]):
+        difference = K / K_ref - 1
+        print(f"{os.path.basename(prm)}: K = {K!r} ({difference:+.2e}), {len(steps)} steps, "
+              f"statuses {statuses}")
+        if not abs(difference) <= 1e-8:
+            failures.append(f"{prm}: K = {K!r}, {difference:+.2e} from {K_ref!r}")
+        if steps != steps_ref:
+            failures.append(f"{prm}: safety-factor steps {steps} differ from {steps_ref}")
+        if statuses != statuses_ref:
+            failures.append(f"{prm}: statuses {statuses} differ from {statuses_ref}")
+    assert not failures, "\n".join(failures)
+
+
 def vtu_cells(path):
     import vtk
     reader = vtk.vtkXMLUnstructuredGridReader()
@@ -401,5 +446,6 @@ if __name__ == "__main__":
          "deterministic": check_deterministic,
          "wedge": check_wedge, "mpi": check_mpi,
          "certified": check_certified,
-         "stiffness-consistency": check_stiffness_consistency}[command](exe, path, *sys.argv[4:])
+         "stiffness-consistency": check_stiffness_consistency,
+         "invariance": check_invariance}[command](exe, path, *sys.argv[4:])
     print("passed")

@@ -7,6 +7,7 @@
 #include <fdem/contact/interface_pairs.h>
 #include <fdem/contact/pair_rows.h>
 #include <fdem/contact/reusable_lu.h>
+#include <fdem/contact/scaling.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -20,6 +21,26 @@ namespace fdem
   {
     using namespace dealii;
 
+    /** Why a solve of the mixed system has no solution. */
+    enum class SolveFailure
+    {
+      /** It has one. */
+      none,
+      /**
+       * The free rigid modes cannot be held under the pairs' states
+       * (RigidModeTest): the system is singular for a mechanical reason,
+       * in any units.
+       */
+      mechanism,
+      /**
+       * The rigid modes can be held, but the system could not be solved to
+       * accuracy (a fresh factorisation and iterative refinement did not
+       * reach the backward error, a pivot vanished, or GMRES did not
+       * converge): a numerical breakdown, not a statement about mechanics.
+       */
+      numerical
+    };
+
     /** A solution of the mixed system: pair forces and rigid motions. */
     struct ContactSolution
     {
@@ -31,10 +52,18 @@ namespace fdem
       Vector<double> relative_displacements;
       /** The elastic part C f of the relative displacements. */
       Vector<double> elastic_displacements;
-      /** Estimate of the reciprocal condition number of the scaled system. */
+      /**
+       * Estimate of the reciprocal condition number of the dimensionless
+       * system (SystemScales, then equilibrated). Information only: it
+       * decides nothing below machine precision (doc/theory.md).
+       */
       double reciprocal_condition = 1;
-      /** False if the system was singular (no static equilibrium). */
+      /** False if the system has no solution: see failure. */
       bool solved = true;
+      /** Why not, if not solved. */
+      SolveFailure failure = SolveFailure::none;
+      /** The rigid-mode test of the pairs' states in this solve. */
+      RigidModeTest rigid_modes;
       /** True if the system was LU-factorised for this solve (not reused). */
       bool factorized = true;
       /** Rows that differ from the last factorised system. */
@@ -178,6 +207,20 @@ namespace fdem
       /** Controls of the iterative solver. */
       KrylovControl krylov_control;
 
+      /**
+       * The characteristic force, flexibility, displacement and rigid-mode
+       * scales of this model: every decision on the system is taken on
+       * quantities divided by them (doc/theory.md, "Scale-free decisions").
+       */
+      SystemScales scales;
+
+      /**
+       * A rank of the dimensionless rigid-mode matrices (RigidModeTest) is
+       * deficient where their smallest singular value is below this
+       * fraction of the largest.
+       */
+      double rigid_mode_tolerance = 1e-10;
+
       /** Products C f computed so far (the iterative solver's block solves). */
       mutable unsigned long n_flexibility_products = 0;
       /** GMRES iterations so far. */
@@ -267,7 +310,10 @@ namespace fdem
       /** The current scale of the moving blocks' compliance. */
       double moving_compliance_scale = 1;
 
-      /** self_flexibility and the scales derived from C's diagonal. */
+      /**
+       * self_flexibility, held_flexibility, mean_flexibility and the scales
+       * of the dimensionless system, from C, g_bar and W.
+       */
       void
       set_diagonal_scales();
 

@@ -41,8 +41,15 @@ namespace fdem
      * when the backward error stays above its tolerance, when the
      * capacitance matrix I_k + D' Z is singular, or when the estimate (or
      * that of the factorised matrix) falls below min_reused_condition: a
-     * system near singularity is judged by a fresh factorisation and dgecon,
-     * exactly as without reuse.
+     * system near singularity is judged on a fresh factorisation, exactly
+     * as without reuse. That judgement: singular to working precision
+     * (dgecon's estimate at most the unit round-off, or a zero pivot), or
+     * a solution that iterative refinement (three steps) cannot bring to the
+     * backward error tolerance; a system that is merely ill-conditioned is
+     * solved. MixedSystem hands it dimensionless matrices, so that none of
+     * these verdicts depends on units; whether the system is singular for a
+     * mechanical reason is decided before, on the rigid modes
+     * (RigidModeTest).
      *
      * (GMRES right-preconditioned by the old factors, for many rows changed
      * by little as 3D slip rows are, was tried and measured slower than a
@@ -64,14 +71,18 @@ namespace fdem
          * long near k = 0.12-0.15 n.
          */
         double max_changed_fraction = 0.1;
-        /** Largest normwise backward error accepted from a reused solve. */
+        /**
+         * Largest normwise backward error accepted from any solve, after
+         * iterative refinement (up to two steps for a reused solve, three
+         * for the factorised matrix itself).
+         */
         double backward_error_tolerance = 1e-14;
         /**
          * Below this reciprocal condition estimate a reused solve is
-         * replaced by a fresh factorisation, so that the singularity verdict
-         * (rcond <= 1e-14) is dgecon's: two estimates by the same estimator
-         * (dlacn2) of the same number differ by far less than the factor 100
-         * left here. (The rock wedge's systems have rcond ~ 1e-10.)
+         * replaced by a fresh factorisation, so that an ill-conditioned
+         * system is always solved from its own factors: two estimates by the
+         * same estimator (dlacn2) of the same number differ by far less than
+         * the factor left here. (The rock wedge's systems have rcond ~ 1e-10.)
          */
         double min_reused_condition = 1e-12;
         /** False: factorise every matrix (the behaviour without reuse). */
@@ -83,7 +94,11 @@ namespace fdem
       {
         /** Reciprocal condition estimate (1-norm) of S A S. */
         double reciprocal_condition = 1;
-        /** False if A was singular: no solution. */
+        /**
+         * False if A is singular to working precision (reciprocal condition
+         * at most the unit round-off, or a zero pivot) or if no solution
+         * reached the backward error tolerance after refinement.
+         */
         bool solved = true;
         /** True if A was factorised for this solve. */
         bool factorized = true;
@@ -126,6 +141,15 @@ namespace fdem
       factorize_and_solve(const dealii::FullMatrix<double> &matrix,
                           std::vector<double>             scale,
                           dealii::Vector<double> &          rhs);
+
+      /**
+       * Solves the factorised matrix itself with its factors and iterative
+       * refinement; false if the backward error stays above its tolerance.
+       */
+      bool
+      solve_factorized(const dealii::FullMatrix<double> &matrix,
+                       dealii::Vector<double> &          rhs,
+                       Result &                          result) const;
 
       /** Solves with the stored factors updated by k changed rows; false if not accurate. */
       bool

@@ -18,12 +18,26 @@ namespace fdem
     {
       /** A fixed point: every pair's state is consistent with its forces and gaps. */
       converged,
-      /** The mixed system is singular: no static equilibrium. */
+      /**
+       * The free rigid modes have no equilibrium under the current statuses
+       * (RigidModeTest: the dimensionless rigid-mode system is rank
+       * deficient), which makes the mixed system singular: a mechanism.
+       */
       singular,
-      /** The solution runs away (rigid motion far beyond the elastic scale): no static equilibrium. */
+      /**
+       * The solution runs away: the rigid relative motion exceeds the
+       * runaway factor times the elastic relative displacements, a motion
+       * that grows without bound (a mechanism).
+       */
       runaway,
       /** The iteration limit was reached. */
-      iteration_limit
+      iteration_limit,
+      /**
+       * The rigid modes can be held, but a solve of the mixed system did not
+       * reach its accuracy (SolveFailure::numerical): a numerical breakdown,
+       * which says nothing about the mechanics.
+       */
+      numerical_breakdown
     };
 
     /** A short sentence for each result. */
@@ -66,9 +80,11 @@ namespace fdem
       }
 
       /**
-       * Whether a failed solve is a mechanism: the blocks move without
-       * bound under these strengths (no static equilibrium), rather than a
-       * numerical breakdown.
+       * True only if the failure is mechanical: no rigid-mode equilibrium
+       * under the statuses reached (singular, established on the
+       * dimensionless rigid-mode system, the same in any units and for any
+       * common E), or a runaway. False when converged, at the iteration
+       * limit, and for a numerical breakdown.
        */
       bool
       is_mechanism() const
@@ -83,7 +99,9 @@ namespace fdem
       unsigned int max_iterations = 100;
       /**
        * A solution whose rigid relative motion exceeds this many times the
-       * elastic scale (|g_bar|, |C f|) has run away (Sec. 6.4).
+       * elastic scale (|g_bar|, |C f|) has run away (Sec. 6.4). A ratio of
+       * two displacements, both proportional to 1/E: the same in any units
+       * and for any common E.
        */
       double runaway_factor = 1e6;
     };

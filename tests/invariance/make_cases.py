@@ -1,0 +1,145 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Writes the .prm files of the invariance tests (run once; the files are
+committed, run_checks.py invariance runs them).
+
+Each file includes a case of prm/ and overrides only what its units or a
+common Young's modulus change; all files of a case share a coarse mesh and
+write no VTU, so that the runs are quick and compare the same discrete model.
+
+Unit sets, from the cases' kN, m, kPa:
+  N_m_Pa     forces x 1e3, lengths x 1, stresses x 1e3, unit weights x 1e3
+  N_mm_MPa   forces x 1e3, lengths x 1e3 (Geometry/Scale factor),
+             stresses x 1e-3, unit weights x 1e-6
+  lbf_ft_psf forces / 4.4482216152605e-3 (lbf = 4.4482216152605 N exactly),
+             lengths / 0.3048 (ft = 0.3048 m exactly), stresses and unit
+             weights from those
+Common E: both blocks' Young's modulus set to 1e-8, 1e-2, 1e8 and 1e14 (kPa),
+the rest as in kN, m, kPa. K must be the same in all of them: every decision
+of the program is taken on dimensionless numbers (doc/theory.md,
+"Scale-free decisions").
+
+Usage: tests/invariance/make_cases.py   (writes next to itself)
+"""
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+FOOT = 0.3048  # m
+POUND_FORCE = 4.4482216152605e-3  # kN
+
+# name: (force factor, length factor) from kN and m
+UNITS = {
+    "N_m_Pa": (1e3, 1.0),
+    "N_mm_MPa": (1e3, 1e3),
+    "lbf_ft_psf": (1 / POUND_FORCE, 1 / FOOT),
+}
+COMMON_E = ["1e-8", "1e-2", "1e8", "1e14"]
+
+
+def num(x):
+    return repr(float(x))
+
+
+# Each case: the prm/ file, the blocks, the entries of the reference
+# (kN, m, kPa) that make it quick, and a function giving the
+# units-dependent entries for a force factor F and a length factor L
+# (stress factor F / L^2, unit weight factor F / L^3).
+CASES = {
+    "paper_slope": {
+        "prm": "paper_slope.prm",
+        "blocks": {"sliding mass": (1.0e4, 20), "foundation": (1.0e4, 20)},
+        "quick": ["subsection Geometry", "  subsection Slope",
+                  "    set Mesh size = 2.0", "  end", "end"],
+        "interfaces": lambda F, L: [("sliding surface", "Cohesion", 3.0 * F / L**2)],
+        "extra": lambda F, L: [],
+    },
+    "priest_plane_failure": {
+        "prm": "priest_plane_failure.prm",
+        "blocks": {"block": (1e6, 25), "rock": (1e6, 25)},
+        # The mesh is the .geo's (relative to prm/): named absolutely here.
+        "quick": ["subsection Geometry",
+                  "  set Mesh file = @PRM_DIR@/priest_plane_failure.geo", "end"],
+        "interfaces": lambda F, L: [("failure plane", "Cohesion", 20 * F / L**2)],
+        # Water in the crack and on the plane, x and y in the new length
+        # unit (x / L in m), pressures in the new stress unit.
+        "extra": lambda F, L: [
+            "subsection Boundaries", "  subsection tension crack",
+            f"    set Pressure = {num(F / L**2)} * 9.81 * max(0, 18.75 - y / {num(L)})",
+            "  end", "end",
+            "subsection Interfaces", "  subsection failure plane",
+            f"    set Pore pressure = {num(F / L**2)} * 9.81 * 3.75 * (x / {num(L)})"
+            " / 25.980762113533160",
+            "  end", "end"],
+    },
+    "rock_wedge": {
+        "prm": "rock_wedge.prm",
+        "blocks": {"wedge": (1e7, 26), "rock": (1e7, 26)},
+        # A coarser mesh and tolerance: the comparison is between unit
+        # systems on the same mesh, not with the limit equilibrium.
+        "quick": ["subsection Geometry", "  subsection Wedge",
+                  "    set Mesh size = 6", "  end", "end",
+                  "subsection Safety factor", "  set Tolerance = 1e-4", "end"],
+        "interfaces": lambda F, L: [],
+        "extra": lambda F, L: [],
+    },
+    "block_on_plane_3d": {
+        "prm": "block_on_plane_3d.prm",
+        "blocks": {"block": (1e6, 25), "foundation": (1e6, 25)},
+        "quick": [],
+        "interfaces": lambda F, L: [("sliding surface", "Cohesion", 15 * F / L**2),
+                                    ("sliding surface", "Tensile strength", 1e3 * F / L**2)],
+        "extra": lambda F, L: [],
+    },
+}
+
+
+def write(case, variant, lines, description):
+    data = CASES[case]
+    text = [f"# Invariance test ({description}): {data['prm']} of prm/ with",
+            "# only the entries that depend on the units or on a common Young's",
+            "# modulus changed; written by tests/invariance/make_cases.py.",
+            f"include @PRM_DIR@/{data['prm']}",
+            "subsection Output", "  set Write VTU = false", "end"]
+    text += data["quick"] + lines
+    path = os.path.join(HERE, f"{case}.{variant}.prm")
+    with open(path, "w") as f:
+        f.write("\n".join(text) + "\n")
+
+
+def unit_lines(case, F, L):
+    data = CASES[case]
+    lines = []
+    if L != 1.0:
+        lines += ["subsection Geometry", f"  set Scale factor = {num(L)}", "end"]
+    lines.append("subsection Blocks")
+    for name, (modulus, unit_weight) in data["blocks"].items():
+        lines += [f"  subsection {name}",
+                  f"    set Young's modulus = {num(modulus * F / L**2)}",
+                  f"    set Unit weight     = {num(unit_weight * F / L**3)}",
+                  "  end"]
+    lines.append("end")
+    entries = data["interfaces"](F, L)
+    if entries:
+        lines.append("subsection Interfaces")
+        for name, entry, value in entries:
+            lines += [f"  subsection {name}", f"    set {entry} = {num(value)}", "  end"]
+        lines.append("end")
+    return lines + data["extra"](F, L)
+
+
+def modulus_lines(case, E):
+    lines = ["subsection Blocks"]
+    for name in CASES[case]["blocks"]:
+        lines += [f"  subsection {name}", f"    set Young's modulus = {E}", "  end"]
+    return lines + ["end"]
+
+
+if __name__ == "__main__":
+    for case in CASES:
+        write(case, "kN_m_kPa", [], "the reference: kN, m, kPa")
+        for variant, (F, L) in UNITS.items():
+            write(case, variant, unit_lines(case, F, L), variant.replace("_", ", "))
+        for E in COMMON_E:
+            write(case, f"E_{E}", modulus_lines(case, E),
+                  f"kN, m, kPa, Young's modulus {E} kPa in both blocks")
