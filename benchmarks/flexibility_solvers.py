@@ -28,9 +28,9 @@ SOLVERS = ["MUMPS_Schur", "MUMPS", "CHOLMOD", "Amesos_Klu", "Amesos_Mumps", "UMF
 METHOD = {"MUMPS_Schur": "Schur complement"}
 
 
-def run(command):
-    """The stdout of @p command, which must succeed."""
-    result = subprocess.run(command, capture_output=True, text=True)
+def run(command, cwd):
+    """The stdout of @p command run in @p cwd, which must succeed."""
+    result = subprocess.run(command, cwd=cwd, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit("%s failed:\n%s%s" % (" ".join(command), result.stdout, result.stderr))
     return result.stdout
@@ -57,7 +57,7 @@ def main():
     for h in args.mesh_sizes:
         for solver in args.solvers:
             # paper_slope.prm with another mesh size and solver; the yardstick
-            # reads the very .prm file the run read.
+            # reads the very .prm file the run read, in the run's folder.
             settings = {"Geometry/Slope/Mesh size": h, "Solver/Direct solver": solver,
                         "Output/Write VTU": "false"}
             with fdem_run.temporary_run(slope, "paper_slope.prm", settings=settings,
@@ -65,7 +65,7 @@ def main():
                 if not result.ok:
                     sys.exit("paper_slope.prm with %s failed: %s" % (solver, result.failure()))
                 summary, whole = result.summary, result.wall
-                fe_out = run([yardstick, result.prm])
+                fe_out = run([yardstick, result.prm], result.workdir)
             fe = json.loads(fe_out.strip().splitlines()[-1])
             timings = summary["timings"]
             row = {
