@@ -95,7 +95,8 @@ def fill_placeholders(prm, workdir, copy=None):
             return match.group(0)
         folder = os.path.join(workdir, INCLUDED)
         os.makedirs(folder, exist_ok=True)
-        name = os.path.join(folder, f"{len(os.listdir(folder))}-{os.path.basename(target)}")
+        handle, name = tempfile.mkstemp(suffix="-" + os.path.basename(target), dir=folder)
+        os.close(handle)
         filled = fill_placeholders(target, workdir, name)
         return match.group(0) if filled == target else match.group(1) + filled
 
@@ -111,10 +112,10 @@ def fill_placeholders(prm, workdir, copy=None):
 class Run:
     """One run of the executable: the .prm file it ran (@c prm), the folder
     it ran in (@c workdir) and its output folder (@c output; both gone once
-    a temporary folder is removed), the
-    summary.json (None if it wrote none) and parameters.prm (a dict, see
-    parse_prm; empty if none) found there, the exit code, stdout, stderr and
-    wall time (s, measured from outside, start-up included)."""
+    a temporary folder is removed), the summary.json (None if it wrote none)
+    and parameters.prm (a dict, see parse_prm; empty if none) found there,
+    the exit code, stdout, stderr and wall time (s, measured from outside,
+    start-up included)."""
 
     def __init__(self, prm, workdir, output, returncode, stdout, stderr, wall):
         self.prm = prm
