@@ -173,6 +173,10 @@ def run(exe, prm, workdir, settings=None, files=None, args=(), launcher=(), env=
     # A relative Output/Directory is relative to the working folder.
     output = os.path.join(workdir, (settings or {}).get("Output/Directory") or
                           os.path.splitext(name)[0] + "-output")
+    # The run's folder is not ours: a relative path to the program must not
+    # depend on it (a bare name is looked up on PATH).
+    if os.sep in exe:
+        exe = os.path.abspath(exe)
     start = time.perf_counter()
     try:
         result = subprocess.run([*launcher, exe, *args, path], cwd=workdir, capture_output=True,
