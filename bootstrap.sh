@@ -17,11 +17,12 @@ cd "$(dirname "$0")"
 # libopenblas0-serial: an optimised BLAS/LAPACK for MUMPS and the dense
 # mixed system; Debian's alternatives put it in place of the reference one.
 # libsuitesparse-dev: CHOLMOD (Direct solver = CHOLMOD); deal.II depends on it.
+# clang-format (Debian 12: version 14): the ctest format.check.
 # openmpi-bin: mpirun for the MPI runs and the mpi.* tests (libdeal.ii-dev
 # pulls in OpenMPI's libraries; named here so that mpirun is there for sure).
 packages=(cmake make g++ libdeal.ii-dev gmsh libgmsh-dev nlohmann-json3-dev
           libmumps-dev libsuitesparse-dev libgtest-dev numdiff python3-vtk9 python3-numpy python3-matplotlib
-          libopenblas0-serial openmpi-bin)
+          libopenblas0-serial openmpi-bin clang-format)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -17,41 +17,23 @@ import argparse
 import json
 import os
 import platform
-import re
 import subprocess
 import sys
-import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+import fdem_run  # noqa: E402  tools/fdem_run.py: run a case, read its outputs
+from fdem_run import ROOT  # noqa: E402
 SOLVERS = ["MUMPS_Schur", "MUMPS", "CHOLMOD", "Amesos_Klu", "Amesos_Mumps", "UMFPACK"]
 METHOD = {"MUMPS_Schur": "Schur complement"}
 
 
-def case_file(folder, mesh_size, solver, name):
-    """paper_slope.prm with another mesh size, solver and output folder."""
-    with open(os.path.join(ROOT, "prm", "paper_slope.prm")) as f:
-        text = f.read()
-    text, n = re.subn(r"(set Mesh size\s*=\s*)[0-9.eE+-]+", r"\g<1>%g" % mesh_size, text)
-    if n != 1:
-        sys.exit("prm/paper_slope.prm: expected one 'set Mesh size' line")
-    out = os.path.join(folder, name + "-output")
-    text += ("\nsubsection Solver\n  set Direct solver = %s\nend\n"
-             "subsection Output\n  set Directory = %s\n  set Write VTU = false\nend\n"
-             % (solver, out))
-    path = os.path.join(folder, name + ".prm")
-    with open(path, "w") as f:
-        f.write(text)
-    return path, out
-
-
-def run(command):
-    start = time.perf_counter()
-    result = subprocess.run(command, capture_output=True, text=True)
-    seconds = time.perf_counter() - start
+def run(command, cwd):
+    """The stdout of @p command run in @p cwd, which must succeed."""
+    result = subprocess.run(command, cwd=cwd, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit("%s failed:\n%s%s" % (" ".join(command), result.stdout, result.stderr))
-    return result.stdout, seconds
+    return result.stdout
 
 
 def main():
@@ -72,41 +54,44 @@ def main():
         with open(args.from_log) as f:
             rows = [json.loads(line) for line in f if line.startswith("{")]
         args.mesh_sizes = []
-    with tempfile.TemporaryDirectory() as folder:
-        for h in args.mesh_sizes:
-            for solver in args.solvers:
-                name = "h%g-%s" % (h, solver)
-                prm, out = case_file(folder, h, solver, name)
-                _, whole = run([slope, prm])
-                with open(os.path.join(out, "summary.json")) as f:
-                    summary = json.load(f)
-                fe_out, _ = run([yardstick, prm])
-                fe = json.loads(fe_out.strip().splitlines()[-1])
-                timings = summary["timings"]
-                row = {
-                    "mesh_size": h,
-                    "dofs": summary["n_dofs"],
-                    "pairs": sum(i["n_pairs"] for i in summary["interfaces"]),
-                    "solver": solver,
-                    "method": METHOD.get(solver, "blocked solves (64 RHS)"),
-                    # Timed apart since the phase was split; one phase before.
-                    "assembly_factorisation": timings.get("assembly and factorisation") or
-                    (timings.get("assembly", 0) + timings.get("factorisation", 0)),
-                    "flexibility": timings.get("flexibility"),
-                    "contact": timings.get("contact"),
-                    # The phases add up to "total" (older summaries have no total).
-                    "sections": timings.get("total") or sum(timings.values()),
-                    "whole": whole,
-                    "fe_dofs": fe["n_dofs"],
-                    "fe_assembly": fe["assembly"],
-                    "fe_factorisation": fe["factorization"],
-                    "fe_solve": fe["solve"],
-                    "safety_factor": summary.get("safety_factor"),
-                }
-                row["ratio"] = whole / (fe["factorization"] + fe["solve"])
-                row["ratio_sections"] = row["sections"] / (fe["factorization"] + fe["solve"])
-                rows.append(row)
-                print(json.dumps(row), flush=True)
+    for h in args.mesh_sizes:
+        for solver in args.solvers:
+            # paper_slope.prm with another mesh size and solver; the yardstick
+            # reads the very .prm file the run read, in the run's folder.
+            settings = {"Geometry/Slope/Mesh size": h, "Solver/Direct solver": solver,
+                        "Output/Write VTU": "false"}
+            with fdem_run.temporary_run(slope, "paper_slope.prm", settings=settings,
+                                        timeout=None) as result:
+                if not result.ok:
+                    sys.exit("paper_slope.prm with %s failed: %s" % (solver, result.failure()))
+                summary, whole = result.summary, result.wall
+                fe_out = run([yardstick, result.prm], result.workdir)
+            fe = json.loads(fe_out.strip().splitlines()[-1])
+            timings = summary["timings"]
+            row = {
+                "mesh_size": h,
+                "dofs": summary["n_dofs"],
+                "pairs": sum(i["n_pairs"] for i in summary["interfaces"]),
+                "solver": solver,
+                "method": METHOD.get(solver, "blocked solves (64 RHS)"),
+                # Timed apart since the phase was split; one phase before.
+                "assembly_factorisation": timings.get("assembly and factorisation") or
+                (timings.get("assembly", 0) + timings.get("factorisation", 0)),
+                "flexibility": timings.get("flexibility"),
+                "contact": timings.get("contact"),
+                # The phases add up to "total" (older summaries have no total).
+                "sections": timings.get("total") or sum(timings.values()),
+                "whole": whole,
+                "fe_dofs": fe["n_dofs"],
+                "fe_assembly": fe["assembly"],
+                "fe_factorisation": fe["factorization"],
+                "fe_solve": fe["solve"],
+                "safety_factor": summary.get("safety_factor"),
+            }
+            row["ratio"] = whole / (fe["factorization"] + fe["solve"])
+            row["ratio_sections"] = row["sections"] / (fe["factorization"] + fe["solve"])
+            rows.append(row)
+            print(json.dumps(row), flush=True)
 
     lines = [
         "# Direct solvers and the interface flexibility (paper's slope)",

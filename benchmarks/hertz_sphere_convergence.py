@@ -17,12 +17,8 @@ what the finite bodies contribute. Writes doc/hertz_sphere_convergence.md,
 .csv and .png. Needs Debian's python3-matplotlib.
 """
 import csv
-import json
 import os
-import subprocess
 import sys
-import tempfile
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
@@ -46,25 +42,19 @@ SIZES = [("default", {}),
 
 def run(n, sizes):
     g = dict(DEFAULT, **sizes)
-    with tempfile.TemporaryDirectory() as workdir:
-        prm = os.path.join(workdir, "hertz_sphere.prm")
-        with open(prm, "w") as f:
-            f.write(f"include {os.path.join(ROOT, 'prm', 'hertz_sphere.prm')}\n"
-                    "subsection Geometry\n  subsection Hertz sphere\n"
-                    f"    set Elements in contact zone = {n}\n"
-                    f"    set Cap half width = {g['S']}\n"
-                    f"    set Load height = {g['H']}\n"
-                    f"    set Foundation width = {g['W']}\n"
-                    f"    set Foundation depth = {g['D']}\n"
-                    f"    set Mesh size = {g['h_max']}\n"
-                    f"    set Growth ratio = {g['g']}\n  end\nend\n"
-                    "subsection Boundaries\n  subsection load\n"
-                    f"    set Pressure = {QUARTER_LOAD / g['S'] ** 2}\n  end\nend\n"
-                    "subsection Output\n  set Write VTU = false\nend\n")
-        start = time.perf_counter()
-        subprocess.run([EXE, prm], cwd=workdir, check=True, capture_output=True)
-        wall = time.perf_counter() - start
-        summary = json.load(open(os.path.join(workdir, "hertz_sphere-output", "summary.json")))
+    sphere = "Geometry/Hertz sphere/"
+    settings = {sphere + "Elements in contact zone": n,
+                sphere + "Cap half width": g["S"],
+                sphere + "Load height": g["H"],
+                sphere + "Foundation width": g["W"],
+                sphere + "Foundation depth": g["D"],
+                sphere + "Mesh size": g["h_max"],
+                sphere + "Growth ratio": g["g"],
+                "Boundaries/load/Pressure": QUARTER_LOAD / g["S"] ** 2}
+    result = common.run_case(EXE, "hertz_sphere.prm", settings, timeout=None)
+    if not result.ok:
+        sys.exit(f"hertz_sphere.prm at n = {n}, {sizes} failed: {result.failure()}")
+    summary, wall = result.summary, result.wall
     h = summary["hertz"]
     interface = summary["interfaces"][0]
     return {"contact_zone_elements": n, "n_dofs": summary["n_dofs"],

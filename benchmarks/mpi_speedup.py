@@ -13,15 +13,12 @@ a shared machine the ratios are only as good as the load was steady.
 """
 import argparse
 import csv
-import json
 import os
-import subprocess
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from common import DEFAULT_EXE, PRM_DIR, git_description, markdown_table, prm_settings  # noqa: E402
+from common import DEFAULT_EXE, ROOT, git_description, markdown_table, run_case  # noqa: E402
 
 # Phases of summary.json's "timings", in the order of a run.
 PHASES = ["geometry", "setup", "assembly and factorisation", "assembly", "factorisation",
@@ -36,25 +33,15 @@ def load_average():
 def run(exe, n_ranks, mesh_size):
     """Runs the paper's slope with @p n_ranks ranks; returns the summary, the
     outer wall time and the load average before and after."""
-    settings = {"Geometry/Slope/Mesh size": mesh_size, "Output/Write VTU": "false"}
+    settings = {"Geometry/Slope/Mesh size": mesh_size}
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    with tempfile.TemporaryDirectory(prefix="fdem-mpi-") as workdir:
-        out = os.path.join(workdir, "output")
-        settings["Output/Directory"] = out
-        prm = os.path.join(workdir, "paper_slope.prm")
-        with open(prm, "w") as f:
-            f.write(f"include {os.path.join(PRM_DIR, 'paper_slope.prm')}\n" + prm_settings(settings))
-        command = [exe, prm] if n_ranks == 1 else \
-            ["mpirun", "-np", str(n_ranks), "--oversubscribe", exe, prm]
-        load_before = load_average()
-        start = time.perf_counter()
-        result = subprocess.run(command, cwd=workdir, capture_output=True, text=True, env=env)
-        wall = time.perf_counter() - start
-        load_after = load_average()
-        if result.returncode != 0:
-            sys.exit(f"{' '.join(command)} failed: {result.stderr.strip()[-500:]}")
-        summary = json.load(open(os.path.join(out, "summary.json")))
-    return summary, wall, load_before, load_after
+    launcher = [] if n_ranks == 1 else ["mpirun", "-np", str(n_ranks), "--oversubscribe"]
+    load_before = load_average()
+    result = run_case(exe, "paper_slope.prm", settings, timeout=None, launcher=launcher, env=env)
+    load_after = load_average()
+    if not result.ok:
+        sys.exit(f"paper_slope.prm on {n_ranks} ranks failed: {result.stderr.strip()[-500:]}")
+    return result.summary, result.wall, load_before, load_after
 
 
 def main():
@@ -62,7 +49,7 @@ def main():
     parser.add_argument("--exe", default=DEFAULT_EXE)
     parser.add_argument("--mesh-size", default="0.16")
     parser.add_argument("--ranks", default="1,2")
-    parser.add_argument("--output-dir", default=os.path.join(os.path.dirname(PRM_DIR), "doc"))
+    parser.add_argument("--output-dir", default=os.path.join(ROOT, "doc"))
     args = parser.parse_args()
 
     ranks = [int(r) for r in args.ranks.split(",")]

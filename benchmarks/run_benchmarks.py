@@ -90,17 +90,8 @@ def wedge_exact(run):
     with the run's planes, strengths, wedge weight and plane areas."""
     sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                     "..", "tests", "scripts"))
-    from wedge_reference import safety_factor as wedge_k
-    p, s = run.parameters, run.summary
-    wedge = next(b for b in s["blocks"] if b["free_rigid_modes"] == 6)
-    weight = number(p, f"Blocks/{wedge['name']}/Unit weight") * wedge["volume"]
-    area = {i["name"]: i["area"] for i in s["interfaces"]}
-    planes = [[float(x) for x in p[f"Geometry/Wedge/Plane {n}"].split(",")] for n in "AB"]
-    strength = [(number(p, f"Interfaces/plane {n}/Friction angle"),
-                 float(p.get(f"Interfaces/plane {n}/Cohesion", 0))) for n in "AB"]
-    K, _ = wedge_k(planes[0][0], planes[0][1], planes[1][0], planes[1][1], weight,
-                   area["plane A"], area["plane B"], strength[0][0], strength[1][0],
-                   strength[0][1], strength[1][1])
+    from wedge_reference import safety_factor_of_run
+    K, _ = safety_factor_of_run(run.parameters, run.summary)
     return {"K": K}
 
 

@@ -56,40 +56,27 @@
                                          the last solved K* is within 1e-3 of K
 
 Placeholders in a .prm: @PRM_DIR@ (the project's prm/ folder) and @DATA_DIR@
-(the .prm file's own data/ folder) become absolute paths; the case runs in a
-fresh temporary folder.
+(the .prm file's own data/ folder) become absolute paths, in included files
+too; the case runs in a fresh temporary folder (tools/fdem_run.py).
 """
 import json
 import math
 import os
 import subprocess
 import sys
-import tempfile
 
-# Entries of summary.json that measure the run, not its result.
-VOLATILE_KEYS = ("timings", "peak_memory_MiB")
-
-PRM_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "prm")
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [HERE, os.path.join(HERE, "..", "..", "tools")]
+import fdem_run  # noqa: E402  tools/fdem_run.py: run a case, read its outputs
 
 
-def prepare(prm, workdir):
-    """Copies prm into workdir with placeholders filled; returns the copy.
-    A file without placeholders is used where it is, so that its relative
-    mesh file names still hold."""
-    text = open(prm).read()
-    if "@PRM_DIR@" not in text and "@DATA_DIR@" not in text:
-        return os.path.abspath(prm)
-    text = text.replace("@PRM_DIR@", os.path.abspath(PRM_DIR))
-    text = text.replace("@DATA_DIR@", os.path.join(os.path.dirname(os.path.abspath(prm)), "data"))
-    copy = os.path.join(workdir, os.path.basename(prm))
-    with open(copy, "w") as f:
-        f.write(text)
-    return copy
-
-
-def run(exe, prm, workdir):
-    return subprocess.run([exe, prepare(prm, workdir)], cwd=workdir,
-                          capture_output=True, text=True, timeout=600)
+def completed_run(exe, prm, **kwargs):
+    """The run of @p prm in a temporary folder (see fdem_run.run_case),
+    which must succeed."""
+    result = fdem_run.run_case(exe, prm, **kwargs)
+    assert result.returncode == 0, result.stderr
+    assert result.summary is not None, "no summary.json"
+    return result
 
 
 # VTK cell types of simplices: line, triangle, tetrahedron, and their
@@ -98,19 +85,17 @@ VTK_SIMPLEX_CELLS = {3, 5, 10, 21, 22, 24}
 
 
 def check_vtu(exe, prm, cells="any"):
+    import csv
     import vtk  # Debian's python3-vtk9
     from vtk.util.numpy_support import vtk_to_numpy
 
-    with tempfile.TemporaryDirectory() as workdir:
-        result = run(exe, prm, workdir)
+    with fdem_run.temporary_run(exe, prm) as result:
         assert result.returncode == 0, result.stderr
-        case = os.path.splitext(os.path.basename(prm))[0]
-        out = os.path.join(workdir, case + "-output")
-        summary = json.load(open(os.path.join(out, "summary.json")))
+        summary = result.summary
         assert summary["status"] == "completed"
 
         def listed(pvd_name):
-            pvd = open(os.path.join(out, pvd_name)).read()
+            pvd = open(result.file(pvd_name)).read()
             return [part.split('"')[0] for part in pvd.split('file="')[1:]]
 
         files = listed("solution.pvd")
@@ -128,7 +113,7 @@ def check_vtu(exe, prm, cells="any"):
                             "shear_stress", "gap", "slip", "status", "local_safety_factor"]
         for name in files:
             r = vtk.vtkXMLUnstructuredGridReader()
-            r.SetFileName(os.path.join(out, name))
+            r.SetFileName(result.file(name))
             r.Update()
             grid = r.GetOutput()
             assert grid.GetNumberOfPoints() > 0 and grid.GetNumberOfCells() > 0, name
@@ -145,8 +130,7 @@ def check_vtu(exe, prm, cells="any"):
                     f"{name}: '{field}' is empty or not finite"
             print(f"{name}: {grid.GetNumberOfPoints()} points, fields {', '.join(fields)}")
         # The interface VTU carries the same normal forces as the CSV table.
-        import csv
-        rows = list(csv.DictReader(open(os.path.join(out, "interfaces.csv"))))
+        rows = list(csv.DictReader(open(result.file("interfaces.csv"))))
         csv_total = sum(float(r["normal_force"]) for r in rows)
         json_total = sum(i["total_normal_force"] for i in summary["interfaces"])
         assert abs(csv_total - json_total) <= 1e-9 * abs(json_total), (csv_total, json_total)
@@ -158,8 +142,7 @@ def check_bad_input(exe, prm):
         if line.startswith("# expect:"):
             expect = line[len("# expect:"):].strip()
     assert expect, f"{prm} has no '# expect:' line"
-    with tempfile.TemporaryDirectory() as workdir:
-        result = run(exe, prm, workdir)
+    with fdem_run.temporary_run(exe, prm) as result:
         lines = result.stderr.strip().splitlines()
         print("stderr:", result.stderr.strip())
         assert result.returncode != 0, "the run did not fail"
@@ -167,67 +150,58 @@ def check_bad_input(exe, prm):
         assert len(lines) == 1, f"expected one line on stderr, got {len(lines)}"
         assert lines[0].startswith("fdem-slope: error: "), lines[0]
         assert expect in lines[0], f"'{expect}' not in the message"
-        for root, _, files in os.walk(workdir):
+        for root, _, files in os.walk(result.workdir):
             assert "summary.json" not in files, "a summary.json was written"
 
 
 def check_bad_layout(exe, prm):
     check_bad_input(exe, prm)
-    with tempfile.TemporaryDirectory() as workdir:
-        full = run(exe, prm, workdir)
-    with tempfile.TemporaryDirectory() as workdir:
-        copy = prepare(prm, workdir)
-        before = set(os.listdir(workdir))
-        result = subprocess.run([exe, "--validate", copy], cwd=workdir,
-                                capture_output=True, text=True, timeout=600)
+    full = fdem_run.run_case(exe, prm)
+    with fdem_run.temporary_run(exe, prm, args=["--validate"]) as result:
         print("--validate stderr:", result.stderr.strip())
         assert result.returncode == 1, f"--validate exit {result.returncode}, expected 1"
         assert result.stderr == full.stderr, "--validate and the run say different things"
-        assert set(os.listdir(workdir)) == before, "--validate wrote files"
+        # Nothing in the folder but the .prm files that fdem_run filled in.
+        prepared = {os.path.basename(result.prm), fdem_run.INCLUDED}
+        assert set(os.listdir(result.workdir)) <= prepared, "--validate wrote files"
 
 
 def check_triple_point(exe, prm):
     import re
-    with tempfile.TemporaryDirectory() as workdir:
-        result = subprocess.run([exe, "--validate", prepare(prm, workdir)], cwd=workdir,
-                                capture_output=True, text=True, timeout=600)
-        assert result.returncode == 0 and result.stdout.strip().endswith("valid."), result
-        result = run(exe, prm, workdir)
-        assert result.returncode == 0, result.stderr
-        left_out = [l for l in result.stdout.splitlines() if "is left out" in l]
-        print("\n".join(left_out))
-        assert len(left_out) == 1, f"{len(left_out)} pairs left out, expected 1"
-        made = {m.group(1): int(m.group(2)) for m in
-                re.finditer(r"interface '([^']*)': (\d+) node pairs", result.stdout)}
-        case = os.path.splitext(os.path.basename(prm))[0]
-        summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
-        assert summary["status"] == "completed" and summary["converged"], summary["status"]
-        assert summary["warnings"] == [], summary["warnings"]
-        name = re.match(r"\s*interface '([^']*)'", left_out[0]).group(1)
-        pairs = {i["name"]: i["n_pairs"] for i in summary["interfaces"]}
-        for interface, n in made.items():
-            assert pairs[interface] == n - (interface == name), (interface, n, pairs)
-        K = summary["safety_factor"]
-        solved = [s for s in summary["iterations"] if s["K"] <= K and s["F_tau"] > 0]
-        step = max(solved, key=lambda s: s["K"])
-        K_star = step["F_R"] / step["F_tau"] * step["K"]
-        print(f"K = {K}, last solved K = {step['K']}, its K* = {K_star}")
-        assert abs(K_star - step["K"]) < 1e-3 * K and abs(step["K"] - K) < 1e-3 * K
+    result = fdem_run.run_case(exe, prm, args=["--validate"])
+    assert result.returncode == 0 and result.stdout.strip().endswith("valid."), result.stderr
+    result = completed_run(exe, prm)
+    left_out = [l for l in result.stdout.splitlines() if "is left out" in l]
+    print("\n".join(left_out))
+    assert len(left_out) == 1, f"{len(left_out)} pairs left out, expected 1"
+    made = {m.group(1): int(m.group(2)) for m in
+            re.finditer(r"interface '([^']*)': (\d+) node pairs", result.stdout)}
+    summary = result.summary
+    assert summary["status"] == "completed" and summary["converged"], summary["status"]
+    assert summary["warnings"] == [], summary["warnings"]
+    name = re.match(r"\s*interface '([^']*)'", left_out[0]).group(1)
+    pairs = {i["name"]: i["n_pairs"] for i in summary["interfaces"]}
+    for interface, n in made.items():
+        assert pairs[interface] == n - (interface == name), (interface, n, pairs)
+    K = summary["safety_factor"]
+    solved = [s for s in summary["iterations"] if s["K"] <= K and s["F_tau"] > 0]
+    step = max(solved, key=lambda s: s["K"])
+    K_star = step["F_R"] / step["F_tau"] * step["K"]
+    print(f"K = {K}, last solved K = {step['K']}, its K* = {K_star}")
+    assert abs(K_star - step["K"]) < 1e-3 * K and abs(step["K"] - K) < 1e-3 * K
 
 
 def check_no_equilibrium(exe, prm):
-    with tempfile.TemporaryDirectory() as workdir:
-        result = run(exe, prm, workdir)
+    with fdem_run.temporary_run(exe, prm) as result:
         lines = result.stderr.strip().splitlines()
         print("stderr:", result.stderr.strip())
         assert result.returncode == 3, f"exit code {result.returncode}, expected 3"
         assert len(lines) == 1 and "no static equilibrium" in lines[0], lines
-        case = os.path.splitext(os.path.basename(prm))[0]
-        out = os.path.join(workdir, case + "-output")
-        summary = json.load(open(os.path.join(out, "summary.json")))
+        summary = result.summary
+        assert summary is not None, "no summary.json"
         assert summary["status"].startswith("no static equilibrium"), summary["status"]
         assert summary["contact"]["converged"] is False
-        for name in os.listdir(out):
+        for name in os.listdir(result.output):
             assert not name.endswith((".vtu", ".pvd", ".csv")), f"{name} was written"
 
 
@@ -237,11 +211,7 @@ def check_certified(exe, prm, warning="no-warning"):
     within the tolerance, and the safety factor that K* (fixed point) or K
     (bracket). The stiffness check: a warning, and a relative change above
     the warning threshold, exactly when `warning` is "warning"."""
-    with tempfile.TemporaryDirectory() as workdir:
-        result = run(exe, prm, workdir)
-        assert result.returncode == 0, result.stderr
-        case = os.path.splitext(os.path.basename(prm))[0]
-        summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
+    summary = completed_run(exe, prm).summary
     c = summary["certificate"]
     print("certificate:", json.dumps(c))
     print("stiffness_sensitivity:", json.dumps(summary["stiffness_sensitivity"]))
@@ -274,63 +244,32 @@ def check_stiffness_consistency(exe, prm, stiffer_prm, softer_prm):
     blocks' E times and divided by the factor) to 1e-9 relative: C and g_bar
     are linear in the blocks' compliance, so the check solves the very
     same problems up to round-off (measured: see tests/CMakeLists.txt)."""
-    def safety_factor(path):
-        with tempfile.TemporaryDirectory() as workdir:
-            result = run(exe, path, workdir)
-            assert result.returncode == 0, result.stderr
-            case = os.path.splitext(os.path.basename(path))[0]
-            return json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
-    check = safety_factor(prm)["stiffness_sensitivity"]
+    check = completed_run(exe, prm).summary["stiffness_sensitivity"]
     for key, path in (("K_stiffer", stiffer_prm), ("K_softer", softer_prm)):
-        K = safety_factor(path)["safety_factor"]
+        K = completed_run(exe, path).summary["safety_factor"]
         print(f"{key}: check {check[key]!r}, fresh run {K!r}, relative difference {abs(check[key] - K) / K:.2e}")
         assert abs(check[key] - K) <= 1e-9 * K, (key, check[key], K)
 
 
 def check_deterministic(exe, prm):
-    texts = []
-    for _ in range(2):
-        with tempfile.TemporaryDirectory() as workdir:
-            result = run(exe, prm, workdir)
-            assert result.returncode == 0, result.stderr
-            case = os.path.splitext(os.path.basename(prm))[0]
-            summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
-            # Wall times and peak memory differ from run to run; nothing else may.
-            for key in VOLATILE_KEYS:
-                del summary[key]
-            summary.get("stiffness_sensitivity", {}).pop("wall_seconds", None)
-            texts.append(json.dumps(summary, sort_keys=True))
+    # Wall times and peak memory differ from run to run; nothing else may.
+    texts = [json.dumps(fdem_run.result_part(completed_run(exe, prm).summary), sort_keys=True)
+             for _ in range(2)]
     assert texts[0] == texts[1], "two runs of the same input differ"
 
 
 def check_wedge(exe, prm, tolerance="1e-5", max_share="0.05"):
-    here = os.path.dirname(os.path.abspath(__file__))
-    sys.path[:0] = [here, os.path.join(here, "..", "..", "benchmarks")]
-    from common import parse_prm  # benchmarks/common.py
-    from wedge_reference import safety_factor
-    entries = parse_prm(open(prm).read())
-    with tempfile.TemporaryDirectory() as workdir:
-        result = run(exe, prm, workdir)
-        assert result.returncode == 0, result.stderr
-        case = os.path.splitext(os.path.basename(prm))[0]
-        summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
-    wedge = next(b for b in summary["blocks"] if b["free_rigid_modes"] == 6)
-    weight = float(entries[f"Blocks/{wedge['name']}/Unit weight"]) * wedge["volume"]
-    planes = {i["name"]: i for i in summary["interfaces"]}
-    data = []
-    for name, entry in (("plane A", "Plane A"), ("plane B", "Plane B")):
-        dip, direction = (float(x) for x in entries[f"Geometry/Wedge/{entry}"].split(","))
-        data.append((dip, direction, planes[name]["area"],
-                     float(entries.get(f"Interfaces/{name}/Friction angle", "0")),
-                     float(entries.get(f"Interfaces/{name}/Cohesion", "0"))))
-    (dip_a, dir_a, area_a, phi_a, c_a), (dip_b, dir_b, area_b, phi_b, c_b) = data
-    exact, mode = safety_factor(dip_a, dir_a, dip_b, dir_b, weight, area_a, area_b,
-                                phi_a, phi_b, c_a, c_b)
+    from wedge_reference import safety_factor_of_run
+    result = completed_run(exe, prm)
+    summary = result.summary
+    # The entries as the run read them (parameters.prm), included files too.
+    exact, mode = safety_factor_of_run(result.parameters, summary)
     K = summary["safety_factor"]
     print(f"K = {K!r}, limit equilibrium {exact!r} ({mode}), relative error {K / exact - 1:.3e}")
     assert summary["converged"], summary["safety_factor_reason"]
     assert abs(K / exact - 1) <= float(tolerance), "K differs from the limit equilibrium"
     if mode != "both planes":
+        planes = {i["name"]: i for i in summary["interfaces"]}
         lifted = planes["plane B" if mode == "plane A only" else "plane A"]
         sliding = planes["plane A" if mode == "plane A only" else "plane B"]
         share = lifted["total_normal_force"] / sliding["total_normal_force"]
@@ -383,19 +322,14 @@ def vtu_cells(path):
 
 
 def check_mpi(exe, prm, n_ranks="2"):
-    case = os.path.splitext(os.path.basename(prm))[0]
     runs = []
-    for command in ([exe], ["mpirun", "-np", n_ranks, "--oversubscribe", exe]):
-        with tempfile.TemporaryDirectory() as workdir:
-            result = subprocess.run(command + [prepare(prm, workdir)], cwd=workdir,
-                                    capture_output=True, text=True, timeout=600)
+    for launcher in ([], ["mpirun", "-np", n_ranks, "--oversubscribe"]):
+        with fdem_run.temporary_run(exe, prm, launcher=launcher) as result:
             assert result.returncode == 0, result.stdout + result.stderr
-            output = os.path.join(workdir, case + "-output")
-            summary = json.load(open(os.path.join(output, "summary.json")))
-            files = sorted(os.listdir(output))
-            cells = {f: vtu_cells(os.path.join(output, f)) for f in files if f.endswith(".vtu")}
-            runs.append((command, result.stdout, summary, files, cells))
-    (_, _, serial, serial_files, serial_cells), (_, log, parallel, files, cells) = runs
+            files = sorted(os.listdir(result.output))
+            cells = {f: vtu_cells(result.file(f)) for f in files if f.endswith(".vtu")}
+            runs.append((result.stdout, result.summary, files, cells))
+    (_, serial, serial_files, serial_cells), (log, parallel, files, cells) = runs
     assert serial["n_mpi_ranks"] == 1 and parallel["n_mpi_ranks"] == int(n_ranks)
     # Only rank 0 prints: one log, as long as the serial one.
     assert log.count("Safety factor:") == 1, "more than one rank printed the log"

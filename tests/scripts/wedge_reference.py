@@ -60,6 +60,24 @@ def safety_factor(dip_a, dir_a, dip_b, dir_b, weight, area_a, area_b, phi_a, phi
     return (N * tan_phi + c * area) / math.sqrt(dot(W_t, W_t)), mode
 
 
+def safety_factor_of_run(parameters, summary):
+    """safety_factor() for a run of fdem-slope on Geometry/Source = wedge:
+    the planes and strengths from its @p parameters (parameters.prm as a
+    dict, see tools/fdem_run.py), the wedge's weight (unit weight times the
+    volume of the block with six free rigid modes) and the plane areas from
+    its @p summary."""
+    wedge = next(b for b in summary["blocks"] if b["free_rigid_modes"] == 6)
+    weight = float(parameters[f"Blocks/{wedge['name']}/Unit weight"]) * wedge["volume"]
+    area = {i["name"]: i["area"] for i in summary["interfaces"]}
+    args = []
+    for plane in "AB":
+        args += [float(x) for x in parameters[f"Geometry/Wedge/Plane {plane}"].split(",")]
+    strength = {key: [float(parameters.get(f"Interfaces/plane {plane}/{key}", 0)) for plane in "AB"]
+                for key in ("Friction angle", "Cohesion")}
+    return safety_factor(*args, weight, area["plane A"], area["plane B"],
+                         *strength["Friction angle"], *strength["Cohesion"])
+
+
 if __name__ == "__main__":
     args = [float(a) for a in sys.argv[1:12]]
     K, mode = safety_factor(*args)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 //
-// Stress suite, initial gaps (issue 7): a block whose base has a profile of
+// Robustness, initial gaps (issue 7): a block whose base has a profile of
 // initial normal gaps above a flat foundation, with gravity tilted by 30
 // degrees so that the flat contact is an inclined plane. Gaps that close
 // under gravity, gaps that stay open, a block left standing on a foot of two
@@ -208,7 +208,7 @@ namespace
 // elastic displacements (about 1e-3 m here). With every pair open the first
 // mixed system is singular (nothing holds the free block); the status
 // iteration then closes the pairs and lets tension reopen them.
-TEST(StressGaps, UniformGapClosesUnderGravity)
+TEST(RobustnessGaps, UniformGapClosesUnderGravity)
 {
   for (const double delta : {1e-5, 1e-3, 0.1})
     {
@@ -224,7 +224,7 @@ TEST(StressGaps, UniformGapClosesUnderGravity)
     }
 }
 
-TEST(StressGaps, RecessStaysOpen)
+TEST(RobustnessGaps, RecessStaysOpen)
 {
   // Feet on x in [0, 2] and [8, 10] touch; a 5 cm recess between them
   // (x in [3, 7], sloping to the feet) is far deeper than the block's sag
@@ -264,7 +264,7 @@ TEST(StressGaps, RecessStaysOpen)
   EXPECT_NEAR(model->summary["safety_factor"].get<double>(), exact, 1e-8 * exact);
 }
 
-TEST(StressGaps, SlidesOnAFootOfTwoPairs)
+TEST(RobustnessGaps, SlidesOnAFootOfTwoPairs)
 {
   // Almost no contact left: the base touches at x = 6 and 7 only, under the
   // line of action of the weight (it meets the plane at x = 5 + 2.5 tan 30 =
@@ -314,7 +314,7 @@ namespace
   }
 } // namespace
 
-TEST(StressGaps, TipsOntoAPairThatWasOpenOrFailsClearly)
+TEST(RobustnessGaps, TipsOntoAPairThatWasOpenOrFailsClearly)
 {
   // One pair touches (x = 6); the weight's line of action passes 0.44 m
   // down-slope of it, so the block rotates about it onto the next pair down
@@ -333,8 +333,8 @@ TEST(StressGaps, TipsOntoAPairThatWasOpenOrFailsClearly)
 // Reproducer of a contact-solver limitation: with one pair closed the first
 // system is singular (a free rotation about it), which solve_contact_problem()
 // takes for "no static equilibrium". Run: unit_tests
-// --gtest_also_run_disabled_tests --gtest_filter='StressGaps.DISABLED_*'.
-TEST(StressGaps, DISABLED_TipsOntoAPairThatWasOpenExactly)
+// --gtest_also_run_disabled_tests --gtest_filter='RobustnessGaps.DISABLED_*'.
+TEST(RobustnessGaps, DISABLED_TipsOntoAPairThatWasOpenExactly)
 {
   std::ostringstream log;
   double             exact = 0;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 //
-// Stress suite (numerical stability): the planar block under conditions
+// Robustness (numerical stability): the planar block under conditions
 // where contact solvers break. Wherever the planar oracle applies, it must
 // hold; elsewhere the run must end in a converged K, a bracket or a clear
 // failure, and never a NaN or a K reported as converged when the contact
@@ -84,7 +84,7 @@ namespace
   }
 } // namespace
 
-TEST(StressSuite, PlanarOracleAcrossConditions)
+TEST(Robustness, PlanarOracleAcrossConditions)
 {
   std::vector<Variant> variants;
   for (const double ratio : {1e-4, 1e-2, 1.0, 1e2, 1e4})
@@ -140,7 +140,7 @@ TEST(StressSuite, PlanarOracleAcrossConditions)
     }
 }
 
-TEST(StressSuite, JustBelowAndJustAboveTheLimit)
+TEST(Robustness, JustBelowAndJustAboveTheLimit)
 {
   // Strength set so that K = 1 lies within 1e-3 of the limit, on both sides:
   // with the initial K at 1 the first solve is just below or just above.
@@ -158,7 +158,7 @@ TEST(StressSuite, JustBelowAndJustAboveTheLimit)
     }
 }
 
-TEST(StressSuite, FrictionlessPlaneHasNoEquilibrium)
+TEST(Robustness, FrictionlessPlaneHasNoEquilibrium)
 {
   // phi = 0 and c = 0 on a plane: no K holds the block.
   Variant v;
@@ -212,7 +212,7 @@ namespace
   }
 } // namespace
 
-TEST(StressSuite, StatusCycleIsDetectedAndBroken)
+TEST(Robustness, StatusCycleIsDetectedAndBroken)
 {
   // The block of prm/inclined_block.prm with c = 5 kPa and no tensile
   // strength. At K = 1 its heel opens, and K* = (c (L - A_heel) + W cos 30
@@ -250,7 +250,7 @@ TEST(StressSuite, StatusCycleIsDetectedAndBroken)
   EXPECT_EQ(n_at_cutoff, 1u);
 }
 
-TEST(StressSuite, SafetyFactorThroughStatusCyclesIsExact)
+TEST(Robustness, SafetyFactorThroughStatusCyclesIsExact)
 {
   // Cases (found by a sweep over c, phi, the inclination and the mesh of
   // the block without tensile strength) whose safety-factor iteration meets

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 //
-// Heavy stress variants (ctest label "heavy", left out of the default run:
+// Heavy robustness variants (ctest label "heavy", left out of the default run:
 // `ctest -L heavy` or `bash bootstrap.sh heavy`): the planar oracle on fine
 // 2D meshes and on 3D blocks across stiffness contrast and Poisson's ratio.
 // Each checks K against the exact planar value
@@ -37,7 +37,7 @@ namespace
   }
 } // namespace
 
-TEST(StressHeavy, PlanarOracleOnFineMeshes2D)
+TEST(RobustnessHeavy, PlanarOracleOnFineMeshes2D)
 {
   struct Variant
   {
@@ -69,7 +69,7 @@ TEST(StressHeavy, PlanarOracleOnFineMeshes2D)
     }
 }
 
-TEST(StressHeavy, PlanarOracleOnThreeDBlocks)
+TEST(RobustnessHeavy, PlanarOracleOnThreeDBlocks)
 {
   // The built-in 3D block on a plane dipping 30 degrees towards 120: a
   // 10 x 6 x 5 block, phi = 30, c = 15 kPa, A = 60.
