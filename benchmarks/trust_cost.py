@@ -19,8 +19,8 @@ import common  # noqa: E402
 # cases whose limit is planar (one certification solve) or creeping (wedge).
 CASES = [
     ("paper_slope.prm", {"Geometry/Slope/Mesh size": 1.0}, "paper's slope, h = 1"),
-    ("paper_slope.prm", {"Geometry/Slope/Mesh size": 0.6}, "paper's slope, h = 0.6"),
-    ("paper_slope.prm", {"Geometry/Slope/Mesh size": 0.45}, "paper's slope, h = 0.45"),
+    ("paper_slope.prm", {"Geometry/Slope/Mesh size": 0.4}, "paper's slope, h = 0.4"),
+    ("paper_slope.prm", {"Geometry/Slope/Mesh size": 0.16}, "paper's slope, h = 0.16"),
     ("priest_plane_failure.prm", {}, "Priest plane failure"),
     ("rock_wedge.prm", {}, "rock wedge"),
     (os.path.join(common.ROOT, "tests", "three_d", "block_on_plane_3d.prm"), {}, "3D block on a plane"),

@@ -92,11 +92,15 @@ namespace fdem
         c.K_failed            = failed.K;
         c.failure             = failed.solution.result;
         const bool agrees     = c.relative_difference <= tolerance;
+        const double width    = (c.K_failed - c.K) / c.K;
         // K* above K_lo, by a little: the blocks have strength to spare by
-        // eq. (12), yet lose equilibrium just above K_lo. K_lo is the
-        // conservative answer of the two.
-        c.conservative = !agrees && c.K_star > c.K && c.relative_difference <= agreement;
-        c.holds        = (agrees || c.conservative) && failed.solution.mechanism;
+        // eq. (12), yet lose equilibrium just above K_lo. Or the mechanism
+        // above lies a little further than the tolerance, solves between
+        // having failed numerically. K_lo, a static state, is then the
+        // conservative answer.
+        c.conservative = (!agrees || width > tolerance) && c.K_star >= c.K &&
+                         c.relative_difference <= agreement && width <= agreement;
+        c.holds = (agrees || c.conservative) && failed.solution.mechanism;
         std::ostringstream numbers;
         numbers.precision(9);
         numbers << " and no static solution at K = " << c.K_failed << " (" << c.failure << ")";
@@ -108,8 +112,8 @@ namespace fdem
                      "), not as a mechanism";
         else
           c.reason = factors(solved) + numbers.str() +
-                     (c.conservative ? "; K* exceeds K, within Bracket agreement: K is the "
-                                       "conservative value" :
+                     (c.conservative ? "; K* or the mechanism above lies beyond the tolerance, "
+                                       "within Bracket agreement: K is the conservative value" :
                                        "");
         return c;
       }
@@ -140,6 +144,19 @@ namespace fdem
           const Step *solved = step_at(result.steps, result.bracket_low, true);
           const Step *failed = step_at(result.steps, result.bracket_high, false);
           Assert(solved != nullptr && failed != nullptr, dealii::ExcInternalError());
+          // A numerical failure just above K_lo bounds nothing: the smallest
+          // K above it whose solve failed as a mechanism does.
+          const Step *mechanism = nullptr;
+          for (const Step &step : result.steps)
+            if (step.solution.mechanism && step.K > solved->K &&
+                (mechanism == nullptr || step.K < mechanism->K))
+              mechanism = &step;
+          if (!failed->solution.mechanism && mechanism != nullptr)
+            {
+              const Certificate c = bracket(*solved, *mechanism, tolerance, bracket_agreement);
+              if (c.holds)
+                return c;
+            }
           return bracket(*solved, *failed, tolerance, bracket_agreement);
         }
       if (!last.solution.converged && !last.solution.mechanism)

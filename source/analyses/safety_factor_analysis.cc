@@ -65,11 +65,12 @@ namespace fdem
       if (result.certificate.conservative)
         {
           std::ostringstream warning;
-          warning << "K* = " << std::setprecision(9) << result.certificate.K_star
-                  << " at the last static state, K = " << result.certificate.K
-                  << ": equilibrium is lost before K reaches K* (e.g. a plane lifting off); "
-                     "K is the conservative value, its relative distance to K* "
-                  << std::setprecision(3) << result.certificate.relative_difference;
+          const Certificate &c = result.certificate;
+          warning << "the limit lies between the last static state, K = " << std::setprecision(9)
+                  << c.K << " (its K* = " << c.K_star << "), and a mechanism at K = " << c.K_failed
+                  << ", further apart than the tolerance: equilibrium is lost before K reaches "
+                     "K* (e.g. a plane lifting off) or solves between failed numerically; K is "
+                     "the conservative value";
           model.warn(warning.str());
         }
       result.stiffness = stiffness_sensitivity(result);

@@ -285,10 +285,12 @@ namespace fdem
                         "A limit bracketed by a solved K_lo and a K_hi just above "
                         "it whose solve fails as a mechanism is certified when K* "
                         "at K_lo agrees with K_lo to Tolerance; or, conservatively, "
-                        "when K* exceeds K_lo by at most this much (relative, "
-                        "dimensionless): equilibrium is then lost before eq. (12) "
-                        "reaches its limit (e.g. a wedge whose second plane lifts "
-                        "off), K_lo is reported and the run warns. Larger "
+                        "when K* exceeds K_lo, and the smallest K above it whose "
+                        "solve fails as a mechanism lies beyond K_lo, by at most "
+                        "this much (relative, dimensionless): equilibrium is then "
+                        "lost before eq. (12) reaches its limit (e.g. a wedge whose "
+                        "second plane lifts off), or solves between failed "
+                        "numerically; K_lo is reported and the run warns. Larger "
                         "disagreements (an undeclared contact gives K* many times "
                         "K) are refused. 0 asks for agreement to Tolerance.");
       prm.declare_entry("Stiffness check",

@@ -178,7 +178,10 @@ def check_triple_point(exe, prm):
             re.finditer(r"interface '([^']*)': (\d+) node pairs", result.stdout)}
     summary = result.summary
     assert summary["status"] == "completed" and summary["converged"], summary["status"]
-    assert summary["warnings"] == [], summary["warnings"]
+    # The only judgement allowed: the limit is a bracket whose K* exceeds K
+    # a little (equilibrium lost before K reaches K*), K the conservative
+    # value (doc/theory.md, "The certificate").
+    assert all("conservative value" in w for w in summary["warnings"]), summary["warnings"]
     name = re.match(r"\s*interface '([^']*)'", left_out[0]).group(1)
     pairs = {i["name"]: i["n_pairs"] for i in summary["interfaces"]}
     for interface, n in made.items():
@@ -280,11 +283,9 @@ def check_wedge(exe, prm, tolerance="1e-5", max_share="0.05"):
 def check_invariance(exe, reference, *others):
     """Runs REF and OTHERS; all must agree (see the usage above)."""
     def outcome(prm):
-        with tempfile.TemporaryDirectory() as workdir:
-            result = run(exe, prm, workdir)
-            assert result.returncode == 0, f"{prm}: exit {result.returncode}: {result.stderr}"
-            case = os.path.splitext(os.path.basename(prm))[0]
-            summary = json.load(open(os.path.join(workdir, case + "-output", "summary.json")))
+        result = fdem_run.run_case(exe, prm)
+        assert result.returncode == 0, f"{prm}: exit {result.returncode}: {result.stderr}"
+        summary = result.summary
         assert summary["status"] == "completed", f"{prm}: {summary['status']}"
         steps = [(s["contact_result"], s["n_stick"], s["n_slip"], s["n_open"])
                  for s in summary["iterations"]]
