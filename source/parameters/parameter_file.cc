@@ -125,15 +125,17 @@ namespace fdem
 
       /**
        * Checks @p text of @p filename and, recursively, the files it
-       * includes: @p stack holds the files being read (for a cycle),
-       * @p settings every entry set so far, by its full path.
+       * includes: @p stack holds the files being read (for a cycle). An
+       * entry set twice within one file is an error; a file may set again
+       * what a file it includes sets (that is how a case varies a shipped
+       * one), so each file has its own record of settings.
        */
       void
-      check_text(const std::string                 &filename,
-                 const std::string                 &text,
-                 std::vector<std::string>          &stack,
-                 std::map<std::string, Setting>    &settings)
+      check_text(const std::string        &filename,
+                 const std::string        &text,
+                 std::vector<std::string> &stack)
       {
+        std::map<std::string, Setting> settings;
         std::istringstream      in(text);
         std::string             raw;
         std::vector<std::string> path;
@@ -218,7 +220,7 @@ namespace fdem
                                        " includes deep."));
                 const std::string included_text = read_text(included, context);
                 stack.push_back(canonical);
-                check_text(included, included_text, stack, settings);
+                check_text(included, included_text, stack);
                 stack.pop_back();
               }
           }
@@ -234,8 +236,7 @@ namespace fdem
       std::error_code   error;
       std::vector<std::string> stack = {
         std::filesystem::weakly_canonical(filename, error).string()};
-      std::map<std::string, Setting> settings;
-      check_text(filename, text, stack, settings);
+      check_text(filename, text, stack);
       return text;
     }
 
