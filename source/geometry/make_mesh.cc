@@ -14,7 +14,10 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/physics/transformations.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <sstream>
 
 namespace fdem
 {
@@ -52,6 +55,60 @@ namespace fdem
 
 
 
+    namespace
+    {
+      // Peak memory per degree of freedom of a run, measured on the paper's
+      // slope at 4.1 million dofs (doc/scaling.md: 11590 MiB).
+      constexpr double bytes_per_dof = 2950;
+      // Nodes per area / h^2 of Gmsh's quadrilaterals there (2.06 million
+      // nodes for 1550 m^2 at h = 0.035 m).
+      constexpr double nodes_per_cell_area = 1.6;
+
+      /**
+       * Refuses a slope whose mesh would need more memory than allowed,
+       * before Gmsh starts: Gmsh would otherwise grow without bound (Mesh
+       * size = 1e-6) or mesh for minutes (0.01). The estimate: the area
+       * between the ground and the base over the element size squared,
+       * plus a band of the finer size along the sliding surface; two dofs
+       * per node.
+       */
+      void
+      check_slope_size(const parameters::GeometryParameters &geometry)
+      {
+        const Slope &slope = geometry.slope;
+        const auto  &g     = slope.ground_surface;
+        double       area = 0, length = 0;
+        for (unsigned int i = 1; i < g.size(); ++i)
+          {
+            area += (g[i][0] - g[i - 1][0]) *
+                    (0.5 * (g[i][1] + g[i - 1][1]) - slope.base_elevation);
+            length += g[i].distance(g[i - 1]);
+          }
+        const double h   = slope.mesh_size;
+        const double h_s = std::min(slope.mesh_size_on_sliding_surface, h);
+        const double n_nodes =
+          nodes_per_cell_area *
+          std::min(area / (h_s * h_s),
+                   area / (h * h) + length * h / (h_s * h_s));
+        const double mib = 2 * n_nodes * bytes_per_dof / (1 << 20);
+        double       limit = geometry.memory_limit;
+        if (limit == 0)
+          limit = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE) /
+                  (1 << 20);
+        std::ostringstream message;
+        message.precision(3);
+        message << "Geometry/Slope/Mesh size: about " << n_nodes
+                << " nodes, which would need about " << mib
+                << " MiB, more than the " << limit
+                << " MiB allowed (Geometry/Memory limit; 0 is this machine's "
+                   "memory); use a coarser mesh or raise the limit.";
+        AssertThrow(std::isfinite(mib) && mib <= limit,
+                    ExcMessage(message.str()));
+      }
+    } // namespace
+
+
+
     template <int dim>
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
@@ -81,6 +138,8 @@ namespace fdem
                                  "slope, hertz and inclined block are 2D "
                                  "only; in 3D use wedge, block on plane, hertz "
                                  "sphere or a mesh file."));
+          if (geometry.source == Source::slope)
+            check_slope_size(geometry);
           if constexpr (dim == 2)
             mesh = (geometry.source == Source::slope) ?
                      make_slope_mesh(geometry.slope) :
