@@ -203,6 +203,22 @@ namespace fdem
                                                      "Boundaries/" + name + "/Pressure") +
                                      ": not a number at (" + point.str() + ")."));
             }
+    // The same for a traction, at every vertex of its faces.
+    for (const auto &[id, traction] : tractions)
+      for (const auto &face : mesh.faces)
+        if (face.boundary_id == id)
+          for (const unsigned int v : face.vertices)
+            {
+              Vector<double> value(dim);
+              traction->vector_value(mesh.vertices[v], value);
+              std::ostringstream point;
+              point << mesh.vertices[v];
+              for (unsigned int d = 0; d < dim; ++d)
+                AssertThrow(std::isfinite(value[d]),
+                            ExcMessage("Boundaries/" + mesh.face_group_names[id] +
+                                       "/Traction: not a finite number at (" +
+                                       point.str() + ")."));
+            }
 
     blocks.clear();
     for (unsigned int b = 0; b < mesh.block_names.size(); ++b)

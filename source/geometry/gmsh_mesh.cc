@@ -9,6 +9,7 @@
 #include <gmsh.h>
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -297,7 +298,26 @@ namespace fdem
           node_tags, coordinates, parametric_coordinates, -1, -1, false, false);
         std::unordered_map<std::size_t, std::size_t> position_of_node;
         for (std::size_t i = 0; i < node_tags.size(); ++i)
-          position_of_node[node_tags[i]] = i;
+          {
+            // A coordinate that is not a number, or a node listed twice at
+            // two places, would give a distorted mesh that runs silently.
+            for (unsigned int d = 0; d < 3; ++d)
+              AssertThrow(std::isfinite(coordinates[3 * i + d]),
+                          ExcMessage(source + ": node " +
+                                     std::to_string(node_tags[i]) +
+                                     " has a coordinate that is not a finite "
+                                     "number."));
+            const auto inserted = position_of_node.emplace(node_tags[i], i);
+            const std::size_t j = inserted.first->second;
+            AssertThrow(inserted.second ||
+                          (coordinates[3 * i] == coordinates[3 * j] &&
+                           coordinates[3 * i + 1] == coordinates[3 * j + 1] &&
+                           coordinates[3 * i + 2] == coordinates[3 * j + 2]),
+                        ExcMessage(source + ": node " +
+                                   std::to_string(node_tags[i]) +
+                                   " is listed twice, at two different "
+                                   "places."));
+          }
         for (auto &[tag, vertex] : vertex_of_node)
           {
             vertex              = mesh.vertices.size();
@@ -418,10 +438,93 @@ namespace fdem
 
 
 
+    namespace
+    {
+      /**
+       * Gmsh keeps one of two nodes with the same tag in an ASCII .msh file
+       * (format 2 or 4) without a word: a node listed twice at two places
+       * is an error here. Binary files are left to Gmsh.
+       */
+      void
+      check_node_tags(const std::string &file_name)
+      {
+        std::ifstream in(file_name);
+        std::string   line;
+        double        version = 0;
+        while (std::getline(in, line))
+          {
+            if (line.rfind("$MeshFormat", 0) == 0)
+              {
+                int binary = 0;
+                in >> version >> binary;
+                if (binary != 0)
+                  return;
+              }
+            else if (line.rfind("$Nodes", 0) == 0)
+              break;
+          }
+        if (!in)
+          return;
+        std::map<std::size_t, std::array<double, 3>> seen;
+        const auto add = [&](const std::size_t tag, const std::array<double, 3> &x) {
+          const auto inserted = seen.emplace(tag, x);
+          AssertThrow(inserted.second || inserted.first->second == x,
+                      ExcMessage("Gmsh file '" + file_name + "': node " +
+                                 std::to_string(tag) +
+                                 " is listed twice, at two different places."));
+        };
+        if (version < 4)
+          {
+            std::size_t n = 0;
+            in >> n;
+            for (std::size_t i = 0; i < n && in; ++i)
+              {
+                std::size_t           tag;
+                std::array<double, 3> x;
+                in >> tag >> x[0] >> x[1] >> x[2];
+                if (in)
+                  add(tag, x);
+              }
+          }
+        else
+          {
+            std::size_t n_blocks = 0, n_nodes, min_tag, max_tag;
+            in >> n_blocks >> n_nodes >> min_tag >> max_tag;
+            for (std::size_t b = 0; b < n_blocks && in; ++b)
+              {
+                int         entity_dim, entity_tag, parametric;
+                std::size_t n = 0;
+                in >> entity_dim >> entity_tag >> parametric >> n;
+                std::vector<std::size_t> tags(n);
+                for (auto &tag : tags)
+                  in >> tag;
+                for (std::size_t i = 0; i < n && in; ++i)
+                  {
+                    std::array<double, 3> x;
+                    in >> x[0] >> x[1] >> x[2];
+                    for (int p = 0; p < (parametric ? entity_dim : 0); ++p)
+                      {
+                        double u;
+                        in >> u;
+                      }
+                    if (in)
+                      add(tags[i], x);
+                  }
+              }
+          }
+      }
+    } // namespace
+
+
+
     template <int dim>
     MeshDescription<dim>
     read_gmsh_file(const std::string &file_name)
     {
+      if (std::filesystem::path(file_name).extension() == ".msh" &&
+          std::ifstream(file_name).good() &&
+          !std::filesystem::is_directory(file_name))
+        check_node_tags(file_name);
       AssertThrow(std::ifstream(file_name).good() &&
                     !std::filesystem::is_directory(file_name),
                   ExcMessage("Gmsh file '" + file_name +
