@@ -10,11 +10,17 @@
 #include <fdem/geometry/make_mesh.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/physics/transformations.h>
 
+#include <fdem/postprocess/results_folder.h>
+
 #include <unistd.h>
+
+#include <csignal>
+#include <cstring>
 
 #include <cmath>
 #include <sstream>
@@ -105,6 +111,57 @@ namespace fdem
         AssertThrow(std::isfinite(mib) && mib <= limit,
                     ExcMessage(message.str()));
       }
+
+      // The message of the watchdog, made before it is armed: a signal
+      // handler may not allocate.
+      char timeout_message[2048] = "";
+
+      extern "C" void
+      mesh_time_limit_reached(int)
+      {
+        if (write(STDERR_FILENO, timeout_message, std::strlen(timeout_message)) < 0)
+          {
+            // Nothing else to tell.
+          }
+        postprocess::remove_partial_folder();
+        _exit(1);
+      }
+
+      /**
+       * Ends the process with a one-line error if making the mesh takes
+       * longer than Geometry/Time limit: Gmsh cannot be interrupted from
+       * outside (a .geo loop `For i In {1:1e12}` runs inside its parser), so
+       * an alarm is the only bound.
+       */
+      class MeshWatchdog
+      {
+      public:
+        MeshWatchdog(const double seconds, const std::string &what)
+          : armed(seconds > 0)
+        {
+          if (!armed)
+            return;
+          const std::string message =
+            "fdem-slope: error: Geometry/Time limit: making the mesh (" + what +
+            ") took more than " + std::to_string(long(std::ceil(seconds))) +
+            " s; a .geo loop that does not end, or a mesh far too fine?\n";
+          // Every rank meshes and every rank's alarm ends it; rank 0 says why.
+          const bool host = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+          std::strncpy(timeout_message, host ? message.c_str() : "", sizeof timeout_message - 1);
+          std::signal(SIGALRM, mesh_time_limit_reached);
+          alarm(static_cast<unsigned int>(std::ceil(seconds)));
+        }
+        ~MeshWatchdog()
+        {
+          if (!armed)
+            return;
+          alarm(0);
+          std::signal(SIGALRM, SIG_DFL);
+        }
+
+      private:
+        bool armed;
+      };
     } // namespace
 
 
@@ -116,6 +173,10 @@ namespace fdem
               const std::string                    &msh_output_file)
     {
       MeshDescription<dim> mesh;
+      const MeshWatchdog   watchdog(geometry.time_limit,
+                                  geometry.source == Source::mesh_file ?
+                                    "Gmsh file '" + geometry.mesh_file_path(prm_directory) + "'" :
+                                    "a built-in generator");
       if (geometry.source == Source::mesh_file)
         mesh = read_gmsh_file<dim>(geometry.mesh_file_path(prm_directory));
       else if (geometry.source_is_3d())

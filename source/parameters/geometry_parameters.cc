@@ -69,6 +69,13 @@ namespace fdem
           "means the physical memory of this machine; set a larger value to "
           "override.");
         prm.declare_entry(
+          "Time limit",
+          "1800",
+          Patterns::Double(0),
+          "Longest time making the mesh may take (s): Gmsh reading a .geo "
+          "file (a loop that does not end) or meshing. Past it the run ends "
+          "with an error. 0 means no limit.");
+        prm.declare_entry(
           "Scale factor",
           "1",
           Patterns::Double(0),
@@ -115,6 +122,7 @@ namespace fdem
         mesh_file      = prm.get("Mesh file");
         scale_factor   = prm.get_double("Scale factor");
         memory_limit   = prm.get_double("Memory limit");
+        time_limit     = prm.get_double("Time limit");
         rotation_angle = prm.get_double("Rotation angle");
 
         const std::vector<double> axis = Utilities::string_to_double(

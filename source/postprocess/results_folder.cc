@@ -33,6 +33,19 @@ namespace fdem
       extern "C" void
       remove_partial_folder_and_die(const int signal)
       {
+        remove_partial_folder();
+        std::signal(signal, SIG_DFL);
+        raise(signal);
+      }
+
+      constexpr int signals[] = {SIGINT, SIGTERM, SIGHUP};
+    } // namespace
+
+
+
+    void
+    remove_partial_folder()
+    {
         if (partial_folder[0] != '\0')
           {
             const int folder = open(partial_folder, O_RDONLY | O_DIRECTORY);
@@ -61,12 +74,7 @@ namespace fdem
               }
             rmdir(partial_folder);
           }
-        std::signal(signal, SIG_DFL);
-        raise(signal);
-      }
-
-      constexpr int signals[] = {SIGINT, SIGTERM, SIGHUP};
-    } // namespace
+    }
 
 
 

@@ -49,6 +49,13 @@ namespace fdem
       bool        writes_files;
       bool        committed = false;
     };
+
+    /**
+     * Removes the partial folder of the running ResultsFolder, if any, with
+     * system calls only: safe in a signal handler that ends the process.
+     */
+    void
+    remove_partial_folder();
   } // namespace postprocess
 } // namespace fdem
 
