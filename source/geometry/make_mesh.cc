@@ -146,7 +146,8 @@ namespace fdem
             ") took more than " + std::to_string(long(std::ceil(seconds))) +
             " s; a .geo loop that does not end, or a mesh far too fine?\n";
           // Every rank meshes and every rank's alarm ends it; rank 0 says why.
-          const bool host = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+          const bool host = !Utilities::MPI::job_supports_mpi() ||
+                            Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
           std::strncpy(timeout_message, host ? message.c_str() : "", sizeof timeout_message - 1);
           std::signal(SIGALRM, mesh_time_limit_reached);
           alarm(static_cast<unsigned int>(std::ceil(seconds)));
