@@ -70,7 +70,8 @@ main(int argc, char *argv[])
             validate = true;
           else if (!argument.empty() && argument[0] == '-')
             {
-              std::cerr << "fdem-slope: error: unknown option '" << argument << "'; see --help.\n";
+              std::cerr << "fdem-slope: error: unknown option '" << argument
+                        << "'; see --help.\n";
               return 2;
             }
           else if (prm_file.empty())
