@@ -70,15 +70,17 @@ main(int argc, char *argv[])
             validate = true;
           else if (!argument.empty() && argument[0] == '-')
             {
-              std::cerr << "fdem-slope: error: unknown option '" << argument << "'.\n"
-                        << usage;
+              std::cerr << "fdem-slope: error: unknown option '" << argument
+                        << "'; see --help.\n";
               return 2;
             }
           else if (prm_file.empty())
             prm_file = argument;
           else
             {
-              std::cerr << "fdem-slope: error: give one parameter file.\n" << usage;
+              std::cerr << "fdem-slope: error: give one parameter file, not '"
+                        << prm_file << "' and '" << argument
+                        << "'; see --help.\n";
               return 2;
             }
         }
@@ -90,7 +92,8 @@ main(int argc, char *argv[])
         }
       if (prm_file.empty())
         {
-          std::cerr << "fdem-slope: error: no parameter file given.\n" << usage;
+          std::cerr << "fdem-slope: error: no parameter file given; see "
+                       "--help.\n";
           return 2;
         }
       if (validate)

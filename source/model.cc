@@ -4,6 +4,10 @@
 #include <fdem/checks/layout_checks.h>
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/model.h>
+#include <fdem/postprocess/results_folder.h>
+#include <fdem/postprocess/output_files.h>
+
+#include <set>
 #include <fdem/postprocess/block_output.h>
 #include <fdem/analyses/safety_factor_analysis.h>
 #include <fdem/postprocess/hertz_reference.h>
@@ -202,6 +206,22 @@ namespace fdem
                           ExcMessage((is_interface ? "Interfaces/" + name + "/Pore pressure" :
                                                      "Boundaries/" + name + "/Pressure") +
                                      ": not a number at (" + point.str() + ")."));
+            }
+    // The same for a traction, at every vertex of its faces.
+    for (const auto &[id, traction] : tractions)
+      for (const auto &face : mesh.faces)
+        if (face.boundary_id == id)
+          for (const unsigned int v : face.vertices)
+            {
+              Vector<double> value(dim);
+              traction->vector_value(mesh.vertices[v], value);
+              std::ostringstream point;
+              point << mesh.vertices[v];
+              for (unsigned int d = 0; d < dim; ++d)
+                AssertThrow(std::isfinite(value[d]),
+                            ExcMessage("Boundaries/" + mesh.face_group_names[id] +
+                                       "/Traction: not a finite number at (" +
+                                       point.str() + ")."));
             }
 
     blocks.clear();
@@ -498,15 +518,22 @@ namespace fdem
     const std::string directory = parameters.output_directory();
     const auto        results   = interface_results();
     unsigned int      part      = 0;
+    // Two names may give one file name ('rock/1' and 'rock 1'): the later
+    // gets its index appended, so that no file is written twice.
+    std::set<std::string> stems;
+    const auto unique = [&](const std::string &kind, const std::string &name, const unsigned int i) {
+      return stems.insert(kind + postprocess::file_stem(name)).second ?
+               suffix : "-" + std::to_string(i) + suffix;
+    };
     for (unsigned int b = 0; b < blocks.size(); ++b)
       entries.push_back({time, part++,
                          postprocess::write_block_vtu(*blocks[b], b, displacements[b],
-                                                      directory, suffix)});
+                                                      directory, unique("block-", blocks[b]->name, b))});
     for (unsigned int i = 0; i < interfaces.size(); ++i)
       entries.push_back({time, part++,
                          postprocess::write_interface_vtu(*blocks[interfaces[i].block_J],
                                                           interfaces[i], results[i],
-                                                          directory, suffix)});
+                                                          directory, unique("interface-", interfaces[i].name, i))});
   }
 
   template <int dim>
@@ -551,7 +578,33 @@ namespace fdem
     summary["peak_memory_MiB"] = postprocess::peak_memory_mib();
     if (writes_files)
       postprocess::write_json(directory + "/summary.json", summary);
-    log << "Results in " << directory << "/" << std::endl;
+  }
+
+  template <int dim>
+  void
+  Model<dim>::validate()
+  {
+    validating = true;
+    make_geometry();
+    setup_blocks();
+    for (const auto &block : blocks)
+      block->assemble(parameters.loads);
+    build_interfaces();
+  }
+
+  std::vector<std::string>
+  validate_case(const std::string &prm_file, std::ostream &log)
+  {
+    const parameters::Parameters parameters = parameters::read_parameters(prm_file);
+    if (parameters.dimension == 2)
+      {
+        Model<2> model(parameters, "", log);
+        model.validate();
+        return model.warnings;
+      }
+    Model<3> model(parameters, "", log);
+    model.validate();
+    return model.warnings;
   }
 
   template <int dim>
@@ -584,17 +637,30 @@ namespace fdem
   nlohmann::json
   run_case(const std::string &prm_file, std::ostream &log)
   {
-    std::string                        expanded;
-    const parameters::Parameters       parameters = parameters::read_parameters(prm_file, &expanded);
+    std::string            expanded;
+    parameters::Parameters parameters = parameters::read_parameters(prm_file, &expanded);
+    // The run writes into a partial folder that becomes the results folder
+    // only when the run ends (postprocess/results_folder.h).
+    postprocess::ResultsFolder folder(parameters.output_directory(),
+                                      Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    const std::string results   = parameters.output_directory();
+    parameters.output.directory = folder.staging();
+    nlohmann::json summary;
     if (parameters.dimension == 2)
       {
         Model<2> model(parameters, expanded, log);
         model.run();
-        return model.summary;
+        summary = model.summary;
       }
-    Model<3> model(parameters, expanded, log);
-    model.run();
-    return model.summary;
+    else
+      {
+        Model<3> model(parameters, expanded, log);
+        model.run();
+        summary = model.summary;
+      }
+    folder.commit();
+    log << "Results in " << results << "/" << std::endl;
+    return summary;
   }
 
   template class Model<2>;

@@ -194,6 +194,14 @@ namespace fdem
                     for (unsigned int d = 0; d < dim; ++d)
                       traction[d] += value[d];
                   }
+                // Where the load is evaluated: a load that is not a number
+                // would spread NaN through every result.
+                for (unsigned int d = 0; d < dim; ++d)
+                  AssertThrow(std::isfinite(traction[d]),
+                              ExcMessage("A surface load (Pressure or Traction "
+                                         "of a boundary, or a pore pressure) "
+                                         "is not a finite number at a point "
+                                         "of block '" + name + "'."));
                 for (unsigned int i = 0; i < n; ++i)
                   cell_rhs(i) += fe_face_values[displacement].value(i, q) *
                                  traction * fe_face_values.JxW(q);

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 
 #include <fdem/geometry/gmsh_mesh.h>
+#include <fdem/geometry/msh_checks.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/grid/grid_tools.h>
@@ -9,6 +10,7 @@
 #include <gmsh.h>
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -297,7 +299,26 @@ namespace fdem
           node_tags, coordinates, parametric_coordinates, -1, -1, false, false);
         std::unordered_map<std::size_t, std::size_t> position_of_node;
         for (std::size_t i = 0; i < node_tags.size(); ++i)
-          position_of_node[node_tags[i]] = i;
+          {
+            // A coordinate that is not a number, or a node listed twice at
+            // two places, would give a distorted mesh that runs silently.
+            for (unsigned int d = 0; d < 3; ++d)
+              AssertThrow(std::isfinite(coordinates[3 * i + d]),
+                          ExcMessage(source + ": node " +
+                                     std::to_string(node_tags[i]) +
+                                     " has a coordinate that is not a finite "
+                                     "number."));
+            const auto inserted = position_of_node.emplace(node_tags[i], i);
+            const std::size_t j = inserted.first->second;
+            AssertThrow(inserted.second ||
+                          (coordinates[3 * i] == coordinates[3 * j] &&
+                           coordinates[3 * i + 1] == coordinates[3 * j + 1] &&
+                           coordinates[3 * i + 2] == coordinates[3 * j + 2]),
+                        ExcMessage(source + ": node " +
+                                   std::to_string(node_tags[i]) +
+                                   " is listed twice, at two different "
+                                   "places."));
+          }
         for (auto &[tag, vertex] : vertex_of_node)
           {
             vertex              = mesh.vertices.size();
@@ -418,10 +439,17 @@ namespace fdem
 
 
 
+
+
+
     template <int dim>
     MeshDescription<dim>
     read_gmsh_file(const std::string &file_name)
     {
+      if (std::filesystem::path(file_name).extension() == ".msh" &&
+          std::ifstream(file_name).good() &&
+          !std::filesystem::is_directory(file_name))
+        check_node_tags(file_name);
       AssertThrow(std::ifstream(file_name).good() &&
                     !std::filesystem::is_directory(file_name),
                   ExcMessage("Gmsh file '" + file_name +

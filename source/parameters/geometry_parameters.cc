@@ -60,6 +60,22 @@ namespace fdem
           "blocks, those one dimension lower the face groups. A relative path "
           "is relative to the directory of the .prm file.");
         prm.declare_entry(
+          "Memory limit",
+          "0",
+          Patterns::Double(0),
+          "Largest memory a built-in mesh may need, estimated before Gmsh "
+          "meshes it (MiB; about 3 kB per degree of freedom, as measured in "
+          "doc/scaling.md). A finer mesh is refused with the estimate. 0 "
+          "means the physical memory of this machine; set a larger value to "
+          "override.");
+        prm.declare_entry(
+          "Time limit",
+          "1800",
+          Patterns::Double(0),
+          "Longest time making the mesh may take (s): Gmsh reading a .geo "
+          "file (a loop that does not end) or meshing. Past it the run ends "
+          "with an error. 0 means no limit.");
+        prm.declare_entry(
           "Scale factor",
           "1",
           Patterns::Double(0),
@@ -105,6 +121,8 @@ namespace fdem
         source         = source_from_name(prm.get("Source"));
         mesh_file      = prm.get("Mesh file");
         scale_factor   = prm.get_double("Scale factor");
+        memory_limit   = prm.get_double("Memory limit");
+        time_limit     = prm.get_double("Time limit");
         rotation_angle = prm.get_double("Rotation angle");
 
         const std::vector<double> axis = Utilities::string_to_double(

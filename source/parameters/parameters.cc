@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/parameters/parameter_file.h>
 #include <fdem/parameters/parameters.h>
 
 #include <deal.II/base/exceptions.h>
@@ -87,18 +88,15 @@ namespace fdem
         return names;
       }
 
-      /// Reads @p filename into @p prm; ParameterHandler's own errors say the
-      /// line and file, which is what a user needs.
+      /// Reads @p filename into @p prm (parameter_file.h: the checks that
+      /// ParameterHandler does not make); ParameterHandler's own errors say
+      /// the line and file, which is what a user needs.
       void
       parse_file(ParameterHandler & prm,
                  const std::string &filename,
                  const bool         skip_undefined)
       {
-        std::ifstream file(filename);
-        AssertThrow(file.good(),
-                    ExcMessage("Cannot open the parameter file '" + filename +
-                               "'."));
-        prm.parse_input(filename, "", skip_undefined, false);
+        parse_parameter_file(prm, filename, skip_undefined);
       }
     } // namespace
 
