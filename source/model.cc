@@ -607,33 +607,6 @@ namespace fdem
     return model.warnings;
   }
 
-  template <int dim>
-  void
-  Model<dim>::validate()
-  {
-    validating = true;
-    make_geometry();
-    setup_blocks();
-    for (const auto &block : blocks)
-      block->assemble(parameters.loads);
-    build_interfaces();
-  }
-
-  std::vector<std::string>
-  validate_case(const std::string &prm_file, std::ostream &log)
-  {
-    const parameters::Parameters parameters = parameters::read_parameters(prm_file);
-    if (parameters.dimension == 2)
-      {
-        Model<2> model(parameters, "", log);
-        model.validate();
-        return model.warnings;
-      }
-    Model<3> model(parameters, "", log);
-    model.validate();
-    return model.warnings;
-  }
-
   nlohmann::json
   run_case(const std::string &prm_file, std::ostream &log)
   {
