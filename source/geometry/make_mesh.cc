@@ -8,6 +8,7 @@
 #include <fdem/geometry/cases/wedge.h>
 #include <fdem/geometry/gmsh_mesh.h>
 #include <fdem/geometry/make_mesh.h>
+#include <fdem/postprocess/results_folder.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -15,14 +16,11 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/physics/transformations.h>
 
-#include <fdem/postprocess/results_folder.h>
-
 #include <unistd.h>
 
+#include <cmath>
 #include <csignal>
 #include <cstring>
-
-#include <cmath>
 #include <sstream>
 
 namespace fdem
@@ -96,7 +94,7 @@ namespace fdem
           nodes_per_cell_area *
           std::min(area / (h_s * h_s),
                    area / (h * h) + length * h / (h_s * h_s));
-        const double mib = 2 * n_nodes * bytes_per_dof / (1 << 20);
+        const double mib   = 2 * n_nodes * bytes_per_dof / (1 << 20);
         double       limit = geometry.memory_limit;
         if (limit == 0)
           limit = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE) /
@@ -119,7 +117,9 @@ namespace fdem
       extern "C" void
       mesh_time_limit_reached(int)
       {
-        if (write(STDERR_FILENO, timeout_message, std::strlen(timeout_message)) < 0)
+        if (write(STDERR_FILENO,
+                  timeout_message,
+                  std::strlen(timeout_message)) < 0)
           {
             // Nothing else to tell.
           }
@@ -146,9 +146,12 @@ namespace fdem
             ") took more than " + std::to_string(long(std::ceil(seconds))) +
             " s; a .geo loop that does not end, or a mesh far too fine?\n";
           // Every rank meshes and every rank's alarm ends it; rank 0 says why.
-          const bool host = !Utilities::MPI::job_supports_mpi() ||
-                            Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-          std::strncpy(timeout_message, host ? message.c_str() : "", sizeof timeout_message - 1);
+          const bool host =
+            !Utilities::MPI::job_supports_mpi() ||
+            Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+          std::strncpy(timeout_message,
+                       host ? message.c_str() : "",
+                       sizeof timeout_message - 1);
           std::signal(SIGALRM, mesh_time_limit_reached);
           alarm(static_cast<unsigned int>(std::ceil(seconds)));
         }
@@ -176,8 +179,10 @@ namespace fdem
       MeshDescription<dim> mesh;
       const MeshWatchdog   watchdog(geometry.time_limit,
                                   geometry.source == Source::mesh_file ?
-                                    "Gmsh file '" + geometry.mesh_file_path(prm_directory) + "'" :
-                                    "a built-in generator");
+                                      "Gmsh file '" +
+                                      geometry.mesh_file_path(prm_directory) +
+                                      "'" :
+                                      "a built-in generator");
       if (geometry.source == Source::mesh_file)
         mesh = read_gmsh_file<dim>(geometry.mesh_file_path(prm_directory));
       else if (geometry.source_is_3d())
