@@ -4,7 +4,6 @@
 #include <fdem/checks/layout_checks.h>
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/model.h>
-#include <fdem/postprocess/results_folder.h>
 #include <fdem/postprocess/output_files.h>
 
 #include <set>
@@ -590,50 +589,6 @@ namespace fdem
     for (const auto &block : blocks)
       block->assemble(parameters.loads);
     build_interfaces();
-  }
-
-  std::vector<std::string>
-  validate_case(const std::string &prm_file, std::ostream &log)
-  {
-    const parameters::Parameters parameters = parameters::read_parameters(prm_file);
-    if (parameters.dimension == 2)
-      {
-        Model<2> model(parameters, "", log);
-        model.validate();
-        return model.warnings;
-      }
-    Model<3> model(parameters, "", log);
-    model.validate();
-    return model.warnings;
-  }
-
-  nlohmann::json
-  run_case(const std::string &prm_file, std::ostream &log)
-  {
-    std::string            expanded;
-    parameters::Parameters parameters = parameters::read_parameters(prm_file, &expanded);
-    // The run writes into a partial folder that becomes the results folder
-    // only when the run ends (postprocess/results_folder.h).
-    postprocess::ResultsFolder folder(parameters.output_directory(),
-                                      Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-    const std::string results   = parameters.output_directory();
-    parameters.output.directory = folder.staging();
-    nlohmann::json summary;
-    if (parameters.dimension == 2)
-      {
-        Model<2> model(parameters, expanded, log);
-        model.run();
-        summary = model.summary;
-      }
-    else
-      {
-        Model<3> model(parameters, expanded, log);
-        model.run();
-        summary = model.summary;
-      }
-    folder.commit();
-    log << "Results in " << results << "/" << std::endl;
-    return summary;
   }
 
   template class Model<2>;

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+//
+// The two ways main() runs a case: validate it (up to its node pairs, with
+// the layout checks) or run it into its results folder.
+#include <fdem/model.h>
+#include <fdem/postprocess/results_folder.h>
+
+#include <deal.II/base/mpi.h>
+
+namespace fdem
+{
+  std::vector<std::string>
+  validate_case(const std::string &prm_file, std::ostream &log)
+  {
+    const parameters::Parameters parameters = parameters::read_parameters(prm_file);
+    if (parameters.dimension == 2)
+      {
+        Model<2> model(parameters, "", log);
+        model.validate();
+        return model.warnings;
+      }
+    Model<3> model(parameters, "", log);
+    model.validate();
+    return model.warnings;
+  }
+
+  nlohmann::json
+  run_case(const std::string &prm_file, std::ostream &log)
+  {
+    std::string            expanded;
+    parameters::Parameters parameters = parameters::read_parameters(prm_file, &expanded);
+    // The run writes into a partial folder that becomes the results folder
+    // only when the run ends (postprocess/results_folder.h).
+    postprocess::ResultsFolder folder(parameters.output_directory(),
+                                      Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    const std::string results   = parameters.output_directory();
+    parameters.output.directory = folder.staging();
+    nlohmann::json summary;
+    if (parameters.dimension == 2)
+      {
+        Model<2> model(parameters, expanded, log);
+        model.run();
+        summary = model.summary;
+      }
+    else
+      {
+        Model<3> model(parameters, expanded, log);
+        model.run();
+        summary = model.summary;
+      }
+    folder.commit();
+    log << "Results in " << results << "/" << std::endl;
+    return summary;
+  }
+} // namespace fdem
