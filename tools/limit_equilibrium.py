@@ -1,0 +1,315 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Limit equilibrium by the method of slices: Spencer's method on any
+polyline (or circular) sliding surface, and Bishop's simplified method on a
+circle. It is the program's independent yardstick for non-circular surfaces
+(doc/limit_equilibrium.md): written from the textbook equations, sharing no
+code with fdem-slope. Runs under /usr/bin/python3 (numpy, scipy).
+
+A section (2D, lengths in the model's unit, x to the right, y up) is:
+  ground      the ground surface, points from left to right;
+  layers      a list of Layer, top down: each layer lies below its top line
+              (the ground for the first one) down to the next layer's top;
+  piezometric the piezometric line (points from left to right) or None;
+  gamma_w     the unit weight of water.
+Below the piezometric line a layer weighs gamma_sat and the base carries
+the hydrostatic pore pressure gamma_w (y_piezometric - y), as in the
+program's 'piezometric' pore pressure.
+
+The sliding surface runs from where it leaves the ground on one side to
+where it enters it on the other; its end points lie on the ground. The mass
+above it moves down the slope, to the left or to the right: the program
+finds out which from the ground's elevations at the two ends. A vertical
+tension crack closes the surface at its upper end (crack_depth > 0): the
+surface then starts at the crack's bottom, and water in the crack
+(crack_water_depth) pushes the mass down the slope with gamma_w d^2 / 2.
+
+The slices' boundaries include every vertex of every line and every point
+where two lines cross, so that every line is straight inside a slice: the
+weights and pore-pressure forces of the slices are then exact for the
+polyline geometry, and only the interslice assumption (Spencer's constant
+inclination) and the base forces' points of action remain as the method's
+own approximations.
+"""
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import brentq
+
+
+@dataclass
+class Layer:
+    """One soil layer: its top line (None: the ground surface), unit weights
+    and Mohr-Coulomb strength (c, phi in degrees)."""
+    top: list = None
+    gamma: float = 20.0
+    gamma_sat: float = None
+    c: float = 0.0
+    phi: float = 30.0
+
+    def weight_below_water(self):
+        return self.gamma if self.gamma_sat is None else self.gamma_sat
+
+
+@dataclass
+class Section:
+    ground: list
+    layers: list = field(default_factory=lambda: [Layer()])
+    piezometric: list = None
+    gamma_w: float = 9.81
+
+
+def elevation(line, x):
+    """The elevation of a polyline (points with increasing x) at x; constant
+    beyond its ends."""
+    xs = [p[0] for p in line]
+    ys = [p[1] for p in line]
+    return float(np.interp(x, xs, ys))
+
+
+def _crossings(line_a, line_b, x0, x1):
+    """The x where two polylines cross inside (x0, x1)."""
+    xs = sorted({p[0] for p in line_a} | {p[0] for p in line_b} | {x0, x1})
+    xs = [x for x in xs if x0 <= x <= x1]
+    found = []
+    for a, b in zip(xs[:-1], xs[1:]):
+        da = elevation(line_a, a) - elevation(line_b, a)
+        db = elevation(line_a, b) - elevation(line_b, b)
+        if da * db < 0:
+            found.append(a + (b - a) * da / (da - db))
+    return found
+
+
+def circle_surface(ground, centre, radius, n_points=2001):
+    """The arc of a circle below the ground, as a polyline from left to
+    right whose end points lie on the ground (found by bisection)."""
+    xc, yc = centre
+
+    def depth(x):  # ground minus circle (lower half) at x
+        return elevation(ground, x) - (yc - math.sqrt(max(radius**2 - (x - xc) ** 2, 0.0)))
+
+    xs = np.linspace(xc - radius, xc + radius, 20001)
+    inside = [depth(x) > 0 for x in xs]
+    first = inside.index(True)
+    last = len(inside) - 1 - inside[::-1].index(True)
+    x0 = brentq(depth, xs[max(first - 1, 0)], xs[first], xtol=1e-13) if first > 0 else xs[0]
+    x1 = brentq(depth, xs[last], xs[min(last + 1, len(xs) - 1)], xtol=1e-13) \
+        if last < len(xs) - 1 else xs[-1]
+    return [(x, yc - math.sqrt(max(radius**2 - (x - xc) ** 2, 0.0)))
+            for x in np.linspace(x0, x1, n_points)]
+
+
+class SlicedMass:
+    """The sliding mass cut into slices, in a frame where it moves to the
+    left (a mass that moves to the right is mirrored first)."""
+
+    def __init__(self, section, surface, n_slices=400, crack_depth=0.0,
+                 crack_water_depth=0.0):
+        surface = sorted((float(x), float(y)) for x, y in surface)
+        self.mirrored = elevation(section.ground, surface[0][0]) > \
+            elevation(section.ground, surface[-1][0])
+        flip = (lambda line: [(-x, y) for x, y in line][::-1]) if self.mirrored \
+            else (lambda line: list(line))
+        self.ground = flip(section.ground)
+        self.surface = flip(surface)
+        self.layers = [Layer(None if l.top is None else flip(l.top), l.gamma, l.gamma_sat,
+                             l.c, l.phi) for l in section.layers]
+        self.piezometric = None if section.piezometric is None else flip(section.piezometric)
+        self.gamma_w = section.gamma_w
+        self.crack_force = 0.0
+        self.crack_point = None
+        if crack_depth > 0:
+            self._cut_at_crack(crack_depth, crack_water_depth)
+        self._make_slices(n_slices)
+
+    def _cut_at_crack(self, depth, water_depth):
+        # The crack is at the upper (right) end: the surface ends where it
+        # is depth below the ground.
+        x1 = self.surface[-1][0]
+        x0 = self.surface[0][0]
+        gap = lambda x: elevation(self.ground, x) - elevation(self.surface, x) - depth
+        if gap(x1 - 1e-12 * (x1 - x0)) > 0:
+            raise ValueError("tension crack: the surface is not that deep at its upper end")
+        xs = np.linspace(x0, x1, 4001)
+        values = [gap(x) for x in xs]
+        k = max(i for i, v in enumerate(values[:-1]) if v >= 0)
+        xc = brentq(gap, xs[k], xs[k + 1], xtol=1e-14)
+        self.surface = [p for p in self.surface if p[0] < xc] + \
+            [(xc, elevation(self.surface, xc))]
+        bottom = self.surface[-1][1]
+        self.crack_force = 0.5 * self.gamma_w * water_depth**2
+        # Pushes to the left, at a third of the water depth above the bottom.
+        self.crack_point = (xc, bottom + water_depth / 3.0)
+
+    def _top(self, k):
+        return self.ground if k == 0 or self.layers[k].top is None else self.layers[k].top
+
+    def _make_slices(self, n_slices):
+        x0, x1 = self.surface[0][0], self.surface[-1][0]
+        lines = [self.ground, self.surface] + [self._top(k) for k in range(1, len(self.layers))]
+        if self.piezometric is not None:
+            lines.append(self.piezometric)
+        breaks = {x0, x1}
+        for line in lines:
+            breaks |= {p[0] for p in line if x0 < p[0] < x1}
+        for i in range(len(lines)):
+            for j in range(i + 1, len(lines)):
+                breaks |= set(_crossings(lines[i], lines[j], x0, x1))
+        breaks = sorted(breaks)
+        xs = []
+        width = (x1 - x0) / n_slices
+        for a, b in zip(breaks[:-1], breaks[1:]):
+            m = max(1, int(math.ceil((b - a) / width - 1e-9)))
+            xs.extend(np.linspace(a, b, m + 1)[:-1])
+        xs.append(x1)
+        self.x = np.array(xs)
+
+    def _column(self, x):
+        """Per layer, the (dry, saturated) thickness of the column above the
+        surface at x; with the piezometric elevation."""
+        yb, yg = elevation(self.surface, x), elevation(self.ground, x)
+        yw = -math.inf if self.piezometric is None else elevation(self.piezometric, x)
+        parts = []
+        for k in range(len(self.layers)):
+            top = min(elevation(self._top(k), x), yg)
+            bottom = elevation(self._top(k + 1), x) if k + 1 < len(self.layers) else -math.inf
+            bottom = max(bottom, yb)
+            h = max(top - bottom, 0.0)
+            wet = max(min(top, yw) - bottom, 0.0) if h > 0 else 0.0
+            parts.append((h - wet, wet))
+        return parts, yb, yw
+
+    def _layer_at(self, x, y):
+        for k in range(len(self.layers)):
+            below = elevation(self._top(k + 1), x) if k + 1 < len(self.layers) else -math.inf
+            if y >= below:
+                return self.layers[k]
+        return self.layers[-1]
+
+    def slices(self):
+        """Per slice: weight W, x of its line of action, base angle alpha
+        (positive where the base rises to the right), base length l, base
+        midpoint, pore force U, c, tan(phi)."""
+        out = []
+        for a, b in zip(self.x[:-1], self.x[1:]):
+            wa, wb = 0.0, 0.0  # weight per unit width at a and b
+            ca, cb = self._column(a), self._column(b)
+            for (dry_a, wet_a), (dry_b, wet_b), layer in zip(ca[0], cb[0], self.layers):
+                wa += layer.gamma * dry_a + layer.weight_below_water() * wet_a
+                wb += layer.gamma * dry_b + layer.weight_below_water() * wet_b
+            # A linear load w(x) on [a, b]: its resultant and centroid.
+            W = 0.5 * (wa + wb) * (b - a)
+            xg = a + (b - a) * (wa + 2 * wb) / (3 * (wa + wb)) if wa + wb > 0 else 0.5 * (a + b)
+            ya, yb = ca[1], cb[1]
+            l = math.hypot(b - a, yb - ya)
+            alpha = math.atan2(yb - ya, b - a)
+            ua = self.gamma_w * max(ca[2] - ya, 0.0)
+            ub = self.gamma_w * max(cb[2] - yb, 0.0)
+            U = 0.5 * (ua + ub) * l
+            xm, ym = 0.5 * (a + b), 0.5 * (ya + yb)
+            layer = self._layer_at(xm, ym + 1e-9 * (1 + abs(ym)))
+            out.append(dict(W=W, xg=xg, alpha=alpha, l=l, xm=xm, ym=ym, U=U,
+                            c=layer.c, tan_phi=math.tan(math.radians(layer.phi))))
+        return out
+
+
+def _spencer_residuals(slices, F, lam, crack_force, crack_point):
+    """E at the last boundary (force equilibrium) and the total moment about
+    the origin (moment equilibrium), for the mass moving to the left.
+    @p slices is the dict of arrays of slice_arrays()."""
+    s = slices
+    sa, ca = s["sin"], s["cos"]
+    a, b = s["c"] * s["l"] / F, s["tan_phi"] / F
+    # The crack's water force acts on the last (upper) slice, to the left.
+    Px = np.zeros_like(sa)
+    Px[-1] = -crack_force
+    num = (s["U"] * ca + a * sa - s["W"]) - lam * (a * ca - s["U"] * sa + Px)
+    den = lam * (b * ca - sa) - (ca + b * sa)
+    N = num / den
+    E = np.sum(N * (b * ca - sa) + (a * ca - s["U"] * sa + Px))
+    S = a + b * N
+    # Moment about the origin of the weights, the base forces and the
+    # crack's water force; interslice forces cancel in the sum.
+    fx = -(N + s["U"]) * sa + S * ca
+    fy = (N + s["U"]) * ca + S * sa
+    moment = np.sum(s["xm"] * fy - s["ym"] * fx - s["xg"] * s["W"])
+    if crack_force:
+        moment += crack_point[1] * crack_force  # r x F with F = (-P, 0)
+    return E, moment
+
+
+def slice_arrays(slices):
+    """The slices as a dict of numpy arrays (sin and cos of alpha added)."""
+    arrays = {k: np.array([s[k] for s in slices]) for k in slices[0]}
+    arrays["sin"], arrays["cos"] = np.sin(arrays["alpha"]), np.cos(arrays["alpha"])
+    return arrays
+
+
+def spencer(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0):
+    """Spencer's factor of safety and the tangent of the interslice force
+    inclination, (F, lambda), on a polyline surface."""
+    mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
+    slices = slice_arrays(mass.slices())
+
+    def force_F(lam):
+        f = lambda F: _spencer_residuals(slices, F, lam, mass.crack_force, mass.crack_point)[0]
+        return _root_in_F(f)
+
+    def moment_gap(lam):
+        F = force_F(lam)
+        return _spencer_residuals(slices, F, lam, mass.crack_force, mass.crack_point)[1]
+
+    lams = np.linspace(-0.6, 1.2, 37)
+    gaps = []
+    for lam in lams:
+        try:
+            gaps.append(moment_gap(lam))
+        except ValueError:
+            gaps.append(math.nan)
+    for i in range(len(lams) - 1):
+        if np.isfinite(gaps[i]) and np.isfinite(gaps[i + 1]) and gaps[i] * gaps[i + 1] <= 0:
+            lam = brentq(moment_gap, lams[i], lams[i + 1], xtol=1e-13)
+            return force_F(lam), lam
+    # A plane without cohesion: every slice's forces are proportional to its
+    # weight whatever lambda, so moment equilibrium does not fix lambda (the
+    # gap left is the midpoint rule's, relative to the weights' moments).
+    scale = np.sum(slices["W"]) * (mass.x[-1] - mass.x[0])
+    finite = [(abs(g), lam) for g, lam in zip(gaps, lams) if np.isfinite(g)]
+    if finite and max(g for g, _ in finite) - min(g for g, _ in finite) < 1e-9 * scale \
+            and min(finite)[0] < 1e-4 * scale:
+        return force_F(min(finite)[1]), math.nan
+    raise ValueError("Spencer: no interslice inclination satisfies both equilibria")
+
+
+def _root_in_F(f):
+    """The largest root of f in [0.05, 50]. Small spurious roots exist where
+    a slice's normal-force denominator (Bishop's m_alpha) changes sign at a
+    small F; the physical root is the one above them."""
+    Fs = np.geomspace(0.05, 50, 200)
+    values = [f(F) for F in Fs]
+    for i in reversed(range(len(Fs) - 1)):
+        if np.isfinite(values[i]) and np.isfinite(values[i + 1]) and values[i] * values[i + 1] <= 0:
+            return brentq(f, Fs[i], Fs[i + 1], xtol=1e-14, rtol=1e-14)
+    raise ValueError("no factor of safety in [0.05, 50]")
+
+
+def bishop(section, centre, radius, n_slices=400):
+    """Bishop's simplified factor of safety on a circle (moments about its
+    centre, interslice shear neglected)."""
+    surface = circle_surface(section.ground, centre, radius, n_points=n_slices + 1)
+    mass = SlicedMass(section, surface, n_slices)
+    slices = mass.slices()
+    xc = -centre[0] if mass.mirrored else centre[0]
+
+    def g(F):
+        resisting, driving = 0.0, 0.0
+        for s in slices:
+            sa, ca = math.sin(s["alpha"]), math.cos(s["alpha"])
+            m = ca + sa * s["tan_phi"] / F
+            width = s["l"] * ca
+            resisting += (s["c"] * width + (s["W"] - s["U"] * ca) * s["tan_phi"]) / m
+            # The weight's moment about the centre, for a mass moving left.
+            driving += s["W"] * (s["xg"] - xc)
+        return F - radius * resisting / driving
+
+    return _root_in_F(g)
