@@ -90,6 +90,13 @@ namespace fdem
           write_vtu("-step" + Utilities::int_to_string(step, 3), step, step_files);
         };
         safety_factor_result = analyses::SafetyFactorAnalysis<dim>(*this, write_step).run();
+        // Beside K, the factor that stress-based programs report: one more
+        // solve on the same factorisations (after K, so as not to change
+        // the factors the iteration starts from).
+        fe_stress = analyses::fe_stress_factor(*mixed_system, pair_strengths(1.0), pairs_on_sliding_surface());
+        if (fe_stress.computed)
+          log << "FE-stress factor (every pair stuck, full strength): " << std::setprecision(8)
+              << fe_stress.factor << std::endl;
       }
     else
       {

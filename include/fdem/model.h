@@ -10,6 +10,7 @@
 #include <fdem/parameters/parameters.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/interface_output.h>
+#include <fdem/analyses/fe_stress_factor.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -142,6 +143,8 @@ namespace fdem
     /** K of contact_outcome's strengths (1: full strength). */
     double                                              strength_reduction = 1;
     analyses::Result                                    safety_factor_result;
+    /** The FE-stress factor of the sliding surface (computed with the safety factor). */
+    analyses::FeStressFactor                            fe_stress;
     std::vector<Vector<double>>                         displacements;
     nlohmann::json                                      summary;
 

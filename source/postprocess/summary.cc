@@ -154,6 +154,13 @@ namespace fdem
                            {"n_contact_iterations", step.solution.n_contact_iterations},
                            {"contact_result", step.solution.result}});
         summary["iterations"] = steps;
+        const auto &fe_stress = model.fe_stress;
+        summary["fe_stress_factor"] = {{"computed", fe_stress.computed},
+                                       {"not_computed", fe_stress.not_computed},
+                                       {"factor", number_or_null(fe_stress.factor)},
+                                       {"F_R", fe_stress.resisting_force},
+                                       {"F_tau", fe_stress.sliding_force},
+                                       {"n_pairs_in_tension", fe_stress.n_pairs_in_tension}};
         summary["certificate"] = certificate_json(sf.certificate);
         const auto &check      = sf.stiffness;
         summary["stiffness_sensitivity"] = {{"computed", check.computed},

@@ -43,6 +43,11 @@
                                          and stick/slip/open counts of each)
                                          and the same final statuses of every
                                          interface
+  run_checks.py fe-stress EXE CASE.prm K0 [PATH=VALUE...]
+                                         from Initial factor K0 (and the
+                                         entries PATH set to VALUE), the
+                                         first step sticks everywhere and
+                                         its K* is the FE-stress factor
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -241,6 +246,28 @@ def check_certified(exe, prm, warning="no-warning"):
         assert not warned and not large, (change, summary["warnings"])
 
 
+def check_fe_stress(exe, prm, initial_factor, *settings):
+    """The FE-stress factor is the iteration's first K* when its first step
+    ends with every pair stuck: a step in stick has the rows of the all-stick
+    state whatever the strengths, and eq. (11) at K0 gives K0 F_R(K0) / F_tau
+    = sum (c A - mu f_n) / F_tau. @p initial_factor must be small enough for
+    the first step to stick everywhere (the check asserts that it does).
+    1e-9 relative: the two solves have the same rows and differ only in
+    how the factors are reached (measured 7e-16)."""
+    overrides = {"Safety factor/Initial factor": initial_factor}
+    overrides.update(setting.split("=", 1) for setting in settings)
+    summary = completed_run(exe, prm, settings=overrides).summary
+    fe = summary["fe_stress_factor"]
+    first = summary["iterations"][0]
+    print("fe_stress_factor:", json.dumps(fe))
+    print("first step:", json.dumps(first))
+    assert fe["computed"] and fe["factor"] > 0, fe
+    assert first["n_slip"] == 0 and first["n_open"] == 0, "the first step did not stick everywhere"
+    difference = abs(first["K_star"] - fe["factor"]) / fe["factor"]
+    print(f"relative difference {difference:.2e}")
+    assert difference <= 1e-9, (first["K_star"], fe["factor"])
+
+
 def check_stiffness_consistency(exe, prm, stiffer_prm, softer_prm):
     """The stiffness check of @p prm against fresh runs: its K_stiffer and
     K_softer must be the K of @p stiffer_prm and @p softer_prm (the moving
@@ -380,7 +407,7 @@ if __name__ == "__main__":
          "no-equilibrium": check_no_equilibrium,
          "deterministic": check_deterministic,
          "wedge": check_wedge, "mpi": check_mpi,
-         "certified": check_certified,
+         "certified": check_certified, "fe-stress": check_fe_stress,
          "stiffness-consistency": check_stiffness_consistency,
          "invariance": check_invariance}[command](exe, path, *sys.argv[4:])
     print("passed")

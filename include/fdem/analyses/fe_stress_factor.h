@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/contact/contact_law.h>
+#include <fdem/contact/mixed_system.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    /**
+     * The FE-stress factor of the sliding surface (Kulhawy's, as computed from
+     * finite-element stresses by stress-based slope programs): the elastic
+     * state with every pair stuck, the strengths unreduced, and
+     * F = sum (c A - mu f_n) / F_tau over the pairs of the sliding surface,
+     * F_tau as in eq. (11). When the iteration's first step at K0 ends with
+     * every pair stuck, its K* is this factor exactly (doc/theory.md).
+     */
+    struct FeStressFactor
+    {
+      bool computed = false;
+      /** Why not computed (empty if computed). */
+      std::string not_computed;
+      double      factor          = std::numeric_limits<double>::quiet_NaN();
+      double      resisting_force = 0;
+      double      sliding_force   = 0;
+      /** Pairs of the sliding surface in tension in the all-stick state. */
+      unsigned int n_pairs_in_tension = 0;
+    };
+
+    /**
+     * Solves @p system with every pair stuck and sums the sliding surface's
+     * forces (@p on_sliding_surface per pair) with the full @p strengths.
+     */
+    template <int dim>
+    FeStressFactor
+    fe_stress_factor(const contact::MixedSystem<dim> &         system,
+                     const std::vector<contact::PairStrength> &strengths,
+                     const std::vector<bool> &                 on_sliding_surface);
+  } // namespace analyses
+} // namespace fdem
