@@ -313,3 +313,110 @@ def bishop(section, centre, radius, n_slices=400):
         return F - radius * resisting / driving
 
     return _root_in_F(g)
+
+
+def vertical_wedges(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0):
+    """The multi-wedge factor of safety (the wedge method of the limit-state
+    multi-block mechanism): the mass cut into blocks by vertical interslices
+    at the interior vertices of the polyline @p surface, each block sliding
+    rigidly on its segment, and every surface, interslices included, at its
+    limit with c/K and tan(phi)/K. It is what fdem-slope computes with
+    `Interslice surfaces = vertical` and interslices `Reduced by K`.
+
+    Each block translates along its base; the vertical interslices make the
+    horizontal velocities equal, so a block moves with (-1, -tan(alpha)) in
+    the frame where the mass moves left, and block j+1 slides down past
+    block j where tan(alpha_{j+1}) > tan(alpha_j): the interslice shear on
+    it acts upwards then. Force equilibrium block by block from the toe
+    (two unknowns each: the base's effective normal force and the thrust
+    on the next interslice) leaves one residual at the crest block; K is
+    its root. Moments are not needed: a block's normal forces act where its
+    moment balance puts them. Within a block's base, c is integrated along
+    it and tan(phi) is its length-weighted mean (exact for one material per
+    base); along an interslice both are integrated over the layers it cuts.
+    Returns (K, the interslice thrusts E)."""
+    mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
+    slices = mass.slices()
+    vertices = mass.surface
+    cuts = [p[0] for p in vertices[1:-1]]
+    n = len(cuts) + 1
+    blocks = [dict(W=0.0, U=0.0, cL=0.0, tL=0.0, L=0.0) for _ in range(n)]
+    for s in slices:
+        i = sum(1 for x in cuts if s["xm"] > x)
+        b = blocks[i]
+        b["W"] += s["W"]
+        b["U"] += s["U"]
+        b["cL"] += s["c"] * s["l"]
+        b["tL"] += s["tan_phi"] * s["l"]
+        b["L"] += s["l"]
+    for i, b in enumerate(blocks):
+        (x0, y0), (x1, y1) = vertices[i], vertices[i + 1]
+        b["alpha"] = math.atan2(y1 - y0, x1 - x0)
+        b["tan_phi"] = b["tL"] / b["L"]
+    interslices = []
+    for j, x in enumerate(cuts):
+        parts, yb, yw = mass._column(x)
+        C, T, h = 0.0, 0.0, 0.0
+        for (dry, wet), layer in zip(parts, mass.layers):
+            C += layer.c * (dry + wet)
+            T += math.tan(math.radians(layer.phi)) * (dry + wet)
+            h += dry + wet
+        yg = elevation(mass.ground, x)
+        depth = max(min(yw, yg) - yb, 0.0)
+        sense = math.copysign(1.0, math.tan(blocks[j + 1]["alpha"]) - math.tan(blocks[j]["alpha"])) \
+            if blocks[j + 1]["alpha"] != blocks[j]["alpha"] else 0.0
+        interslices.append(dict(C=C, tan_phi=T / h, U=0.5 * mass.gamma_w * depth**2, sense=sense))
+
+    def march(K):
+        E_left, U_left, T_left = 0.0, 0.0, 0.0
+        thrusts = []
+        for i, b in enumerate(blocks):
+            sa, ca = math.sin(b["alpha"]), math.cos(b["alpha"])
+            a, t = b["cL"] / K, b["tan_phi"] / K
+            Px = -mass.crack_force if i == n - 1 else 0.0
+            # x: N (t ca - sa) - E_right = -(-U sa + a ca + E_left + U_left - U_right + Px)
+            # y: N (ca + t sa) - sense t_is/K E_right = -(U ca + a sa - W + T_left - sense C/K)
+            if i < n - 1:
+                j = interslices[i]
+                bx = -(-b["U"] * sa + a * ca + E_left + U_left - j["U"] + Px)
+                by = -(b["U"] * ca + a * sa - b["W"] + T_left - j["sense"] * j["C"] / K)
+                m = np.array([[t * ca - sa, -1.0], [ca + t * sa, -j["sense"] * j["tan_phi"] / K]])
+                N, E = np.linalg.solve(m, [bx, by])
+                T_right = j["sense"] * (j["C"] + E * j["tan_phi"]) / K
+                thrusts.append(E)
+                E_left, U_left, T_left = E, j["U"], T_right
+            else:
+                N = -(b["U"] * ca + a * sa - b["W"] + T_left) / (ca + t * sa)
+                return N * (t * ca - sa) + (-b["U"] * sa + a * ca + E_left + U_left + Px), thrusts
+
+    K = _root_in_F(lambda K: march(K)[0])
+    return K, march(K)[1]
+
+
+def spencer_interslice_use(section, surface, xs, n_slices=800, crack_depth=0.0,
+                           crack_water_depth=0.0):
+    """Spencer's interslice shear X = lambda E at the vertical sections @p xs
+    over the shear strength there at Spencer's F, (C + E tan(phi)) / F, with
+    C and tan(phi) integrated over the height as vertical_wedges() does.
+    Above 1 Spencer's answer breaks Mohr-Coulomb across that section: a
+    mechanism of blocks cut there is weaker than Spencer's F says."""
+    F, lam = spencer(section, surface, n_slices, crack_depth, crack_water_depth)
+    mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
+    s = slice_arrays(mass.slices())
+    a, b = s["c"] * s["l"] / F, s["tan_phi"] / F
+    Px = np.zeros_like(a)
+    Px[-1] = -mass.crack_force
+    N = ((s["U"] * s["cos"] + a * s["sin"] - s["W"]) - lam * (a * s["cos"] - s["U"] * s["sin"] + Px)) / \
+        (lam * (b * s["cos"] - s["sin"]) - (s["cos"] + b * s["sin"]))
+    E = np.cumsum(N * (b * s["cos"] - s["sin"]) + (a * s["cos"] - s["U"] * s["sin"] + Px))
+    uses = []
+    for x in xs:
+        x = -x if mass.mirrored else x
+        k = int(np.argmin(abs(mass.x[1:] - x)))
+        parts, yb, yw = mass._column(x)
+        C = sum(layer.c * (dry + wet) for (dry, wet), layer in zip(parts, mass.layers))
+        h = sum(dry + wet for dry, wet in parts)
+        T = sum(math.tan(math.radians(layer.phi)) * (dry + wet)
+                for (dry, wet), layer in zip(parts, mass.layers)) / h
+        uses.append(abs(lam * E[k]) / ((C + E[k] * T) / F))
+    return uses
