@@ -87,12 +87,14 @@ def ground_between(ground, x_from, x_to):
     return inner if x_from < x_to else inner[::-1]
 
 
-def two_wedge_K(A, B, C, T, ground, gamma, strength, water):
+def two_wedge_K(A, B, C, T, ground, gamma, strength, water, crack=0.0):
     """K of the two-wedge mechanism; strength[s] = (tan phi, c) and
     water[s] = pore pressure function for s in 'base 1', 'base 2',
-    'interslice'. Returns (K, N_1, N_2, E)."""
+    'interslice'. @p crack: the water force in a vertical tension crack that
+    closes wedge 2 above C (a crest on the right). Returns (K, N_1, N_2, E)."""
     wedge_1 = [A, B, T] + ground_between(ground, T[0], A[0])
-    wedge_2 = [B, C] + ground_between(ground, C[0], T[0]) + [T]
+    top = [(C[0], ground_at(ground, C[0]))] if ground_at(ground, C[0]) > C[1] else []
+    wedge_2 = [B, C] + top + ground_between(ground, C[0], T[0]) + [T]
     A, B, C, T = (np.asarray(p, float) for p in (A, B, C, T))
     s1, s2 = unit(A - B), unit(B - C)  # the motion, towards the toe
     if s1[0] > 0:  # a slope facing right: the toe is at C
@@ -111,7 +113,7 @@ def two_wedge_K(A, B, C, T, ground, gamma, strength, water):
     U2 = water_force(water["base 2"], B, C)
     U12 = water_force(water["interslice"], B, T)
     F1 = np.array([0, -gamma * area(wedge_1)]) + U1 * n1
-    F2 = np.array([0, -gamma * area(wedge_2)]) + U2 * n2
+    F2 = np.array([0, -gamma * area(wedge_2)]) + U2 * n2 + np.array([-crack, 0])
     # Vectors affine in mu as (constant, coefficient of mu); products of two
     # such scalars as numpy polynomials (highest power first).
     a = (n21, -sigma * t12 * m)
@@ -203,11 +205,27 @@ def check_two_wedge(exe, prm, tolerance):
         below = B[1] + mid * d[1] < ground_at(ground, B[0] + mid * d[0])
         lo, hi = (mid, hi) if below else (lo, mid)
     T = (B[0] + hi * d[0], B[1] + hi * d[1])
+    # A tension crack: the point C' of B-C that lies its depth below the
+    # ground (bisection), and the force of its pressure (each part linear
+    # in y: trapezoids either side of the water level are exact).
+    depth = float(run.parameters.get("Geometry/Slope/Tension crack depth", 0))
+    crack = 0.0
+    if depth > 0:
+        lo, hi = 0.0, 1.0  # C' = C + t (B - C)
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            x, y = C[0] + mid * (B[0] - C[0]), C[1] + mid * (B[1] - C[1])
+            lo, hi = (mid, hi) if ground_at(ground, x) - y < depth else (lo, mid)
+        C = (C[0] + hi * (B[0] - C[0]), C[1] + hi * (B[1] - C[1]))
+        level = C[1] + float(run.parameters["Geometry/Slope/Tension crack water depth"])
+        p = pressure_function(run.parameters["Boundaries/tension crack/Pressure"])
+        for y0, y1 in ((C[1], level), (level, C[1] + depth)):
+            crack += 0.5 * (y1 - y0) * (p(C[0], y0) + p(C[0], y1))
     names = {"base 1": "sliding surface 1", "base 2": "sliding surface 2",
              "interslice": "interslice 1"}
     strength = {k: interface(v)[0] for k, v in names.items()}
     water = {k: interface(v)[1] for k, v in names.items()}
-    K, N1, N2, E = two_wedge_K(A, B, C, T, ground, gamma, strength, water)
+    K, N1, N2, E = two_wedge_K(A, B, C, T, ground, gamma, strength, water, crack)
     K_program = summary["safety_factor"]
     error = (K_program - K) / K
     print(f"two-wedge K = {K:.15g} (N1 = {N1:.6g}, N2 = {N2:.6g}, E = {E:.6g}); program "
