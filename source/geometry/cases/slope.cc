@@ -131,7 +131,8 @@ namespace fdem
         prm.declare_entry(
           "Interslice inclinations",
           "",
-          Patterns::List(Patterns::Double(0, 180), 0, Patterns::List::max_int_value, ","),
+          Patterns::List(
+            Patterns::Double(0, 180), 0, Patterns::List::max_int_value, ","),
           "With Interslice surfaces = inclination: one angle per interior "
           "vertex of the polyline, in degrees from the horizontal measured "
           "counterclockwise (90: vertical; below 90 the interslice leans to "
@@ -185,16 +186,17 @@ namespace fdem
           prm.get_double("Mesh size on sliding surface");
         if (mesh_size_on_sliding_surface == 0)
           mesh_size_on_sliding_surface = mesh_size;
-        element_shape = case_input::parse_element_shape(prm);
+        element_shape                 = case_input::parse_element_shape(prm);
         const std::string interslices = prm.get("Interslice surfaces");
         interslice_surfaces =
-          interslices == "vertical" ? Interslices::vertical :
-          interslices == "bisector" ? Interslices::bisector :
+          interslices == "vertical"    ? Interslices::vertical :
+          interslices == "bisector"    ? Interslices::bisector :
           interslices == "inclination" ? Interslices::inclination :
                                          Interslices::none;
         interslice_inclinations.clear();
-        for (const std::string &angle : Utilities::split_string_list(
-               prm.get("Interslice inclinations"), ','))
+        for (const std::string &angle :
+             Utilities::split_string_list(prm.get("Interslice inclinations"),
+                                          ','))
           interslice_inclinations.push_back(Utilities::string_to_double(angle));
         tension_crack_depth       = prm.get_double("Tension crack depth");
         tension_crack_water_depth = prm.get_double("Tension crack water depth");
@@ -333,10 +335,10 @@ namespace fdem
         curves_of.push_back(boundary_curves(s));
       const unsigned int            n_blocks = masses.size();
       std::vector<std::vector<int>> sliding(n_blocks), interslices(n_blocks);
-      std::vector<int>              all_internal, ground_curves, left, right, bottom;
-      const double                  tolerance =
+      std::vector<int> all_internal, ground_curves, left, right, bottom;
+      const double     tolerance =
         1e-6 * (x_max - x_min + y_max - slope.base_elevation);
-      bool mass_on_ground = false;
+      bool             mass_on_ground = false;
       std::vector<int> all_curves;
       for (const auto &curves : curves_of)
         all_curves.insert(all_curves.end(), curves.begin(), curves.end());

@@ -40,7 +40,8 @@ namespace fdem
           for (unsigned int i = 1; i < ground.size(); ++i)
             if (x <= ground[i][0])
               {
-                const double t = (x - ground[i - 1][0]) / (ground[i][0] - ground[i - 1][0]);
+                const double t =
+                  (x - ground[i - 1][0]) / (ground[i][0] - ground[i - 1][0]);
                 return (1 - t) * ground[i - 1][1] + t * ground[i][1];
               }
           return ground.back()[1];
@@ -57,10 +58,13 @@ namespace fdem
          * segment [a, b] (closed), or infinity.
          */
         double
-        ray_hits(const Point<2> &o, const Tensor<1, 2> &d, const Point<2> &a, const Point<2> &b,
-                 const double s_min)
+        ray_hits(const Point<2>     &o,
+                 const Tensor<1, 2> &d,
+                 const Point<2>     &a,
+                 const Point<2>     &b,
+                 const double        s_min)
         {
-          const Tensor<1, 2> e = b - a;
+          const Tensor<1, 2> e   = b - a;
           const double       den = cross(d, e);
           if (std::abs(den) <= 1e-14 * d.norm() * e.norm())
             return std::numeric_limits<double>::infinity();
@@ -71,9 +75,13 @@ namespace fdem
                    std::numeric_limits<double>::infinity();
         }
 
-        /** Whether the closed segments [a, b] and [c, d] have a point in common. */
+        /** Whether the closed segments [a, b] and [c, d] have a point in
+         * common. */
         bool
-        segments_meet(const Point<2> &a, const Point<2> &b, const Point<2> &c, const Point<2> &d)
+        segments_meet(const Point<2> &a,
+                      const Point<2> &b,
+                      const Point<2> &c,
+                      const Point<2> &d)
         {
           const Tensor<1, 2> d1 = b - a;
           return ray_hits(a, d1, c, d, -1e-12) <= 1 + 1e-12;
@@ -94,15 +102,16 @@ namespace fdem
          * crest end whose depth below the ground is @p depth.
          */
         std::pair<unsigned int, Point<2>>
-        find_crack(const std::vector<Point<2>> &ground, const std::vector<Point<2>> &line,
-                   const double depth)
+        find_crack(const std::vector<Point<2>> &ground,
+                   const std::vector<Point<2>> &line,
+                   const double                 depth)
         {
           double deepest = 0;
           for (unsigned int k = line.size() - 1; k-- > 0;)
             {
               // Walk the segment from line[k+1] (crest side) to line[k], in
               // pieces between the ground's vertices.
-              const Point<2> &A = line[k + 1], &B = line[k];
+              const Point<2>     &A = line[k + 1], &B = line[k];
               std::vector<double> ts = {0, 1};
               for (const Point<2> &g : ground)
                 if (A[0] != B[0])
@@ -114,20 +123,22 @@ namespace fdem
               std::sort(ts.begin(), ts.end());
               for (unsigned int i = 1; i < ts.size(); ++i)
                 {
-                  const Point<2> P  = A + ts[i - 1] * (B - A), Q = A + ts[i] * (B - A);
-                  const double   dP = ground_at(ground, P[0]) - P[1];
-                  const double   dQ = ground_at(ground, Q[0]) - Q[1];
-                  deepest           = std::max({deepest, dP, dQ});
+                  const Point<2> P = A + ts[i - 1] * (B - A),
+                                 Q = A + ts[i] * (B - A);
+                  const double dP  = ground_at(ground, P[0]) - P[1];
+                  const double dQ  = ground_at(ground, Q[0]) - Q[1];
+                  deepest          = std::max({deepest, dP, dQ});
                   if (dP < depth && dQ >= depth)
                     return {k, P + (depth - dP) / (dQ - dP) * (Q - P)};
                 }
             }
           std::ostringstream message;
           message.precision(6);
-          message << path << "Tension crack depth: " << depth
-                  << " m is deeper than the sliding surface lies below the ground "
-                     "anywhere from its crest end (at most "
-                  << deepest << " m).";
+          message
+            << path << "Tension crack depth: " << depth
+            << " m is deeper than the sliding surface lies below the ground "
+               "anywhere from its crest end (at most "
+            << deepest << " m).";
           AssertThrow(false, ExcMessage(message.str()));
           return {};
         }
@@ -152,15 +163,18 @@ namespace fdem
         if (slope.tension_crack_depth > 0)
           {
             cuts.crack          = true;
-            cuts.crack_at_right = ground_at(ground, line.back()[0]) >= ground_at(ground, line.front()[0]);
-            std::vector<Point<2>> ordered = line; // from the far end to the crest
-            std::vector<int>      order   = index;
+            cuts.crack_at_right = ground_at(ground, line.back()[0]) >=
+                                  ground_at(ground, line.front()[0]);
+            std::vector<Point<2>> ordered =
+              line; // from the far end to the crest
+            std::vector<int> order = index;
             if (!cuts.crack_at_right)
               {
                 std::reverse(ordered.begin(), ordered.end());
                 std::reverse(order.begin(), order.end());
               }
-            const auto [k, bottom] = find_crack(ground, ordered, slope.tension_crack_depth);
+            const auto [k, bottom] =
+              find_crack(ground, ordered, slope.tension_crack_depth);
             ordered.resize(k + 1);
             order.resize(k + 1);
             ordered.push_back(bottom);
@@ -170,11 +184,12 @@ namespace fdem
                 std::reverse(ordered.begin(), ordered.end());
                 std::reverse(order.begin(), order.end());
               }
-            cuts.surface           = ordered;
-            index                  = order;
-            cuts.crack_bottom      = bottom;
-            cuts.crack_top         = Point<2>(bottom[0], ground_at(ground, bottom[0]));
-            cuts.crack_water_level = bottom[1] + slope.tension_crack_water_depth;
+            cuts.surface      = ordered;
+            index             = order;
+            cuts.crack_bottom = bottom;
+            cuts.crack_top = Point<2>(bottom[0], ground_at(ground, bottom[0]));
+            cuts.crack_water_level =
+              bottom[1] + slope.tension_crack_water_depth;
           }
 
         if (slope.interslice_surfaces == Slope::Interslices::none)
@@ -182,22 +197,27 @@ namespace fdem
         const std::string name = path + "Interslice surfaces: ";
         if (slope.interslice_surfaces == Slope::Interslices::inclination)
           AssertThrow(slope.interslice_inclinations.size() + 2 == line.size(),
-                      ExcMessage(path + "Interslice inclinations: " +
-                                 std::to_string(slope.interslice_inclinations.size()) +
-                                 " values given; one per interior vertex of the sliding "
-                                 "surface polyline is needed (" +
-                                 std::to_string(line.size() - 2) + ")."));
+                      ExcMessage(
+                        path + "Interslice inclinations: " +
+                        std::to_string(slope.interslice_inclinations.size()) +
+                        " values given; one per interior vertex of the sliding "
+                        "surface polyline is needed (" +
+                        std::to_string(line.size() - 2) + ")."));
         const std::vector<Point<2>> &surface = cuts.surface;
         for (unsigned int i = 1; i + 1 < surface.size(); ++i)
           {
             const Point<2> &v = surface[i];
-            AssertThrow(ground_at(ground, v[0]) - v[1] > 1e-6 * size,
-                        ExcMessage(name + "the vertex " + point_text(v) +
-                                   " of the sliding surface polyline does not lie below the "
-                                   "ground surface, so no interslice can start there."));
-            const Tensor<1, 2> u = (surface[i - 1] - v) / surface[i - 1].distance(v);
-            const Tensor<1, 2> w = (surface[i + 1] - v) / surface[i + 1].distance(v);
-            Tensor<1, 2>       d({0., 1.});
+            AssertThrow(
+              ground_at(ground, v[0]) - v[1] > 1e-6 * size,
+              ExcMessage(
+                name + "the vertex " + point_text(v) +
+                " of the sliding surface polyline does not lie below the "
+                "ground surface, so no interslice can start there."));
+            const Tensor<1, 2> u =
+              (surface[i - 1] - v) / surface[i - 1].distance(v);
+            const Tensor<1, 2> w =
+              (surface[i + 1] - v) / surface[i + 1].distance(v);
+            Tensor<1, 2> d({0., 1.});
             if (slope.interslice_surfaces == Slope::Interslices::bisector)
               {
                 // The bisector of the angle on the mass's side (above).
@@ -208,39 +228,53 @@ namespace fdem
                   d = -d;
                 d /= d.norm();
               }
-            else if (slope.interslice_surfaces == Slope::Interslices::inclination)
+            else if (slope.interslice_surfaces ==
+                     Slope::Interslices::inclination)
               {
-                const double a = slope.interslice_inclinations[index[i] - 1] * M_PI / 180;
-                d              = Tensor<1, 2>({std::cos(a), std::sin(a)});
+                const double a =
+                  slope.interslice_inclinations[index[i] - 1] * M_PI / 180;
+                d = Tensor<1, 2>({std::cos(a), std::sin(a)});
               }
             // The mass lies counterclockwise from w (forward) to u (back).
             const double to_d = angle_from(w, d);
             AssertThrow(to_d > 1e-9 && to_d < angle_from(w, u) - 1e-9,
-                        ExcMessage(name + "the interslice from the vertex " + point_text(v) +
-                                   " points out of the sliding mass (below the sliding "
-                                   "surface)."));
-            double s_ground = std::numeric_limits<double>::infinity(), s_other = s_ground;
+                        ExcMessage(
+                          name + "the interslice from the vertex " +
+                          point_text(v) +
+                          " points out of the sliding mass (below the sliding "
+                          "surface)."));
+            double s_ground    = std::numeric_limits<double>::infinity(),
+                   s_other     = s_ground;
             const double s_min = 1e-9 * size;
             for (unsigned int j = 1; j < ground.size(); ++j)
-              s_ground = std::min(s_ground, ray_hits(v, d, ground[j - 1], ground[j], s_min));
+              s_ground =
+                std::min(s_ground,
+                         ray_hits(v, d, ground[j - 1], ground[j], s_min));
             for (unsigned int j = 1; j < surface.size(); ++j)
               if (j != i && j != i + 1)
-                s_other = std::min(s_other, ray_hits(v, d, surface[j - 1], surface[j], s_min));
+                s_other =
+                  std::min(s_other,
+                           ray_hits(v, d, surface[j - 1], surface[j], s_min));
             if (cuts.crack)
-              s_other = std::min(s_other, ray_hits(v, d, cuts.crack_bottom, cuts.crack_top, s_min));
-            AssertThrow(std::isfinite(s_ground) && s_ground < s_other,
-                        ExcMessage(name + "the interslice from the vertex " + point_text(v) +
-                                   " does not reach the ground surface inside the sliding "
-                                   "mass (it " +
-                                   (std::isfinite(s_other) ?
-                                      "meets the sliding surface or the tension crack first" :
-                                      "leaves the model") +
-                                   ")."));
+              s_other = std::min(
+                s_other,
+                ray_hits(v, d, cuts.crack_bottom, cuts.crack_top, s_min));
+            AssertThrow(
+              std::isfinite(s_ground) && s_ground < s_other,
+              ExcMessage(
+                name + "the interslice from the vertex " + point_text(v) +
+                " does not reach the ground surface inside the sliding "
+                "mass (it " +
+                (std::isfinite(s_other) ?
+                   "meets the sliding surface or the tension crack first" :
+                   "leaves the model") +
+                ")."));
             const Point<2> top = v + s_ground * d;
             for (const auto &other : cuts.interslices)
               AssertThrow(!segments_meet(other[0], other[1], v, top),
-                          ExcMessage(name + "the interslices from " + point_text(other[0]) +
-                                     " and " + point_text(v) + " cross."));
+                          ExcMessage(name + "the interslices from " +
+                                     point_text(other[0]) + " and " +
+                                     point_text(v) + " cross."));
             cuts.interslices.push_back({v, top});
           }
         return cuts;
@@ -252,8 +286,9 @@ namespace fdem
       region_above(const Cuts &cuts, const double top)
       {
         std::vector<Point<2>> above = cuts.surface;
-        const bool            wet   = cuts.crack && cuts.crack_water_level > cuts.crack_bottom[1] &&
-                           cuts.crack_water_level < cuts.crack_top[1];
+        const bool            wet   = cuts.crack &&
+                         cuts.crack_water_level > cuts.crack_bottom[1] &&
+                         cuts.crack_water_level < cuts.crack_top[1];
         // The water level in the crack is a corner: a mesh node at the kink
         // of its hydrostatic pressure.
         if (cuts.crack && cuts.crack_at_right && wet)
@@ -281,7 +316,10 @@ namespace fdem
           }
         gmsh::vectorpair              pieces;
         std::vector<gmsh::vectorpair> origin;
-        gmsh::model::occ::fragment({{2, mass}, {2, foundation}}, lines, pieces, origin);
+        gmsh::model::occ::fragment({{2, mass}, {2, foundation}},
+                                   lines,
+                                   pieces,
+                                   origin);
         gmsh::model::occ::synchronize();
         std::vector<std::pair<double, int>> masses;
         for (const auto &piece : origin[0])
@@ -291,10 +329,12 @@ namespace fdem
               gmsh::model::occ::getCenterOfMass(2, piece.second, x, y, z);
               masses.emplace_back(x, piece.second);
             }
-        AssertThrow(masses.size() == cuts.interslices.size() + 1 && origin[1].size() == 1,
-                    ExcMessage(path + "Interslice surfaces: the interslices do not cut the "
-                                      "sliding mass into one block more than there are "
-                                      "interslices."));
+        AssertThrow(
+          masses.size() == cuts.interslices.size() + 1 && origin[1].size() == 1,
+          ExcMessage(path +
+                     "Interslice surfaces: the interslices do not cut the "
+                     "sliding mass into one block more than there are "
+                     "interslices."));
         foundation = origin[1][0].second;
         std::sort(masses.begin(), masses.end());
         std::vector<int> tags;
@@ -306,16 +346,19 @@ namespace fdem
 
 
       std::vector<int>
-      take_crack_curves(std::vector<int> &curves, const Cuts &cuts, const double tolerance)
+      take_crack_curves(std::vector<int> &curves,
+                        const Cuts       &cuts,
+                        const double      tolerance)
       {
         std::vector<int> crack, others;
         for (const int curve : curves)
           {
             double x0, y0, z0, x1, y1, z1;
             gmsh::model::getBoundingBox(1, curve, x0, y0, z0, x1, y1, z1);
-            const bool vertical_at_crack = cuts.crack && std::abs(x0 - cuts.crack_bottom[0]) < tolerance &&
-                                           std::abs(x1 - cuts.crack_bottom[0]) < tolerance &&
-                                           y0 > cuts.crack_bottom[1] - tolerance;
+            const bool vertical_at_crack =
+              cuts.crack && std::abs(x0 - cuts.crack_bottom[0]) < tolerance &&
+              std::abs(x1 - cuts.crack_bottom[0]) < tolerance &&
+              y0 > cuts.crack_bottom[1] - tolerance;
             (vertical_at_crack ? crack : others).push_back(curve);
           }
         curves = others;

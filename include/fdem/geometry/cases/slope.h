@@ -86,9 +86,9 @@ namespace fdem
      * the mass is cut into blocks "sliding mass 1..n" from left to right, on
      * "sliding surface 1..n", with "interslice 1..n-1" between blocks i and
      * i+1 (slope_interslices.h). A tension crack adds the face group
-     * "tension crack" (a face of both blocks, not an interface). The elements have the size
-     * mesh_size_on_sliding_surface there and grow to mesh_size away from it.
-     * Opens its own GmshSession.
+     * "tension crack" (a face of both blocks, not an interface). The elements
+     * have the size mesh_size_on_sliding_surface there and grow to mesh_size
+     * away from it. Opens its own GmshSession.
      */
     MeshDescription<2>
     make_slope_mesh(const Slope &slope);

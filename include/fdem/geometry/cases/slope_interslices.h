@@ -31,11 +31,13 @@ namespace fdem
         bool crack = false;
         /** Whether the crack is at the right end (the crest) of the surface. */
         bool crack_at_right = true;
-        /** Bottom (on the sliding surface) and top (on the ground) of the crack. */
+        /** Bottom (on the sliding surface) and top (on the ground) of the
+         * crack. */
         Point<2> crack_bottom, crack_top;
         /** Elevation of the water in the crack; below crack_bottom: dry. */
         double crack_water_level = 0;
-        /** Each interslice: its bottom (a vertex) and its top (on the ground). */
+        /** Each interslice: its bottom (a vertex) and its top (on the ground).
+         */
         std::vector<std::array<Point<2>, 2>> interslices;
       };
 
@@ -71,7 +73,9 @@ namespace fdem
        * @p curves.
        */
       std::vector<int>
-      take_crack_curves(std::vector<int> &curves, const Cuts &cuts, const double tolerance);
+      take_crack_curves(std::vector<int> &curves,
+                        const Cuts       &cuts,
+                        const double      tolerance);
     } // namespace slope_interslices
   }   // namespace geometry
 } // namespace fdem
