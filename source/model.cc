@@ -352,7 +352,7 @@ namespace fdem
         for (const auto &pair : interface.pairs)
           {
             contact::PairStrength strength;
-            const double          reduction = p.sliding_surface ? K : 1.0;
+            const double          reduction = p.reduced_by_K ? K : 1.0;
             if (!p.frictionless)
               {
                 strength.friction_coefficient =
@@ -376,7 +376,7 @@ namespace fdem
             contact::PairStrength &strength = strengths[first_pair[shared.interface] + shared.pair];
             if (!p.frictionless)
               strength.cohesion_force +=
-                p.cohesion * shared.area / (p.sliding_surface ? K : 1.0);
+                p.cohesion * shared.area / (p.reduced_by_K ? K : 1.0);
             strength.tensile_force += p.tensile_strength * shared.area;
           }
       }

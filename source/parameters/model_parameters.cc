@@ -216,6 +216,16 @@ namespace fdem
                         "Part of the sliding surface: the safety factor K "
                         "divides this interface's cohesion and tan(friction "
                         "angle) (eq. 10) and sums its forces (eq. 11).");
+      prm.declare_entry("Reduced by K",
+                        "false",
+                        Patterns::Bool(),
+                        "Only with Sliding surface = false: part of the "
+                        "mechanism but not of the sliding surface (an interslice "
+                        "between two blocks of the sliding mass). The safety "
+                        "factor K divides its cohesion and tan(friction angle) "
+                        "(eq. 10) as on the sliding surface, but its forces do "
+                        "not enter F_R and F_tau (eq. 11). A sliding surface is "
+                        "always reduced.");
       prm.declare_entry("Pore pressure",
                         "0",
                         Patterns::Anything(),
@@ -242,6 +252,7 @@ namespace fdem
                   ExcMessage(path + "/Cohesion: a frictionless interface cannot "
                                     "have cohesion; set it to 0."));
       sliding_surface = prm.get_bool("Sliding surface");
+      reduced_by_K    = sliding_surface || prm.get_bool("Reduced by K");
       pore_pressure   = Utilities::trim(prm.get("Pore pressure"));
       AssertThrow(pore_pressure == "piezometric" || expression_parses(pore_pressure, dim, 1),
                   ExcMessage(path + "/Pore pressure: cannot parse '" + pore_pressure +

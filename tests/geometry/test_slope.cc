@@ -251,6 +251,69 @@ TEST(Slope, PolylineSlidingSurface)
 
 
 
+// Interslices from the polyline's interior vertices (15, 22) and (35, 30):
+// three blocks, left to right, whose areas are those between the ground and
+// the polyline over each block's x range (vertical cuts: exact up to
+// round-off), interslice faces on the verticals, and a tension crack 3 m
+// deep with a node at its water level.
+TEST(Slope, InterslicesAndTensionCrackCutTheSlidingMass)
+{
+  const std::string polyline =
+    "subsection Slope\n set Sliding surface = polyline\n"
+    " set Sliding surface polyline = 5,26; 15,22; 35,30; 45,36\n"
+    " set Interslice surfaces = vertical\n";
+  const Parameters geometry = parse(polyline + "end");
+  const auto       mesh     = geometry::make_slope_mesh(geometry.slope);
+  check_mesh(
+    mesh,
+    {"sliding mass 1", "sliding mass 2", "sliding mass 3", "foundation"},
+    {"sliding surface 1",
+     "sliding surface 2",
+     "sliding surface 3",
+     "interslice 1",
+     "interslice 2",
+     "ground",
+     "left",
+     "right",
+     "bottom"});
+  const auto  &ground  = geometry.slope.ground_surface;
+  const auto  &line    = geometry.slope.sliding_surface_polyline;
+  const double x_cut[] = {15, 35};
+  for (unsigned int i = 0; i < 3; ++i)
+    {
+      const std::vector<Point<2>> piece(line.begin() + i, line.begin() + i + 2);
+      const double                exact = area_between(ground, piece);
+      EXPECT_NEAR(block_area(mesh, i), exact, 1e-9 * exact) << i;
+    }
+  for (unsigned int i = 0; i < 2; ++i)
+    for (const auto &face :
+         faces_of(mesh, "interslice " + std::to_string(i + 1)))
+      for (const unsigned int v : face.vertices)
+        EXPECT_NEAR(mesh.vertices[v][0], x_cut[i], 1e-9);
+
+  // The crack: the surface 3 m below the ground on 35,30 - 45,36, where
+  // the ground is 35: y = 32 at x = 35 + 2 / 0.6; water 1 m deep.
+  const auto cracked = geometry::make_slope_mesh(
+    parse(polyline + " set Tension crack depth = 3\n"
+                     " set Tension crack water depth = 1\nend")
+      .slope);
+  const double x_crack    = 35 + 2 / 0.6;
+  bool         water_node = false;
+  for (const auto &face : faces_of(cracked, "tension crack"))
+    for (const unsigned int v : face.vertices)
+      {
+        EXPECT_NEAR(cracked.vertices[v][0], x_crack, 1e-9);
+        EXPECT_GE(cracked.vertices[v][1], 32 - 1e-9);
+        water_node |= std::abs(cracked.vertices[v][1] - 33) < 1e-9;
+      }
+  EXPECT_TRUE(water_node);
+  const std::vector<Point<2>> last  = {line[2], Point<2>(x_crack, 32)};
+  const double                exact = area_between(ground, last);
+  EXPECT_NEAR(block_area(cracked, 2), exact, 1e-9 * exact);
+}
+
+
+
 TEST(Slope, SurfaceThatDoesNotSeparateIsRejected)
 {
   const std::string message = "Geometry/Slope: the sliding surface does not "

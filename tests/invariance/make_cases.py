@@ -91,6 +91,20 @@ CASES = {
                                     ("sliding surface", "Tensile strength", 1e3 * F / L**2)],
         "extra": lambda F, L: [],
     },
+    "two_wedge_slope": {
+        "prm": "two_wedge_slope.prm",
+        "blocks": {"sliding mass 1": (1e5, 20), "sliding mass 2": (1e5, 20),
+                   "foundation": (1e5, 20)},
+        "quick": [],
+        "interfaces": lambda F, L: [(f"sliding surface {i}", entry, 10 * F / L**2)
+                                    for i in (1, 2) for entry in ("Cohesion",
+                                                                  "Tensile strength")],
+        # The water in the tension crack, y in the new length unit.
+        "extra": lambda F, L: [
+            "subsection Boundaries", "  subsection tension crack",
+            f"    set Pressure = {num(F / L**2)} * 9.81 * max(0, 18.5 - y / {num(L)})",
+            "  end", "end"],
+    },
 }
 
 

@@ -98,6 +98,12 @@ namespace fdem
       /** Part of the sliding surface whose c and tan(phi) the safety factor reduces. */
       bool sliding_surface = true;
       /**
+       * Whether K divides c and tan(phi) (eq. 10): every sliding surface, and
+       * the other interfaces of the mechanism (interslices), whose forces
+       * do not enter eq. (11).
+       */
+      bool reduced_by_K = true;
+      /**
        * Pore pressure (force/length^2) in the interface, a function of x, y
        * (, z), or "piezometric" for the hydrostatic pressure below
        * Water/Piezometric line; "0" for none. It pushes both sides apart, and

@@ -3,6 +3,7 @@
 
 #include <fdem/geometry/cases/gmsh_2d.h>
 #include <fdem/geometry/cases/slope.h>
+#include <fdem/geometry/cases/slope_interslices.h>
 #include <fdem/geometry/gmsh_mesh.h>
 
 #include <deal.II/base/exceptions.h>
@@ -115,6 +116,45 @@ namespace fdem
                           Patterns::Double(0),
                           "Element size on the sliding surface (m); 0 means "
                           "equal to Mesh size.");
+        prm.declare_entry(
+          "Interslice surfaces",
+          "none",
+          Patterns::Selection("none|vertical|bisector|inclination"),
+          "Polyline only: cut the sliding mass into blocks 'sliding mass 1', "
+          "'sliding mass 2', ... (left to right) by straight interslice "
+          "surfaces from each interior vertex of the polyline up to the "
+          "ground: vertical, along the bisector of the angle between the two "
+          "segments, or at the angles of Interslice inclinations. Face groups "
+          "'sliding surface i' (under block i) and 'interslice i' (between "
+          "blocks i and i+1). 'none' keeps one block, 'sliding mass', on "
+          "'sliding surface'.");
+        prm.declare_entry(
+          "Interslice inclinations",
+          "",
+          Patterns::List(
+            Patterns::Double(0, 180), 0, Patterns::List::max_int_value, ","),
+          "With Interslice surfaces = inclination: one angle per interior "
+          "vertex of the polyline, in degrees from the horizontal measured "
+          "counterclockwise (90: vertical; below 90 the interslice leans to "
+          "the right, +x), comma-separated.");
+        prm.declare_entry(
+          "Tension crack depth",
+          "0",
+          Patterns::Double(0),
+          "Polyline only: depth (m) of a vertical tension crack at the crest "
+          "end of the sliding surface (the end where the ground is higher), "
+          "where the sliding surface lies this deep below the ground; the "
+          "crack replaces the sliding surface beyond it. Face group 'tension "
+          "crack', a free face of both blocks (not an interface): give it "
+          "its water pressure as a boundary Pressure. 0: no crack.");
+        prm.declare_entry(
+          "Tension crack water depth",
+          "0",
+          Patterns::Double(0),
+          "Height (m) of the water in the tension crack above its bottom, "
+          "at most the crack depth: the mesh gets a node at the water level, "
+          "where the hydrostatic pressure has its kink (the pressure itself "
+          "is the crack's boundary Pressure, e.g. 'piezometric').");
         case_input::declare_element_shape_2d(
           prm,
           "quadrilaterals (FE_Q elements; Gmsh's "
@@ -146,7 +186,20 @@ namespace fdem
           prm.get_double("Mesh size on sliding surface");
         if (mesh_size_on_sliding_surface == 0)
           mesh_size_on_sliding_surface = mesh_size;
-        element_shape = case_input::parse_element_shape(prm);
+        element_shape                 = case_input::parse_element_shape(prm);
+        const std::string interslices = prm.get("Interslice surfaces");
+        interslice_surfaces =
+          interslices == "vertical"    ? Interslices::vertical :
+          interslices == "bisector"    ? Interslices::bisector :
+          interslices == "inclination" ? Interslices::inclination :
+                                         Interslices::none;
+        interslice_inclinations.clear();
+        for (const std::string &angle :
+             Utilities::split_string_list(prm.get("Interslice inclinations"),
+                                          ','))
+          interslice_inclinations.push_back(Utilities::string_to_double(angle));
+        tension_crack_depth       = prm.get_double("Tension crack depth");
+        tension_crack_water_depth = prm.get_double("Tension crack water depth");
       }
       prm.leave_subsection();
     }
@@ -169,9 +222,22 @@ namespace fdem
         path + "Base elevation: must lie below every point of the "
                "ground surface.");
       case_input::require(mesh_size > 0, path + "Mesh size: must be positive.");
+      case_input::require(tension_crack_water_depth <= tension_crack_depth,
+                          path + "Tension crack water depth: must not exceed "
+                                 "Tension crack depth.");
       if (sliding_surface == SlidingSurface::circular)
-        case_input::require(circle_radius > 0,
-                            path + "Circle radius: must be positive.");
+        {
+          case_input::require(circle_radius > 0,
+                              path + "Circle radius: must be positive.");
+          case_input::require(
+            interslice_surfaces == Interslices::none,
+            path + "Interslice surfaces: only a polyline sliding surface "
+                   "has interior vertices to cut from; use 'none' with "
+                   "'circular' (a circle admits a rigid rotation).");
+          case_input::require(tension_crack_depth == 0,
+                              path + "Tension crack depth: only with a "
+                                     "polyline sliding surface; use 0.");
+        }
       else
         {
           const auto       &line = sliding_surface_polyline;
@@ -188,6 +254,7 @@ namespace fdem
                                 on_or_above_ground(ground, line.back()),
                               name + "its first and last points must lie on or "
                                      "above the ground surface.");
+          slope_interslices::slope_cuts(*this); // throws on bad cuts
         }
     }
 
@@ -200,6 +267,11 @@ namespace fdem
       const std::string not_separated =
         name + ": the sliding surface does not separate a sliding mass from "
                "the foundation.";
+      const bool polyline =
+        slope.sliding_surface == Slope::SlidingSurface::polyline;
+      const slope_interslices::Cuts cuts =
+        polyline ? slope_interslices::slope_cuts(slope) :
+                   slope_interslices::Cuts();
       GmshSession session;
       gmsh::model::add("slope");
 
@@ -210,7 +282,8 @@ namespace fdem
       for (const Point<2> &p : ground)
         y_max = std::max(y_max, p[1]);
 
-      int mass = 0, foundation = 0;
+      int              mass = 0, foundation = 0;
+      std::vector<int> masses;
       GmshSession::run(name + ": Gmsh could not build the model", [&]() {
         std::vector<Point<2>> outline = ground;
         outline.emplace_back(x_max, slope.base_elevation);
@@ -228,13 +301,10 @@ namespace fdem
                                            slope.circle_radius);
         else
           {
-            std::vector<Point<2>> above = slope.sliding_surface_polyline;
-            for (const Point<2> &p : above)
+            for (const Point<2> &p : slope.sliding_surface_polyline)
               y_max = std::max(y_max, p[1]);
-            const double top = y_max + (x_max - x_min);
-            above.emplace_back(above.back()[0], top);
-            above.emplace_back(above.front()[0], top);
-            tool = gmsh_2d::add_occ_polygon(above);
+            tool = gmsh_2d::add_occ_polygon(
+              slope_interslices::region_above(cuts, y_max + (x_max - x_min)));
           }
 
         gmsh::vectorpair              mass_pieces, pieces;
@@ -250,28 +320,48 @@ namespace fdem
         mass = origin[1][0].second;
         foundation =
           (pieces[0].second == mass) ? pieces[1].second : pieces[0].second;
+        // The one step that cuts the sliding mass into blocks.
+        masses = slope_interslices::cut_sliding_mass(mass, foundation, cuts);
       });
 
-      // Curves on both parts form the sliding surface; the outer boundary is
-      // sorted by its bounding box.
-      const std::vector<int> mass_curves       = boundary_curves(mass);
-      const std::vector<int> foundation_curves = boundary_curves(foundation);
-      std::vector<int>       sliding, outer, ground_curves, left, right, bottom;
-      std::set_intersection(mass_curves.begin(),
-                            mass_curves.end(),
-                            foundation_curves.begin(),
-                            foundation_curves.end(),
-                            std::back_inserter(sliding));
-      std::set_symmetric_difference(mass_curves.begin(),
-                                    mass_curves.end(),
-                                    foundation_curves.begin(),
-                                    foundation_curves.end(),
-                                    std::back_inserter(outer));
-      const double tolerance =
+      // Curves of two surfaces are internal: between a block of the mass and
+      // the foundation the sliding surface (or the crack), between two
+      // blocks an interslice. The outer boundary is sorted by its bounding
+      // box.
+      std::vector<int> surfaces = masses;
+      surfaces.push_back(foundation);
+      std::vector<std::vector<int>> curves_of;
+      for (const int s : surfaces)
+        curves_of.push_back(boundary_curves(s));
+      const unsigned int            n_blocks = masses.size();
+      std::vector<std::vector<int>> sliding(n_blocks), interslices(n_blocks);
+      std::vector<int> all_internal, ground_curves, left, right, bottom;
+      const double     tolerance =
         1e-6 * (x_max - x_min + y_max - slope.base_elevation);
-      bool mass_on_ground = false;
-      for (const int curve : outer)
+      bool             mass_on_ground = false;
+      std::vector<int> all_curves;
+      for (const auto &curves : curves_of)
+        all_curves.insert(all_curves.end(), curves.begin(), curves.end());
+      std::sort(all_curves.begin(), all_curves.end());
+      all_curves.erase(std::unique(all_curves.begin(), all_curves.end()),
+                       all_curves.end());
+      for (const int curve : all_curves)
         {
+          std::vector<unsigned int> on;
+          for (unsigned int s = 0; s < surfaces.size(); ++s)
+            if (std::binary_search(curves_of[s].begin(),
+                                   curves_of[s].end(),
+                                   curve))
+              on.push_back(s);
+          if (on.size() == 2)
+            {
+              all_internal.push_back(curve);
+              if (on[1] == n_blocks)
+                sliding[on[0]].push_back(curve);
+              else
+                interslices[std::min(on[0], on[1])].push_back(curve);
+              continue;
+            }
           double x0, y0, z0, x1, y1, z1;
           gmsh::model::getBoundingBox(1, curve, x0, y0, z0, x1, y1, z1);
           if (x1 < x_min + tolerance)
@@ -283,17 +373,39 @@ namespace fdem
           else
             {
               ground_curves.push_back(curve);
-              mass_on_ground |= std::binary_search(mass_curves.begin(),
-                                                   mass_curves.end(),
-                                                   curve);
+              mass_on_ground |= on[0] < n_blocks;
             }
         }
-      AssertThrow(!sliding.empty() && mass_on_ground,
-                  ExcMessage(not_separated));
+      std::vector<int> crack;
+      for (auto &curves : sliding)
+        {
+          const std::vector<int> c =
+            slope_interslices::take_crack_curves(curves, cuts, tolerance);
+          crack.insert(crack.end(), c.begin(), c.end());
+          AssertThrow(!curves.empty(), ExcMessage(not_separated));
+        }
+      AssertThrow(mass_on_ground, ExcMessage(not_separated));
 
-      add_physical_group(2, {mass}, "sliding mass");
+      const auto numbered = [n_blocks](const std::string &what,
+                                       const unsigned int b) {
+        return n_blocks == 1 ? what : what + " " + std::to_string(b + 1);
+      };
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        add_physical_group(2, {masses[b]}, numbered("sliding mass", b));
       add_physical_group(2, {foundation}, "foundation");
-      add_physical_group(1, sliding, "sliding surface");
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        add_physical_group(1, sliding[b], numbered("sliding surface", b));
+      for (unsigned int b = 0; b + 1 < n_blocks; ++b)
+        {
+          AssertThrow(!interslices[b].empty(),
+                      ExcMessage(name + "/Interslice surfaces: blocks " +
+                                 std::to_string(b + 1) + " and " +
+                                 std::to_string(b + 2) +
+                                 " of the sliding mass do not meet."));
+          add_physical_group(1, interslices[b], numbered("interslice", b));
+        }
+      if (!crack.empty())
+        add_physical_group(1, crack, "tension crack");
       add_physical_group(1, ground_curves, "ground");
       add_physical_group(1, left, "left");
       add_physical_group(1, right, "right");
@@ -301,7 +413,7 @@ namespace fdem
 
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
         const bool triangles = slope.element_shape == ElementShape::simplex;
-        gmsh_2d::set_size_field(sliding,
+        gmsh_2d::set_size_field(all_internal,
                                 slope.mesh_size_on_sliding_surface,
                                 slope.mesh_size,
                                 0,

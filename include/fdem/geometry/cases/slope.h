@@ -27,6 +27,15 @@ namespace fdem
         polyline
       };
 
+      /** Interslice surfaces from the interior vertices of the polyline. */
+      enum class Interslices
+      {
+        none,
+        vertical,
+        bisector,
+        inclination
+      };
+
       /** Ground surface from left to right (m). */
       std::vector<Point<2>> ground_surface;
       /** Elevation of the bottom of the model (m). */
@@ -44,6 +53,14 @@ namespace fdem
       double mesh_size_on_sliding_surface;
       /** Quadrilaterals or triangles. */
       ElementShape element_shape = ElementShape::hypercube;
+      /** How the polyline's interior vertices cut the sliding mass. */
+      Interslices interslice_surfaces = Interslices::none;
+      /** Per interior vertex: inclination from the horizontal (degrees). */
+      std::vector<double> interslice_inclinations;
+      /** Depth of the vertical tension crack at the crest end (m); 0: none. */
+      double tension_crack_depth = 0;
+      /** Height of the water in the crack above its bottom (m). */
+      double tension_crack_water_depth = 0;
 
       /** Declare the subsection "Slope" (inside "Geometry"). */
       static void
@@ -65,9 +82,13 @@ namespace fdem
      * part of the slope inside the circle, or above the polyline) and
      * "foundation". Face groups "sliding surface" (the curve between the two
      * blocks, with the same nodes on both sides), "ground" (the whole top
-     * surface), "left", "right", "bottom". The elements have the size
-     * mesh_size_on_sliding_surface there and grow to mesh_size away from it.
-     * Opens its own GmshSession.
+     * surface), "left", "right", "bottom". With interslices (polyline only)
+     * the mass is cut into blocks "sliding mass 1..n" from left to right, on
+     * "sliding surface 1..n", with "interslice 1..n-1" between blocks i and
+     * i+1 (slope_interslices.h). A tension crack adds the face group
+     * "tension crack" (a face of both blocks, not an interface). The elements
+     * have the size mesh_size_on_sliding_surface there and grow to mesh_size
+     * away from it. Opens its own GmshSession.
      */
     MeshDescription<2>
     make_slope_mesh(const Slope &slope);
