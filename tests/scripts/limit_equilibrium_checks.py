@@ -12,6 +12,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import limit_equilibrium as le  # noqa: E402
 
 
@@ -143,6 +144,29 @@ def circle_agreement_check():
     check("Spencer against Bishop on the paper's circle", spencer, bishop, 5e-3)
 
 
+def wedge_checks():
+    # The vertical-wedge method against the two-wedge closed form of
+    # tests/scripts/two_wedge_reference.py (written separately, a quartic in
+    # 1/K): the same mechanism, so to round-off. And a plane cut into blocks:
+    # no interslice slips, and the planar closed form holds.
+    import two_wedge_reference as two
+    ground = [(0, 0), (10, 0), (30, 20), (60, 20)]
+    A, B, C = (10, 0), (25, 3), (45, 20)
+    T = (25, le.elevation(ground, 25))
+    for c, phi in ((10, 30), (0, 35)):
+        t = math.tan(math.radians(phi))
+        K_two = two.two_wedge_K(A, B, C, T, ground, 20, {k: (t, c) for k in ("base 1", "base 2", "interslice")},
+                                {k: (lambda x, y: 0.0) for k in ("base 1", "base 2", "interslice")})[0]
+        section = le.Section(ground, [le.Layer(None, 20, None, c, phi)])
+        check(f"vertical wedges against the two-wedge closed form, c = {c}, phi = {phi}",
+              le.vertical_wedges(section, [A, B, C], 300)[0], K_two, 1e-12)
+    ground = [(-10, 0), (0, 0), (20, 10), (40, 10)]
+    section = le.Section(ground, [le.Layer(None, 20, None, 5, 25)])
+    check("vertical wedges on a plane cut in three", le.vertical_wedges(
+        section, [(0, 0), (9, 3), (21, 7), (30, 10)], 100)[0],
+        planar_block(5, 25, 20, [(0, 0), (30, 10)], ground), 1e-12)
+
+
 def acads_check():
     # ACADS example 1(a) (Donald & Giam 1989; the same slope, c and phi as the
     # paper's): the referee factor of safety of the critical circle is 1.00.
@@ -167,5 +191,6 @@ if __name__ == "__main__":
     planar_checks()
     undrained_circle_check()
     circle_agreement_check()
+    wedge_checks()
     if "--heavy" in sys.argv:
         acads_check()
