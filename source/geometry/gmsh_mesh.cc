@@ -450,6 +450,10 @@ namespace fdem
           std::ifstream(file_name).good() &&
           !std::filesystem::is_directory(file_name))
         check_node_tags(file_name);
+      if (std::filesystem::path(file_name).extension() == ".geo" &&
+          std::ifstream(file_name).good() &&
+          !std::filesystem::is_directory(file_name))
+        check_geo_includes(file_name);
       AssertThrow(std::ifstream(file_name).good() &&
                     !std::filesystem::is_directory(file_name),
                   ExcMessage("Gmsh file '" + file_name +

@@ -7,7 +7,7 @@
       started together, REPEATS times (default 5): each time the folder must
       be one whole run, file for file equal to a run of that variant made
       alone (interfaces.csv byte for byte, the same file names), with no
-      partial folder left beside it
+      partial folder nor .lock file left beside it
   results_folder.py interrupt EXE CASE.prm
       runs stopped by SIGINT and by SIGTERM after 0.2 to 1.5 s: no partial
       folder remains, and the results folder is absent or a whole earlier
@@ -69,6 +69,8 @@ def check_concurrent(exe, prm, repeats=5):
             assert open(os.path.join(out, "parameters.prm")).read() == \
                 reference_prm[which], f"repeat {repeat}: parameters.prm of the other run"
             assert leftovers(workdir) == [], leftovers(workdir)
+            # The lock file goes with the last run that held it.
+            assert not os.path.exists(out + ".lock"), "the .lock file was left"
             print(f"repeat {repeat}: one whole run ({os.path.basename(which)}), {len(files)} files")
 
 
