@@ -128,9 +128,13 @@ def limit_memory():
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
-# Where a completed run's summary.json may hold null: no failed step (K_failed,
-# the bracket's upper end: infinite) and values a check could not compute.
-MAY_BE_NULL = {"K_failed", "safety_factor_bracket"}
+# Where summary.json may hold null by its schema (source/postprocess/summary.cc,
+# number_or_null: "not available"): no failed step (K_failed, the bracket's
+# upper end), a step that was not solved (its K_star), and what the
+# certificate and the stiffness check could not compute. Everywhere else a
+# null is a NaN or an infinity that nlohmann wrote as null.
+MAY_BE_NULL = {"K_failed", "safety_factor_bracket", "K_star", "relative_difference",
+               "relative_distance_left", "K_stiffer", "K_softer", "relative_change"}
 
 
 def no_nan(value, key=""):
@@ -194,8 +198,11 @@ def run_one(exe, case, data, validate, timeout, keep):
             summary = json.load(open(summaries[0]), parse_constant=bad_number)
         except ValueError as e:
             return "failure: summary", f"invalid summary.json: {e}", keep_case(keep, workdir)
-        if p.returncode == 0 and not no_nan(summary):
+        if not no_nan(summary):
             return "failure: NaN", "null or non-finite number in summary.json", keep_case(keep, workdir)
+        if p.returncode == 0 and (summary.get("status") != "completed" or not (
+                "safety_factor" not in summary or isinstance(summary["safety_factor"], float))):
+            return "failure: summary", "exit 0 without a completed, finite result", keep_case(keep, workdir)
         return "result", f"exit {p.returncode} ({wall:.1f} s)", None
     finally:
         shutil.rmtree(workdir, ignore_errors=True)
