@@ -140,20 +140,20 @@ namespace fdem
       // without a word).
       const bool host = !Utilities::MPI::job_supports_mpi() ||
                         Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const auto refuse_or_announce = [&](const MeshEstimate &estimate) {
+        check_mesh_estimate(estimate, geometry, dim, fe_degree);
+        if (host && estimate.n_cells > large_mesh)
+          {
+            std::ostringstream line;
+            line.precision(2);
+            line << "meshing (" << estimate.entry.substr(0, estimate.entry.find(':'))
+                 << "): about " << estimate.n_cells << " elements" << std::endl;
+            std::cout << line.str() << std::flush;
+          }
+      };
       if (geometry.source != Source::mesh_file &&
           geometry.source_is_3d() == (dim == 3))
-        {
-          const MeshEstimate estimate =
-            check_mesh_estimate(geometry, dim, fe_degree);
-          if (host && estimate.n_cells > large_mesh)
-            {
-              std::ostringstream line;
-              line.precision(2);
-              line << "meshing (" << estimate.entry.substr(0, estimate.entry.find(':'))
-                   << "): about " << estimate.n_cells << " elements" << std::endl;
-              std::cout << line.str() << std::flush;
-            }
-        }
+        refuse_or_announce(estimate_mesh(geometry));
       MeshDescription<dim> mesh;
       const MeshWatchdog   watchdog(geometry.time_limit,
                                   geometry.source == Source::mesh_file ?
@@ -162,7 +162,12 @@ namespace fdem
                                       "'" :
                                       "a built-in generator");
       if (geometry.source == Source::mesh_file)
-        mesh = read_gmsh_file<dim>(geometry.mesh_file_path(prm_directory));
+        {
+          const std::string file = geometry.mesh_file_path(prm_directory);
+          mesh = read_gmsh_file<dim>(file, [&]() {
+            refuse_or_announce(estimate_gmsh_geometry(dim, file));
+          });
+        }
       else if (geometry.source_is_3d())
         {
           AssertThrow(dim == 3,

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/geometry/gmsh_mesh.h>
 #include <fdem/geometry/mesh_estimate.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
 
+#include <gmsh.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -47,6 +49,8 @@ namespace fdem
                              far :
                              near + (far - near) * (d - fine) / (coarse - fine);
         };
+        if (!(coarse > fine)) // one size everywhere
+          return total / std::pow(near, dim);
         const auto clipped = [&](const double d) {
           return std::min(total, measure(d));
         };
@@ -121,14 +125,16 @@ namespace fdem
       {
         const double r = hertz.radius, lc = hertz.contact_zone_width;
         const double near  = lc / hertz.n_contact_zone_elements;
-        const double far   = std::max(hertz.mesh_size, near);
+        // Gmsh's Threshold field takes Mesh size far off even when it is
+        // finer than the contact zone's elements.
+        const double far   = hertz.mesh_size;
         const double total = numbers::PI * r * r / 4 +
                              hertz.foundation_width * hertz.foundation_depth;
         // Both curves of the contact zone, each with its band on one side.
         const auto   band = [&](const double d) {
           return 2 * (lc * d + numbers::PI * d * d / 2);
         };
-        const double fine = 0.5 * lc, coarse = fine + 4 * (far - near);
+        const double fine = 0.5 * lc, coarse = fine + 4 * std::abs(far - near);
         const bool   triangles = hertz.element_shape == ElementShape::simplex;
         const double per_size =
           cells_in_graded_region(2, band, total, near, far, fine, coarse);
@@ -238,7 +244,7 @@ namespace fdem
         // Tetrahedra of edge s: about 8.5 per s^3, 5.5 per vertex.
         const double tetrahedra =
           8.5 * cells_in_graded_region(
-                  3, grown, box, near, far, inradius, inradius + 4 * (far - near));
+                  3, grown, box, near, far, inradius, inradius + 4 * std::abs(far - near));
         MeshEstimate e;
         e.entry = "Geometry/Wedge/Mesh size and Rock extent";
         // Split into four hexahedra each: new vertices on every edge, face
@@ -302,11 +308,58 @@ namespace fdem
 
 
     MeshEstimate
+    estimate_gmsh_geometry(const unsigned int dim, const std::string &file_name)
+    {
+      // The curves (2D) or surfaces (3D) meshed first: Gmsh then goes on
+      // from them when it meshes the rest.
+      GmshSession::run("Gmsh could not mesh the boundaries in '" + file_name + "'",
+                       [&]() { gmsh::model::mesh::generate(dim - 1); });
+      gmsh::vectorpair entities;
+      gmsh::model::getEntities(entities, dim);
+      MeshEstimate e;
+      e.entry = "Geometry/Mesh file '" + file_name + "'";
+      for (const auto &entity : entities)
+        {
+          gmsh::vectorpair boundary;
+          gmsh::model::getBoundary({entity}, boundary, false, false, false);
+          double n = 0;
+          for (const auto &[boundary_dim, tag] : boundary)
+            {
+              std::vector<int>                      types;
+              std::vector<std::vector<std::size_t>> tags, nodes;
+              gmsh::model::mesh::getElements(types, tags, nodes, boundary_dim, std::abs(tag));
+              for (const auto &t : tags)
+                n += t.size();
+            }
+          // A disk has the most area for its boundary: n segments of size h
+          // bound at most n^2 h^2 / (4 pi), 2.3 triangles per h^2; a ball
+          // bounded by n triangles holds at most 0.227 n^1.5 tetrahedra.
+          const double cells = dim == 2 ? 2.3 * n * n / (4 * numbers::PI) :
+                                          0.227 * std::pow(n, 1.5);
+          e.n_cells += cells;
+          e.n_vertices += dim == 2 ? cells / 2 : cells / 5.5;
+        }
+      return e;
+    }
+
+
+
+    MeshEstimate
     check_mesh_estimate(const parameters::GeometryParameters &geometry,
                         const unsigned int                    dim,
                         const unsigned int                    fe_degree)
     {
-      const MeshEstimate e = estimate_mesh(geometry);
+      return check_mesh_estimate(estimate_mesh(geometry), geometry, dim, fe_degree);
+    }
+
+
+
+    MeshEstimate
+    check_mesh_estimate(const MeshEstimate                   &e,
+                        const parameters::GeometryParameters &geometry,
+                        const unsigned int                    dim,
+                        const unsigned int                    fe_degree)
+    {
       if (e.entry.empty())
         return e;
       const double mib   = e.memory_MiB(dim, fe_degree);

@@ -80,6 +80,23 @@ namespace fdem
 
 
 
+    void
+    exit_out_of_memory()
+    {
+      static const char message[] =
+        "fdem-slope: error: out of memory: the model needs more memory than "
+        "this machine (or ulimit -v) gives; use a coarser mesh (Geometry/"
+        "Memory limit bounds the estimate made before meshing).\n";
+      if (write(STDERR_FILENO, message, sizeof message - 1) < 0)
+        {
+          // Nothing else to tell.
+        }
+      remove_partial_folder();
+      _exit(1);
+    }
+
+
+
     ResultsFolder::ResultsFolder(const std::string &target_name, const bool writes_files)
       : writes_files(writes_files)
     {

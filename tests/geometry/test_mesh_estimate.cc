@@ -88,3 +88,27 @@ TEST(MeshEstimate, RefusedBeyondTheLimitWithTheEntry)
   EXPECT_TRUE(geometry::estimate_mesh(parse("set Source = mesh file\nset Mesh file = x.msh"))
                 .entry.empty());
 }
+
+
+
+TEST(MeshEstimate, GeoFilesFromTheirBoundaryMesh)
+{
+  // An upper bound by design (the roundest shape of that boundary), but
+  // not by more than a factor 5 on these blocks (squares, a box).
+  const auto check = [](const std::string &name, auto dimension) {
+    constexpr int        dim = decltype(dimension)::value;
+    const std::string    file = data_directory + "/" + name;
+    geometry::MeshEstimate estimate;
+    const auto mesh = geometry::read_gmsh_file<dim>(file, [&]() {
+      estimate = geometry::estimate_gmsh_geometry(dim, file);
+    });
+    std::cout << name << ": " << mesh.cells.size() << " cells (estimate " << estimate.n_cells
+              << "), " << mesh.vertices.size() << " vertices (estimate " << estimate.n_vertices
+              << ")" << std::endl;
+    EXPECT_GT(estimate.n_cells, mesh.cells.size() / 1.5) << name;
+    EXPECT_LT(estimate.n_cells, 5.0 * mesh.cells.size()) << name;
+  };
+  check("triangles.geo", std::integral_constant<int, 2>());
+  check("two_blocks.geo", std::integral_constant<int, 2>());
+  check("box.geo", std::integral_constant<int, 3>());
+}

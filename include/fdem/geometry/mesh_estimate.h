@@ -46,6 +46,16 @@ namespace fdem
     estimate_mesh(const parameters::GeometryParameters &geometry);
 
     /**
+     * The estimate for the geometry Gmsh has just read from @p file_name
+     * (a .geo file), in the open GmshSession: Gmsh meshes the boundaries
+     * (curves in 2D, surfaces in 3D), then each block is taken to hold as
+     * many elements as the roundest shape of that boundary would, at the
+     * boundary's element size. Interface pairs are not estimated.
+     */
+    MeshEstimate
+    estimate_gmsh_geometry(unsigned int dim, const std::string &file_name);
+
+    /**
      * The memory a mesh may need (MiB): Geometry/Memory limit, or if that is
      * 0 the smaller of this machine's physical memory and the process's
      * address space limit (ulimit -v).
@@ -61,6 +71,13 @@ namespace fdem
      */
     MeshEstimate
     check_mesh_estimate(const parameters::GeometryParameters &geometry,
+                        unsigned int                          dim,
+                        unsigned int                          fe_degree);
+
+    /** The same for the estimate @p estimate. */
+    MeshEstimate
+    check_mesh_estimate(const MeshEstimate                   &estimate,
+                        const parameters::GeometryParameters &geometry,
                         unsigned int                          dim,
                         unsigned int                          fe_degree);
   } // namespace geometry
