@@ -146,7 +146,8 @@ namespace fdem
           {
             std::ostringstream line;
             line.precision(2);
-            line << "meshing (" << estimate.entry.substr(0, estimate.entry.find(':'))
+            line << "meshing ("
+                 << estimate.entry.substr(0, estimate.entry.find(':'))
                  << "): about " << estimate.n_cells << " elements" << std::endl;
             std::cout << line.str() << std::flush;
           }
@@ -164,7 +165,7 @@ namespace fdem
       if (geometry.source == Source::mesh_file)
         {
           const std::string file = geometry.mesh_file_path(prm_directory);
-          mesh = read_gmsh_file<dim>(file, [&]() {
+          mesh                   = read_gmsh_file<dim>(file, [&]() {
             refuse_or_announce(estimate_gmsh_geometry(dim, file));
           });
         }
