@@ -447,14 +447,7 @@ namespace fdem
     read_gmsh_file(const std::string           &file_name,
                    const std::function<void()> &before_meshing)
     {
-      if (std::filesystem::path(file_name).extension() == ".msh" &&
-          std::ifstream(file_name).good() &&
-          !std::filesystem::is_directory(file_name))
-        check_node_tags(file_name);
-      if (std::filesystem::path(file_name).extension() == ".geo" &&
-          std::ifstream(file_name).good() &&
-          !std::filesystem::is_directory(file_name))
-        check_geo_includes(file_name);
+      check_before_gmsh(file_name);
       AssertThrow(std::ifstream(file_name).good() &&
                     !std::filesystem::is_directory(file_name),
                   ExcMessage("Gmsh file '" + file_name +

@@ -241,5 +241,19 @@ namespace fdem
       std::vector<std::filesystem::path> open;
       follow_includes(file_name, open);
     }
+
+
+
+    void
+    check_before_gmsh(const std::string &file_name)
+    {
+      namespace fs = std::filesystem;
+      if (!std::ifstream(file_name).good() || fs::is_directory(file_name))
+        return; // read_gmsh_file() says so
+      if (fs::path(file_name).extension() == ".msh")
+        check_node_tags(file_name);
+      else if (fs::path(file_name).extension() == ".geo")
+        check_geo_includes(file_name);
+    }
   } // namespace geometry
 } // namespace fdem

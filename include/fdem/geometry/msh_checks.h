@@ -29,6 +29,13 @@ namespace fdem
      */
     void
     check_geo_includes(const std::string &file_name);
+
+    /**
+     * The check of the two above that fits the file's extension (.msh or
+     * .geo); nothing for a file that cannot be read.
+     */
+    void
+    check_before_gmsh(const std::string &file_name);
   } // namespace geometry
 } // namespace fdem
 
