@@ -2,10 +2,12 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/model.h>
 #include <fdem/parameters/parameters.h>
+#include <fdem/postprocess/results_folder.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <iostream>
+#include <new>
 #include <regex>
 #include <string>
 
@@ -49,6 +51,7 @@ main(int argc, char *argv[])
   // Under mpirun only rank 0 prints (every rank runs the same case and
   // meets the same errors).
   bool host = true;
+  std::set_new_handler(fdem::postprocess::exit_out_of_memory);
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);

@@ -143,7 +143,8 @@ namespace fdem
     TimerOutput::Scope scope(timer, "geometry");
     // Every rank makes the same mesh; rank 0 writes it.
     const std::string  msh = writes_files && !validating ? parameters.output_directory() + "/mesh.msh" : "";
-    mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh);
+    mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh,
+                                    parameters.fe_degree);
 
     // Every block of the mesh needs a material, and every name a block.
     for (const std::string &name : mesh.block_names)

@@ -444,12 +444,10 @@ namespace fdem
 
     template <int dim>
     MeshDescription<dim>
-    read_gmsh_file(const std::string &file_name)
+    read_gmsh_file(const std::string           &file_name,
+                   const std::function<void()> &before_meshing)
     {
-      if (std::filesystem::path(file_name).extension() == ".msh" &&
-          std::ifstream(file_name).good() &&
-          !std::filesystem::is_directory(file_name))
-        check_node_tags(file_name);
+      check_before_gmsh(file_name);
       AssertThrow(std::ifstream(file_name).good() &&
                     !std::filesystem::is_directory(file_name),
                   ExcMessage("Gmsh file '" + file_name +
@@ -469,6 +467,8 @@ namespace fdem
                                  "': Mesh.Algorithm = 8 (Frontal-Delaunay for "
                                  "quads) crashes Gmsh 4.8.4; use 6 with "
                                  "Recombine instead."));
+          if (before_meshing)
+            before_meshing();
           GmshSession::run("Gmsh could not mesh '" + file_name + "'",
                            [&]() { gmsh::model::mesh::generate(dim); });
         }
@@ -575,9 +575,9 @@ namespace fdem
     template MeshDescription<3>
     extract_current_gmsh_model<3>(const std::string &);
     template MeshDescription<2>
-    read_gmsh_file<2>(const std::string &);
+    read_gmsh_file<2>(const std::string &, const std::function<void()> &);
     template MeshDescription<3>
-    read_gmsh_file<3>(const std::string &);
+    read_gmsh_file<3>(const std::string &, const std::function<void()> &);
     template void
     write_gmsh_file<2>(const MeshDescription<2> &, const std::string &);
     template void

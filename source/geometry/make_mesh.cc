@@ -8,6 +8,7 @@
 #include <fdem/geometry/cases/wedge.h>
 #include <fdem/geometry/gmsh_mesh.h>
 #include <fdem/geometry/make_mesh.h>
+#include <fdem/geometry/mesh_estimate.h>
 #include <fdem/postprocess/results_folder.h>
 
 #include <deal.II/base/exceptions.h>
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstring>
+#include <iostream>
 #include <sstream>
 
 namespace fdem
@@ -61,54 +63,9 @@ namespace fdem
 
     namespace
     {
-      // Peak memory per degree of freedom of a run, measured on the paper's
-      // slope at 4.1 million dofs (doc/scaling.md: 11590 MiB).
-      constexpr double bytes_per_dof = 2950;
-      // Nodes per area / h^2 of Gmsh's quadrilaterals there (2.06 million
-      // nodes for 1550 m^2 at h = 0.035 m).
-      constexpr double nodes_per_cell_area = 1.6;
-
-      /**
-       * Refuses a slope whose mesh would need more memory than allowed,
-       * before Gmsh starts: Gmsh would otherwise grow without bound (Mesh
-       * size = 1e-6) or mesh for minutes (0.01). The estimate: the area
-       * between the ground and the base over the element size squared,
-       * plus a band of the finer size along the sliding surface; two dofs
-       * per node.
-       */
-      void
-      check_slope_size(const parameters::GeometryParameters &geometry)
-      {
-        const Slope &slope = geometry.slope;
-        const auto  &g     = slope.ground_surface;
-        double       area = 0, length = 0;
-        for (unsigned int i = 1; i < g.size(); ++i)
-          {
-            area += (g[i][0] - g[i - 1][0]) *
-                    (0.5 * (g[i][1] + g[i - 1][1]) - slope.base_elevation);
-            length += g[i].distance(g[i - 1]);
-          }
-        const double h   = slope.mesh_size;
-        const double h_s = std::min(slope.mesh_size_on_sliding_surface, h);
-        const double n_nodes =
-          nodes_per_cell_area *
-          std::min(area / (h_s * h_s),
-                   area / (h * h) + length * h / (h_s * h_s));
-        const double mib   = 2 * n_nodes * bytes_per_dof / (1 << 20);
-        double       limit = geometry.memory_limit;
-        if (limit == 0)
-          limit = double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE) /
-                  (1 << 20);
-        std::ostringstream message;
-        message.precision(3);
-        message << "Geometry/Slope/Mesh size: about " << n_nodes
-                << " nodes, which would need about " << mib
-                << " MiB, more than the " << limit
-                << " MiB allowed (Geometry/Memory limit; 0 is this machine's "
-                   "memory); use a coarser mesh or raise the limit.";
-        AssertThrow(std::isfinite(mib) && mib <= limit,
-                    ExcMessage(message.str()));
-      }
+      // Meshes of more elements than this are announced before they are
+      // made: about 2 s of meshing on the paper's slope.
+      constexpr double large_mesh = 5e4;
 
       // The message of the watchdog, made before it is armed: a signal
       // handler may not allocate.
@@ -174,8 +131,30 @@ namespace fdem
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
               const std::string                    &prm_directory,
-              const std::string                    &msh_output_file)
+              const std::string                    &msh_output_file,
+              const unsigned int                    fe_degree)
     {
+      // A mesh far too fine for this machine is refused before Gmsh or a
+      // generator allocates it (Mesh size = 1e-6 grew without bound); a
+      // long one is announced (Mesh size = 0.01 meshed for minutes
+      // without a word).
+      const bool host = !Utilities::MPI::job_supports_mpi() ||
+                        Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const auto refuse_or_announce = [&](const MeshEstimate &estimate) {
+        check_mesh_estimate(estimate, geometry, dim, fe_degree);
+        if (host && estimate.n_cells > large_mesh)
+          {
+            std::ostringstream line;
+            line.precision(2);
+            line << "meshing ("
+                 << estimate.entry.substr(0, estimate.entry.find(':'))
+                 << "): about " << estimate.n_cells << " elements" << std::endl;
+            std::cout << line.str() << std::flush;
+          }
+      };
+      if (geometry.source != Source::mesh_file &&
+          geometry.source_is_3d() == (dim == 3))
+        refuse_or_announce(estimate_mesh(geometry));
       MeshDescription<dim> mesh;
       const MeshWatchdog   watchdog(geometry.time_limit,
                                   geometry.source == Source::mesh_file ?
@@ -184,7 +163,12 @@ namespace fdem
                                       "'" :
                                       "a built-in generator");
       if (geometry.source == Source::mesh_file)
-        mesh = read_gmsh_file<dim>(geometry.mesh_file_path(prm_directory));
+        {
+          const std::string file = geometry.mesh_file_path(prm_directory);
+          mesh                   = read_gmsh_file<dim>(file, [&]() {
+            refuse_or_announce(estimate_gmsh_geometry(dim, file));
+          });
+        }
       else if (geometry.source_is_3d())
         {
           AssertThrow(dim == 3,
@@ -205,8 +189,6 @@ namespace fdem
                                  "slope, hertz and inclined block are 2D "
                                  "only; in 3D use wedge, block on plane, hertz "
                                  "sphere or a mesh file."));
-          if (geometry.source == Source::slope)
-            check_slope_size(geometry);
           if constexpr (dim == 2)
             mesh = (geometry.source == Source::slope) ?
                      make_slope_mesh(geometry.slope) :
@@ -226,11 +208,13 @@ namespace fdem
     template MeshDescription<2>
     make_mesh<2>(const parameters::GeometryParameters &,
                  const std::string &,
-                 const std::string &);
+                 const std::string &,
+                 unsigned int);
     template MeshDescription<3>
     make_mesh<3>(const parameters::GeometryParameters &,
                  const std::string &,
-                 const std::string &);
+                 const std::string &,
+                 unsigned int);
     template void
     apply_transformation<2>(const parameters::GeometryParameters &,
                             MeshDescription<2> &);

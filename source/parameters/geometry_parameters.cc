@@ -63,11 +63,14 @@ namespace fdem
           "Memory limit",
           "0",
           Patterns::Double(0),
-          "Largest memory a built-in mesh may need, estimated before Gmsh "
-          "meshes it (MiB; about 3 kB per degree of freedom, as measured in "
+          "Largest memory the mesh of a built-in generator or a .geo file may "
+          "need, estimated before it is made (MiB; about 3 kB "
+          "per degree of freedom and 1 kB per pair squared, as measured in "
           "doc/scaling.md). A finer mesh is refused with the estimate. 0 "
-          "means the physical memory of this machine; set a larger value to "
-          "override.");
+          "means the physical memory of this machine, or the address space "
+          "limit (ulimit -v) if smaller; set a larger value to override. "
+          "A .geo file is estimated from Gmsh's mesh of its boundaries; a "
+          ".msh file is not (it is already meshed).");
         prm.declare_entry(
           "Time limit",
           "1800",

@@ -7,9 +7,11 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
@@ -78,6 +80,23 @@ namespace fdem
 
 
 
+    void
+    exit_out_of_memory()
+    {
+      static const char message[] =
+        "fdem-slope: error: out of memory: the model needs more memory than "
+        "this machine (or ulimit -v) gives; use a coarser mesh (Geometry/"
+        "Memory limit bounds the estimate made before meshing).\n";
+      if (write(STDERR_FILENO, message, sizeof message - 1) < 0)
+        {
+          // Nothing else to tell.
+        }
+      remove_partial_folder();
+      _exit(1);
+    }
+
+
+
     ResultsFolder::ResultsFolder(const std::string &target_name, const bool writes_files)
       : writes_files(writes_files)
     {
@@ -125,11 +144,28 @@ namespace fdem
     {
       if (!writes_files)
         return;
+      // The lock file goes once the swap is done, without reopening the race
+      // it closes: a run that waited on the lock of a file that has since
+      // been removed holds a lock nobody else respects, so after locking it
+      // checks that its file is still the one at that path, and otherwise
+      // starts again with the new file. Only the holder removes the file,
+      // while it holds the lock, so the file at the path and its lock holder
+      // are always one.
       const std::string lock_file = target + ".lock";
-      const int         lock      = open(lock_file.c_str(), O_RDWR | O_CREAT, 0644);
-      AssertThrow(lock >= 0,
-                  dealii::ExcMessage("Output/Directory: cannot create '" + lock_file + "'."));
-      flock(lock, LOCK_EX);
+      int               lock      = -1;
+      for (;;)
+        {
+          lock = open(lock_file.c_str(), O_RDWR | O_CREAT, 0644);
+          AssertThrow(lock >= 0,
+                      dealii::ExcMessage("Output/Directory: cannot create '" + lock_file +
+                                         "': " + std::strerror(errno) + "."));
+          flock(lock, LOCK_EX);
+          struct stat locked, named;
+          if (fstat(lock, &locked) == 0 && stat(lock_file.c_str(), &named) == 0 &&
+              locked.st_dev == named.st_dev && locked.st_ino == named.st_ino)
+            break;
+          close(lock);
+        }
       std::error_code error;
       const std::string previous = target + ".previous";
       fs::remove_all(previous, error);
@@ -137,6 +173,7 @@ namespace fdem
         fs::rename(target, previous, error);
       if (!error)
         fs::rename(staging_directory, target, error);
+      unlink(lock_file.c_str());
       flock(lock, LOCK_UN);
       close(lock);
       AssertThrow(!error,

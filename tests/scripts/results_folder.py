@@ -7,7 +7,11 @@
       started together, REPEATS times (default 5): each time the folder must
       be one whole run, file for file equal to a run of that variant made
       alone (interfaces.csv byte for byte, the same file names), with no
-      partial folder left beside it
+      partial folder nor .lock file left beside it
+  results_folder.py stale EXE CASE.prm
+      a run with VTU files, one with Write VTU = false and a failed one into
+      one folder: no VTU beside the second run's summary.json, the first
+      kept whole as .previous, and the failed run leaves the folder as it was
   results_folder.py interrupt EXE CASE.prm
       runs stopped by SIGINT and by SIGTERM after 0.2 to 1.5 s: no partial
       folder remains, and the results folder is absent or a whole earlier
@@ -69,6 +73,8 @@ def check_concurrent(exe, prm, repeats=5):
             assert open(os.path.join(out, "parameters.prm")).read() == \
                 reference_prm[which], f"repeat {repeat}: parameters.prm of the other run"
             assert leftovers(workdir) == [], leftovers(workdir)
+            # The lock file goes with the last run that held it.
+            assert not os.path.exists(out + ".lock"), "the .lock file was left"
             print(f"repeat {repeat}: one whole run ({os.path.basename(which)}), {len(files)} files")
 
 
@@ -96,6 +102,34 @@ def check_interrupt(exe, prm):
                       "no partial folder, the results folder whole")
 
 
+def check_stale(exe, prm):
+    """A run with VTU files, then one without into the same folder, then a
+    failed one: the folder is each time one run, never with the earlier
+    run's files beside the new summary.json."""
+    with tempfile.TemporaryDirectory() as workdir:
+        run = variant(prm, workdir, "case", 2.0)
+        subprocess.run([exe, run], cwd=workdir, capture_output=True, check=True, timeout=600)
+        out = os.path.join(workdir, "shared-output")
+        with_vtu = sorted(os.listdir(out))
+        assert "solution.pvd" in with_vtu, with_vtu
+        with open(run, "a") as f:
+            f.write("subsection Output\n  set Write VTU = false\nend\n")
+        subprocess.run([exe, run], cwd=workdir, capture_output=True, check=True, timeout=600)
+        without = sorted(os.listdir(out))
+        print("with VTU:", len(with_vtu), "files; without:", without)
+        assert not [n for n in without if n.endswith((".vtu", ".pvd"))], without
+        assert sorted(os.listdir(out + ".previous")) == with_vtu, "the previous run is not kept whole"
+        whole = snapshot(out)
+        with open(run, "a") as f:
+            f.write("subsection Blocks\n  subsection foundation\n"
+                    "    set Young's modulus = -1\n  end\nend\n")
+        p = subprocess.run([exe, run], cwd=workdir, capture_output=True, text=True, timeout=600)
+        print("failed run:", p.returncode, p.stderr.strip())
+        assert p.returncode == 1 and p.stderr.startswith("fdem-slope: error: "), p.stderr
+        assert snapshot(out) == whole, "a failed run changed the results folder"
+        assert leftovers(workdir) == [] and not os.path.exists(out + ".lock")
+
+
 def check_names(exe, prm):
     with tempfile.TemporaryDirectory() as workdir:
         subprocess.run([exe, os.path.abspath(prm)], cwd=workdir, capture_output=True,
@@ -111,4 +145,5 @@ def check_names(exe, prm):
 
 
 if __name__ == "__main__":
-    {"concurrent": check_concurrent, "interrupt": check_interrupt, "names": check_names}[sys.argv[1]](*sys.argv[2:])
+    {"concurrent": check_concurrent, "interrupt": check_interrupt, "names": check_names,
+     "stale": check_stale}[sys.argv[1]](*sys.argv[2:])

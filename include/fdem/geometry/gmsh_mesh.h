@@ -4,6 +4,7 @@
 
 #include <fdem/geometry/mesh_description.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -62,11 +63,14 @@ namespace fdem
     /**
      * Read a Gmsh file and convert it with extract_current_gmsh_model(): a
      * mesh (.msh of any version, ASCII or binary) or a geometry (.geo), which
-     * is meshed in @p dim dimensions. Opens its own GmshSession.
+     * is meshed in @p dim dimensions. Opens its own GmshSession. For a
+     * geometry, @p before_meshing (if given) is called once Gmsh has read
+     * it, before it meshes: it may look at the model, or throw.
      */
     template <int dim>
     MeshDescription<dim>
-    read_gmsh_file(const std::string &file_name);
+    read_gmsh_file(const std::string               &file_name,
+                   const std::function<void()> &before_meshing = {});
 
     /**
      * Convert the mesh of the model currently loaded in Gmsh (a GmshSession

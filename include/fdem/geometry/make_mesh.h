@@ -19,12 +19,18 @@ namespace fdem
      * apply_transformation(). If
      * @p msh_output_file is not empty, the final mesh is also written there
      * (Gmsh .msh version 4, ASCII) for the user to look at.
+     *
+     * A built-in generator's mesh is first estimated (estimate_mesh(), with
+     * elements of degree @p fe_degree): beyond Geometry/Memory limit it is
+     * refused with a one-line error naming the entry, and a large one is
+     * announced on stdout ("meshing (...): about N elements").
      */
     template <int dim>
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
               const std::string                    &prm_directory,
-              const std::string                    &msh_output_file);
+              const std::string                    &msh_output_file,
+              unsigned int                          fe_degree = 1);
 
     /**
      * Map every vertex x of @p mesh to R (s x) + t, with the scale factor s,

@@ -16,7 +16,10 @@ namespace fdem
      * at the end, the previous results becoming `<target>.previous` (an
      * older `.previous` is removed). The swap happens under a lock on
      * `<target>.lock`, so that two runs into one folder cannot interleave:
-     * the last to finish wins, whole. A run that fails (an exception) or is
+     * the last to finish wins, whole. The lock file is removed by its
+     * holder before it unlocks; a run that got the lock of a removed file
+     * sees that the path names another file (or none) and locks again, so
+     * removing it reopens no race. A run that fails (an exception) or is
      * stopped by SIGINT, SIGTERM or SIGHUP removes its partial folder and
      * leaves the target as it was.
      *
@@ -56,6 +59,17 @@ namespace fdem
      */
     void
     remove_partial_folder();
+
+    /**
+     * The new-handler of the program (std::set_new_handler): an allocation
+     * that fails ends the run with one error line, the partial folder
+     * removed. A std::bad_alloc thrown instead would end it in
+     * std::terminate with a stack trace wherever it cannot be caught, as
+     * inside Gmsh's OpenMP loops (found by the fuzz test: Mesh size = 1e-9
+     * under a raised Geometry/Memory limit).
+     */
+    [[noreturn]] void
+    exit_out_of_memory();
   } // namespace postprocess
 } // namespace fdem
 
