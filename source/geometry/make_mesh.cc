@@ -174,7 +174,8 @@ namespace fdem
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
               const std::string                    &prm_directory,
-              const std::string                    &msh_output_file)
+              const std::string                    &msh_output_file,
+              const std::vector<std::string>       &material_names)
     {
       MeshDescription<dim> mesh;
       const MeshWatchdog   watchdog(geometry.time_limit,
@@ -184,7 +185,8 @@ namespace fdem
                                       "'" :
                                       "a built-in generator");
       if (geometry.source == Source::mesh_file)
-        mesh = read_gmsh_file<dim>(geometry.mesh_file_path(prm_directory));
+        mesh = read_gmsh_file<dim>(geometry.mesh_file_path(prm_directory),
+                                   material_names);
       else if (geometry.source_is_3d())
         {
           AssertThrow(dim == 3,
@@ -226,11 +228,13 @@ namespace fdem
     template MeshDescription<2>
     make_mesh<2>(const parameters::GeometryParameters &,
                  const std::string &,
-                 const std::string &);
+                 const std::string &,
+                 const std::vector<std::string> &);
     template MeshDescription<3>
     make_mesh<3>(const parameters::GeometryParameters &,
                  const std::string &,
-                 const std::string &);
+                 const std::string &,
+                 const std::vector<std::string> &);
     template void
     apply_transformation<2>(const parameters::GeometryParameters &,
                             MeshDescription<2> &);

@@ -6,6 +6,7 @@
 #include <fdem/parameters/geometry_parameters.h>
 
 #include <string>
+#include <vector>
 
 namespace fdem
 {
@@ -19,12 +20,16 @@ namespace fdem
      * apply_transformation(). If
      * @p msh_output_file is not empty, the final mesh is also written there
      * (Gmsh .msh version 4, ASCII) for the user to look at.
+     * @p material_names are the names of Materials/Names: the physical
+     * groups of dimension dim of a mesh file that are material regions
+     * (the generators name their own).
      */
     template <int dim>
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
               const std::string                    &prm_directory,
-              const std::string                    &msh_output_file);
+              const std::string                    &msh_output_file,
+              const std::vector<std::string>       &material_names = {});
 
     /**
      * Map every vertex x of @p mesh to R (s x) + t, with the scale factor s,

@@ -121,6 +121,7 @@ namespace fdem
           "triangles of twice the size recombined and subdivided), or "
           "Gmsh's Frontal-Delaunay triangles of the size itself "
           "(FE_SimplexP).");
+        declare_layer_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -147,6 +148,7 @@ namespace fdem
         if (mesh_size_on_sliding_surface == 0)
           mesh_size_on_sliding_surface = mesh_size;
         element_shape = case_input::parse_element_shape(prm);
+        parse_layer_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -189,6 +191,7 @@ namespace fdem
                               name + "its first and last points must lie on or "
                                      "above the ground surface.");
         }
+      validate_layers();
     }
 
 
@@ -291,8 +294,14 @@ namespace fdem
       AssertThrow(!sliding.empty() && mass_on_ground,
                   ExcMessage(not_separated));
 
-      add_physical_group(2, {mass}, "sliding mass");
-      add_physical_group(2, {foundation}, "foundation");
+      // Soil layers (slope_layers.cc): every part split along the layer
+      // boundaries, one material region per layer material.
+      std::vector<int> mass_surfaces{mass}, foundation_surfaces{foundation};
+      split_into_layers(slope,
+                        {&mass_surfaces, &foundation_surfaces},
+                        {&sliding, &ground_curves, &left, &right, &bottom});
+      add_physical_group(2, mass_surfaces, "sliding mass");
+      add_physical_group(2, foundation_surfaces, "foundation");
       add_physical_group(1, sliding, "sliding surface");
       add_physical_group(1, ground_curves, "ground");
       add_physical_group(1, left, "left");
@@ -312,7 +321,7 @@ namespace fdem
           gmsh_2d::set_unstructured_quad_options();
         gmsh::model::mesh::generate(2);
       });
-      return extract_current_gmsh_model<2>(name);
+      return extract_current_gmsh_model<2>(name, slope.layers);
     }
   } // namespace geometry
 } // namespace fdem
