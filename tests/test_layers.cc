@@ -40,10 +40,10 @@ namespace
   parameters::Parameters
   layered(const double mesh_size)
   {
-    auto p                              = test_support::case_parameters("layered_slope.prm");
-    p.geometry.slope.mesh_size          = mesh_size;
-    p.safety_factor.tolerance           = 1e-11;
-    p.safety_factor.stiffness_check     = false;
+    auto p = test_support::case_parameters("layered_slope.prm");
+    p.geometry.slope.mesh_size      = mesh_size;
+    p.safety_factor.tolerance       = 1e-11;
+    p.safety_factor.stiffness_check = false;
     // Without water in the surface every pair slips at the limit, where K
     // is a function of the pair strengths alone; with it a pair near the
     // toe stays stuck, and K then also depends on the path of the status
@@ -70,22 +70,25 @@ namespace
    * material's c and phi given (Strength = given), read from a mesh file.
    */
   parameters::Parameters
-  interfaces_by_hand(const parameters::Parameters &p, const geometry::MeshDescription<2> &mesh)
+  interfaces_by_hand(const parameters::Parameters       &p,
+                     const geometry::MeshDescription<2> &mesh)
   {
-    geometry::MeshDescription<2> split = mesh;
-    const auto &groups  = split.face_group_names;
-    const unsigned int surface =
-      std::find(groups.begin(), groups.end(), "sliding surface") - groups.begin();
-    const unsigned int mass =
-      std::find(split.block_names.begin(), split.block_names.end(), "sliding mass") -
-      split.block_names.begin();
+    geometry::MeshDescription<2> split  = mesh;
+    const auto                  &groups = split.face_group_names;
+    const unsigned int           surface =
+      std::find(groups.begin(), groups.end(), "sliding surface") -
+      groups.begin();
+    const unsigned int mass = std::find(split.block_names.begin(),
+                                        split.block_names.end(),
+                                        "sliding mass") -
+                              split.block_names.begin();
     std::map<unsigned int, std::vector<unsigned int>> cells_at_vertex;
     for (unsigned int c = 0; c < split.cells.size(); ++c)
       if (split.cells[c].material_id == mass)
         for (const unsigned int v : split.cells[c].vertices)
           cells_at_vertex[v].push_back(c);
     std::map<unsigned int, unsigned int> group_of_material;
-    auto parameters = p;
+    auto                                 parameters = p;
     parameters.interface_names.clear();
     for (auto &face : split.faces)
       if (face.boundary_id == surface)
@@ -104,8 +107,8 @@ namespace
               group_of_material[m]   = split.face_group_names.size();
               split.face_group_names.push_back(name);
               parameters.interface_names.push_back(name);
-              auto interface = p.interfaces.at("sliding surface");
-              const auto &material = p.materials.at(split.material_names[m]);
+              auto        interface = p.interfaces.at("sliding surface");
+              const auto &material  = p.materials.at(split.material_names[m]);
               interface.strength_from_material = false;
               interface.cohesion               = material.cohesion;
               interface.friction_angle         = material.friction_angle;
@@ -113,10 +116,12 @@ namespace
             }
           face.boundary_id = group_of_material[m];
         }
-    EXPECT_GE(group_of_material.size(), 2u) << "the surface should cross a layer boundary";
+    EXPECT_GE(group_of_material.size(), 2u)
+      << "the surface should cross a layer boundary";
     const std::string file = p.output.directory + "/by_hand.msh";
     geometry::write_gmsh_file(split, file);
-    parameters.geometry.source    = parameters::GeometryParameters::Source::mesh_file;
+    parameters.geometry.source =
+      parameters::GeometryParameters::Source::mesh_file;
     parameters.geometry.mesh_file = file;
     parameters.output.directory += "/by_hand";
     return parameters;
@@ -130,65 +135,75 @@ namespace
   struct Comparison
   {
     double K_material = 0, K_by_hand = 0;
-    /** Full-strength cohesive force of the pairs open at the limit (material run). */
+    /** Full-strength cohesive force of the pairs open at the limit (material
+     * run). */
     double open_cohesion = 0;
   };
 
   Comparison
-  compare_with_hand(const parameters::Parameters &p, const bool same_friction_angle)
+  compare_with_hand(const parameters::Parameters &p,
+                    const bool                    same_friction_angle)
   {
-    const auto material = run(p);
-    const auto by_hand  = run(interfaces_by_hand(p, material->mesh));
+    const auto material           = run(p);
+    const auto by_hand            = run(interfaces_by_hand(p, material->mesh));
     const auto strengths_material = material->pair_strengths(1.0);
     const auto strengths_by_hand  = by_hand->pair_strengths(1.0);
     // The pairs of the hand model by position; junction nodes of two
     // segments are paired in the first and marked.
-    std::map<std::pair<double, double>, std::pair<unsigned int, bool>> by_position;
+    std::map<std::pair<double, double>, std::pair<unsigned int, bool>>
+                                                    by_position;
     std::set<std::pair<unsigned int, unsigned int>> shared;
     for (const auto &interface : by_hand->interfaces)
       for (const auto &node : interface.shared_nodes)
         shared.emplace(node.interface, node.pair);
     unsigned int p_hand = 0;
     for (unsigned int i = 0; i < by_hand->interfaces.size(); ++i)
-      for (unsigned int k = 0; k < by_hand->interfaces[i].pairs.size(); ++k, ++p_hand)
+      for (unsigned int k = 0; k < by_hand->interfaces[i].pairs.size();
+           ++k, ++p_hand)
         {
           const auto &x = by_hand->interfaces[i].pairs[k].position_J;
-          by_position[{std::round(x[0] * 1e6), std::round(x[1] * 1e6)}] = {p_hand,
-                                                                         shared.count({i, k}) == 1};
+          by_position[{std::round(x[0] * 1e6), std::round(x[1] * 1e6)}] = {
+            p_hand, shared.count({i, k}) == 1};
         }
     EXPECT_EQ(by_position.size(), strengths_material.size());
-    unsigned int n_junctions = 0;
+    unsigned int n_junctions  = 0;
     double       max_cohesion = 0, cohesion_error = 0, friction_error = 0;
     for (unsigned int k = 0; k < material->interfaces[0].pairs.size(); ++k)
       {
-        const auto &x  = material->interfaces[0].pairs[k].position_J;
-        const auto  it = by_position.find({std::round(x[0] * 1e6), std::round(x[1] * 1e6)});
+        const auto &x = material->interfaces[0].pairs[k].position_J;
+        const auto  it =
+          by_position.find({std::round(x[0] * 1e6), std::round(x[1] * 1e6)});
         EXPECT_TRUE(it != by_position.end());
         if (it == by_position.end())
           continue;
         const auto &a = strengths_material[k];
         const auto &b = strengths_by_hand[it->second.first];
         max_cohesion  = std::max(max_cohesion, std::abs(b.cohesion_force));
-        cohesion_error = std::max(cohesion_error, std::abs(a.cohesion_force - b.cohesion_force));
+        cohesion_error =
+          std::max(cohesion_error,
+                   std::abs(a.cohesion_force - b.cohesion_force));
         n_junctions += it->second.second;
         // At a junction the hand model keeps the first segment's tan(phi),
         // Strength = material the area-weighted mean: equal only if the
         // friction angles are.
         if (!it->second.second || same_friction_angle)
           friction_error =
-            std::max(friction_error, std::abs(a.friction_coefficient - b.friction_coefficient));
+            std::max(friction_error,
+                     std::abs(a.friction_coefficient - b.friction_coefficient));
       }
     EXPECT_GE(n_junctions, 1u);
     // The same faces and shape functions on the same mesh: round-off only.
     EXPECT_LT(cohesion_error, 1e-12 * max_cohesion);
     EXPECT_LT(friction_error, 1e-14);
-    std::cout << "  K material " << std::setprecision(12) << material->safety_factor_result.safety_factor
-              << ", by hand " << by_hand->safety_factor_result.safety_factor << "; "
+    std::cout << "  K material " << std::setprecision(12)
+              << material->safety_factor_result.safety_factor << ", by hand "
+              << by_hand->safety_factor_result.safety_factor << "; "
               << n_junctions << " junction pairs" << std::endl;
     Comparison result{material->safety_factor_result.safety_factor,
                       by_hand->safety_factor_result.safety_factor};
     for (unsigned int k = 0; k < strengths_material.size(); ++k)
-      if (material->contact_outcome.states[k].status == contact::PairStatus::open)
+      if (material->contact_outcome.states[k].status ==
+          contact::PairStatus::open)
         result.open_cohesion += strengths_material[k].cohesion_force;
     return result;
   }
@@ -211,7 +226,8 @@ TEST(Layers, EveryCellHasTheMaterialOfItsLayer)
              centre[1] < elevation(slope.layer_boundaries[layer], centre[0]))
         ++layer;
       ASSERT_NE(mesh.cell_materials[c], mesh.no_material);
-      EXPECT_EQ(mesh.material_names[mesh.cell_materials[c]], slope.layers[layer])
+      EXPECT_EQ(mesh.material_names[mesh.cell_materials[c]],
+                slope.layers[layer])
         << "cell at " << centre;
       block_materials.emplace(mesh.cells[c].material_id, slope.layers[layer]);
     }
@@ -231,16 +247,19 @@ TEST(Layers, EveryCellHasTheMaterialOfItsLayer)
 // in both): K and the pair strengths agree to round-off.
 TEST(Layers, MaterialStrengthEqualsOneInterfacePerLayerByHand)
 {
-  auto  p     = layered(2.0);
-  auto &slope = p.geometry.slope;
+  auto  p                        = layered(2.0);
+  auto &slope                    = p.geometry.slope;
   slope.sliding_surface          = geometry::Slope::SlidingSurface::polyline;
   slope.sliding_surface_polyline = {Point<2>(10, 25), Point<2>(46, 35)};
-  slope.layer_boundaries[0]      = {Point<2>(0, 23), Point<2>(10, 24), Point<2>(30, 31),
+  slope.layer_boundaries[0]      = {Point<2>(0, 23),
+                                    Point<2>(10, 24),
+                                    Point<2>(30, 31),
                                     Point<2>(50, 33)};
   p.water.piezometric_line.clear();
   for (auto &[name, material] : p.materials)
     material.friction_angle = 25;
-  const auto [K_material, K_by_hand, open_cohesion] = compare_with_hand(p, true);
+  const auto [K_material, K_by_hand, open_cohesion] =
+    compare_with_hand(p, true);
   EXPECT_NEAR(K_material, K_by_hand, 1e-9 * K_by_hand);
 
   // The closed form: where the line y = 25 + (x - 10) 10/36 crosses the
@@ -248,12 +267,15 @@ TEST(Layers, MaterialStrengthEqualsOneInterfacePerLayerByHand)
   const double slope_line = 10.0 / 36;
   const auto   crossing   = [&](const Point<2> &a, const Point<2> &b) {
     const double m = (b[1] - a[1]) / (b[0] - a[0]);
-    const double x = (a[1] - m * a[0] - 25 + 10 * slope_line) / (slope_line - m);
+    const double x =
+      (a[1] - m * a[0] - 25 + 10 * slope_line) / (slope_line - m);
     return Point<2>(x, 25 + (x - 10) * slope_line);
   };
-  const Point<2> start(10, 25), in(crossing(Point<2>(10, 24), Point<2>(30, 31))),
+  const Point<2> start(10, 25),
+    in(crossing(Point<2>(10, 24), Point<2>(30, 31))),
     out(crossing(Point<2>(30, 31), Point<2>(50, 33))), end(46, 35);
-  const double L_fill = start.distance(in) + out.distance(end), L_clay = in.distance(out);
+  const double L_fill = start.distance(in) + out.distance(end),
+               L_clay = in.distance(out);
   std::ostringstream log;
   Model<2>           model(p, "", log);
   model.make_geometry();
@@ -276,13 +298,13 @@ TEST(Layers, MaterialStrengthEqualsOneInterfacePerLayerByHand)
       W -= mass.load_vector[i];
   const double alpha = std::atan(slope_line);
   const double K_statics =
-    (p.materials.at("fill").cohesion * L_fill + p.materials.at("clay").cohesion * L_clay -
-     open_cohesion +
+    (p.materials.at("fill").cohesion * L_fill +
+     p.materials.at("clay").cohesion * L_clay - open_cohesion +
      std::tan(25 * dealii::numbers::PI / 180) * W * std::cos(alpha)) /
     (W * std::sin(alpha));
   std::cout << "  L_fill " << L_fill << ", L_clay " << L_clay << ", W " << W
- << ", open pairs' cohesion " << open_cohesion
-            << ", K from statics " << std::setprecision(12) << K_statics << std::endl;
+            << ", open pairs' cohesion " << open_cohesion << ", K from statics "
+            << std::setprecision(12) << K_statics << std::endl;
   // The iteration stops at Tolerance = 1e-11; the rest is round-off.
   EXPECT_NEAR(K_material, K_statics, 1e-9 * K_statics);
 }
@@ -293,7 +315,8 @@ TEST(Layers, MaterialStrengthEqualsOneInterfacePerLayerByHand)
 // two half-faces; K moves by what those one or two nodes carry.
 TEST(Layers, MaterialFrictionDiffersOnlyAtLayerJunctions)
 {
-  const auto [K_material, K_by_hand, open_cohesion] = compare_with_hand(layered(2.0), false);
+  const auto [K_material, K_by_hand, open_cohesion] =
+    compare_with_hand(layered(2.0), false);
   (void)open_cohesion;
   EXPECT_NEAR(K_material, K_by_hand, 2e-2 * K_by_hand);
 }

@@ -20,9 +20,10 @@ namespace fdem
   {
     template <int dim>
     void
-    split_block_and_material_groups(const std::vector<std::string> &  material_names,
-                                    std::vector<std::pair<int, int>> &block_groups,
-                                    std::vector<std::pair<int, int>> &material_groups)
+    split_block_and_material_groups(
+      const std::vector<std::string>   &material_names,
+      std::vector<std::pair<int, int>> &block_groups,
+      std::vector<std::pair<int, int>> &material_groups)
     {
       gmsh::vectorpair groups;
       gmsh::model::getPhysicalGroups(groups, dim);
@@ -42,10 +43,11 @@ namespace fdem
 
     template <int dim>
     void
-    read_material_groups(const std::string &                     source,
-                         const std::vector<std::pair<int, int>> &material_groups,
-                         const std::vector<std::size_t> &        cell_element_tags,
-                         MeshDescription<dim> &                  mesh)
+    read_material_groups(
+      const std::string                      &source,
+      const std::vector<std::pair<int, int>> &material_groups,
+      const std::vector<std::size_t>         &cell_element_tags,
+      MeshDescription<dim>                   &mesh)
     {
       mesh.material_names.clear();
       mesh.cell_materials.clear();
@@ -74,16 +76,18 @@ namespace fdem
                     const auto cell = cell_of_element.find(tag);
                     AssertThrow(cell != cell_of_element.end(),
                                 ExcMessage(source + ": material '" + name +
-                                           "' has element " + std::to_string(tag) +
+                                           "' has element " +
+                                           std::to_string(tag) +
                                            ", which belongs to no block; a "
                                            "material region lies inside the "
                                            "blocks."));
                     unsigned int &material = mesh.cell_materials[cell->second];
                     AssertThrow(material == mesh.no_material || material == m,
-                                ExcMessage(source + ": element " + std::to_string(tag) +
+                                ExcMessage(source + ": element " +
+                                           std::to_string(tag) +
                                            " belongs to two materials, '" +
-                                           mesh.material_names[material] + "' and '" +
-                                           name + "'."));
+                                           mesh.material_names[material] +
+                                           "' and '" + name + "'."));
                     material = m;
                   }
             }

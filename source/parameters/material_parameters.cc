@@ -16,13 +16,14 @@ namespace fdem
     void
     MaterialParameters::declare_parameters(ParameterHandler &prm)
     {
-      prm.declare_entry("Young's modulus",
-                        "0",
-                        Patterns::Double(0),
-                        "Young's modulus E of the material (force/length^2, "
-                        "e.g. kPa with kN and m). Must be given (> 0) for every "
-                        "material that a cell uses; a block whose cells all lie "
-                        "in material regions (Materials) needs none of its own.");
+      prm.declare_entry(
+        "Young's modulus",
+        "0",
+        Patterns::Double(0),
+        "Young's modulus E of the material (force/length^2, "
+        "e.g. kPa with kN and m). Must be given (> 0) for every "
+        "material that a cell uses; a block whose cells all lie "
+        "in material regions (Materials) needs none of its own.");
       prm.declare_entry("Poisson's ratio",
                         "0.3",
                         Patterns::Double(0, 0.5),
@@ -39,20 +40,22 @@ namespace fdem
                         "Density of the material (mass/length^3); its weight "
                         "is density times Loads/Gravitational acceleration. "
                         "Give either a unit weight or a density, not both.");
-      prm.declare_entry("Saturated unit weight",
-                        "0",
-                        Patterns::Double(0),
-                        "Unit weight below the water table, Water/Piezometric "
-                        "line (force/length^3, e.g. kN/m^3), evaluated at each "
-                        "quadrature point; 0: the same weight as above it. It "
-                        "is the total weight (soil and water): give the water "
-                        "pressure on interfaces as Pore pressure = piezometric.");
-      prm.declare_entry("Friction angle",
-                        "",
-                        Patterns::Anything(),
-                        "Friction angle phi of the soil (degrees, 0 <= phi < "
-                        "90), used by interfaces with Strength = material where "
-                        "they run through this material. Empty: none given.");
+      prm.declare_entry(
+        "Saturated unit weight",
+        "0",
+        Patterns::Double(0),
+        "Unit weight below the water table, Water/Piezometric "
+        "line (force/length^3, e.g. kN/m^3), evaluated at each "
+        "quadrature point; 0: the same weight as above it. It "
+        "is the total weight (soil and water): give the water "
+        "pressure on interfaces as Pore pressure = piezometric.");
+      prm.declare_entry(
+        "Friction angle",
+        "",
+        Patterns::Anything(),
+        "Friction angle phi of the soil (degrees, 0 <= phi < "
+        "90), used by interfaces with Strength = material where "
+        "they run through this material. Empty: none given.");
       prm.declare_entry("Cohesion",
                         "0",
                         Patterns::Double(0),
@@ -62,7 +65,7 @@ namespace fdem
     }
 
     void
-    MaterialParameters::parse_parameters(ParameterHandler & prm,
+    MaterialParameters::parse_parameters(ParameterHandler  &prm,
                                          const std::string &path)
     {
       youngs_modulus        = prm.get_double("Young's modulus");

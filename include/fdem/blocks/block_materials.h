@@ -25,7 +25,7 @@ namespace fdem
     template <int dim>
     void
     check_materials(const geometry::MeshDescription<dim> &mesh,
-                    const parameters::Parameters &        parameters);
+                    const parameters::Parameters         &parameters);
 
     /**
      * The materials of block @p b by the material ids its cells get
@@ -34,7 +34,7 @@ namespace fdem
     template <int dim>
     std::map<unsigned int, parameters::MaterialParameters>
     block_materials(const geometry::MeshDescription<dim> &mesh,
-                    const parameters::Parameters &        parameters,
+                    const parameters::Parameters         &parameters,
                     const unsigned int                    b);
 
     /** The soil strength c and tan(phi) that a node pair takes. */
@@ -58,9 +58,9 @@ namespace fdem
      */
     template <int dim>
     std::map<types::global_dof_index, SoilStrength>
-    soil_strength_at_nodes(const ElasticBlock<dim> &             block,
+    soil_strength_at_nodes(const ElasticBlock<dim>              &block,
                            const types::boundary_id              group,
                            const geometry::MeshDescription<dim> &mesh,
-                           const std::string &                   interface_name);
+                           const std::string &interface_name);
   } // namespace blocks
 } // namespace fdem

@@ -40,7 +40,8 @@ namespace fdem
       double poissons_ratio = 0.3;
       /** Unit weight (force/length^3); acts along the gravity direction. */
       double unit_weight = 0;
-      /** Density (mass/length^3); multiplied by the gravitational acceleration. */
+      /** Density (mass/length^3); multiplied by the gravitational acceleration.
+       */
       double density = 0;
       /**
        * Unit weight below the water table (Water/Piezometric line)
@@ -54,7 +55,8 @@ namespace fdem
       /** Cohesion c of the soil (force/length^2). */
       double cohesion = 0;
 
-      /** The weight per unit volume above the water table, with @p g for a density. */
+      /** The weight per unit volume above the water table, with @p g for a
+       * density. */
       double
       weight(const double g) const
       {

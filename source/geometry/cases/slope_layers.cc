@@ -26,14 +26,16 @@ namespace fdem
   {
     namespace
     {
-      /** y of the polyline @p line (increasing x) at @p x, within its x range. */
+      /** y of the polyline @p line (increasing x) at @p x, within its x range.
+       */
       double
       elevation(const std::vector<Point<2>> &line, const double x)
       {
         for (unsigned int i = 1; i < line.size(); ++i)
           if (x <= line[i][0])
             {
-              const double t = (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]);
+              const double t =
+                (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]);
               return (1 - t) * line[i - 1][1] + t * line[i][1];
             }
         return line.back()[1];
@@ -41,7 +43,9 @@ namespace fdem
 
       /** @p line cut to x_min <= x <= x_max (it spans that range). */
       std::vector<Point<2>>
-      clip(const std::vector<Point<2>> &line, const double x_min, const double x_max)
+      clip(const std::vector<Point<2>> &line,
+           const double                 x_min,
+           const double                 x_max)
       {
         std::vector<Point<2>> clipped{Point<2>(x_min, elevation(line, x_min))};
         for (const Point<2> &p : line)
@@ -51,7 +55,8 @@ namespace fdem
         return clipped;
       }
 
-      /** The x of the points of @p a and @p b inside [x_min, x_max], and the ends. */
+      /** The x of the points of @p a and @p b inside [x_min, x_max], and the
+       * ends. */
       std::vector<double>
       breakpoints(const std::vector<Point<2>> &a,
                   const std::vector<Point<2>> &b,
@@ -78,14 +83,15 @@ namespace fdem
     void
     Slope::declare_layer_parameters(ParameterHandler &prm)
     {
-      prm.declare_entry("Layers",
-                        "",
-                        Patterns::List(Patterns::Anything(), 0),
-                        "Soil layers from the top down: the material of each, "
-                        "a name of Materials/Names (a material may come back "
-                        "lower down). The layers cut across the sliding mass "
-                        "and the foundation alike. Empty: no layers (each block "
-                        "is of its own material).");
+      prm.declare_entry(
+        "Layers",
+        "",
+        Patterns::List(Patterns::Anything(), 0),
+        "Soil layers from the top down: the material of each, "
+        "a name of Materials/Names (a material may come back "
+        "lower down). The layers cut across the sliding mass "
+        "and the foundation alike. Empty: no layers (each block "
+        "is of its own material).");
       prm.declare_entry("Layer boundaries",
                         "",
                         Patterns::Anything(),
@@ -115,8 +121,9 @@ namespace fdem
             catch (...)
               {
                 AssertThrow(false,
-                            ExcMessage("Geometry/Slope/Layer boundaries: '" + line +
-                                       "' is not a list of points 'x,y; x,y; ...'."));
+                            ExcMessage(
+                              "Geometry/Slope/Layer boundaries: '" + line +
+                              "' is not a list of points 'x,y; x,y; ...'."));
               }
             layer_boundaries.push_back(points);
           }
@@ -127,53 +134,63 @@ namespace fdem
     {
       const std::string path = "Geometry/Slope/Layer boundaries: ";
       for (const std::string &name : layers)
-        case_input::require(!name.empty(), "Geometry/Slope/Layers: empty name in the list.");
-      case_input::require(layers.empty() ? layer_boundaries.empty() :
-                                           layer_boundaries.size() + 1 == layers.size(),
+        case_input::require(!name.empty(),
+                            "Geometry/Slope/Layers: empty name in the list.");
+      case_input::require(layers.empty() ?
+                            layer_boundaries.empty() :
+                            layer_boundaries.size() + 1 == layers.size(),
                           path + "give one boundary fewer than Layers (" +
                             std::to_string(layers.size()) + " layers, " +
-                            std::to_string(layer_boundaries.size()) + " boundaries).");
-      const double x_min = ground_surface.front()[0], x_max = ground_surface.back()[0];
-      double       height = 0;
+                            std::to_string(layer_boundaries.size()) +
+                            " boundaries).");
+      const double x_min = ground_surface.front()[0],
+                   x_max = ground_surface.back()[0];
+      double height      = 0;
       for (const Point<2> &p : ground_surface)
         height = std::max(height, p[1] - base_elevation);
       const double tolerance = 1e-10 * (x_max - x_min + height);
       for (unsigned int k = 0; k < layer_boundaries.size(); ++k)
         {
-          const auto &      line = layer_boundaries[k];
+          const auto       &line  = layer_boundaries[k];
           const std::string which = "boundary " + std::to_string(k + 1) + " ";
-          case_input::require(line.size() >= 2, path + which + "needs at least two points.");
+          case_input::require(line.size() >= 2,
+                              path + which + "needs at least two points.");
           for (unsigned int i = 1; i < line.size(); ++i)
             case_input::require(line[i][0] > line[i - 1][0],
                                 path + which + "must have increasing x.");
           case_input::require(line.front()[0] <= x_min + tolerance &&
                                 line.back()[0] >= x_max - tolerance,
                               path + which + "must span the model from x = " +
-                                number(x_min) + " to x = " + number(x_max) + ".");
+                                number(x_min) + " to x = " + number(x_max) +
+                                ".");
           for (const double x : breakpoints(line, ground_surface, x_min, x_max))
-            case_input::require(elevation(line, x) <= elevation(ground_surface, x) + tolerance &&
-                                  elevation(line, x) > base_elevation + tolerance,
-                                path + which + "leaves the model at x = " + number(x) +
-                                  " (above the ground surface or not above the base).");
+            case_input::require(
+              elevation(line, x) <= elevation(ground_surface, x) + tolerance &&
+                elevation(line, x) > base_elevation + tolerance,
+              path + which + "leaves the model at x = " + number(x) +
+                " (above the ground surface or not above the base).");
           if (k > 0)
-            for (const double x : breakpoints(line, layer_boundaries[k - 1], x_min, x_max))
+            for (const double x :
+                 breakpoints(line, layer_boundaries[k - 1], x_min, x_max))
               case_input::require(elevation(line, x) <
-                                    elevation(layer_boundaries[k - 1], x) - tolerance,
-                                  path + "boundaries " + std::to_string(k) + " and " +
-                                    std::to_string(k + 1) + " cross or touch at x = " +
-                                    number(x) + "; each must lie strictly below the one "
-                                                "before it.");
+                                    elevation(layer_boundaries[k - 1], x) -
+                                      tolerance,
+                                  path + "boundaries " + std::to_string(k) +
+                                    " and " + std::to_string(k + 1) +
+                                    " cross or touch at x = " + number(x) +
+                                    "; each must lie strictly below the one "
+                                    "before it.");
         }
     }
 
     void
-    split_into_layers(const Slope &                         slope,
+    split_into_layers(const Slope                           &slope,
                       const std::vector<std::vector<int> *> &surface_groups,
                       const std::vector<std::vector<int> *> &curve_groups)
     {
       if (slope.layers.empty())
         return;
-      const auto & ground = slope.ground_surface;
+      const auto  &ground = slope.ground_surface;
       const double x_min = ground.front()[0], x_max = ground.back()[0];
       double       y_max = ground.front()[1];
       for (const Point<2> &p : ground)
@@ -191,28 +208,31 @@ namespace fdem
           line.emplace_back(x_max + margin, line.back()[1]);
           lines.push_back(line);
         }
-      lines.push_back({Point<2>(x_min - margin, slope.base_elevation - margin),
-                       Point<2>(x_max + margin, slope.base_elevation - margin)});
+      lines.push_back(
+        {Point<2>(x_min - margin, slope.base_elevation - margin),
+         Point<2>(x_max + margin, slope.base_elevation - margin)});
 
-      gmsh::vectorpair objects, tools, pieces;
+      gmsh::vectorpair              objects, tools, pieces;
       std::vector<gmsh::vectorpair> origin;
-      GmshSession::run("Geometry/Slope/Layer boundaries: Gmsh could not split the model", [&]() {
-        for (unsigned int k = 0; k + 1 < lines.size(); ++k)
-          {
-            // The strip of layer k: its lower line left to right, then its
-            // upper line right to left.
-            std::vector<Point<2>> outline = lines[k + 1];
-            outline.insert(outline.end(), lines[k].rbegin(), lines[k].rend());
-            tools.emplace_back(2, gmsh_2d::add_occ_polygon(outline));
-          }
-        for (const auto *group : surface_groups)
-          for (const int s : *group)
-            objects.emplace_back(2, s);
-        for (const auto *group : curve_groups)
-          for (const int c : *group)
-            objects.emplace_back(1, c);
-        gmsh::model::occ::fragment(objects, tools, pieces, origin);
-      });
+      GmshSession::run(
+        "Geometry/Slope/Layer boundaries: Gmsh could not split the model",
+        [&]() {
+          for (unsigned int k = 0; k + 1 < lines.size(); ++k)
+            {
+              // The strip of layer k: its lower line left to right, then its
+              // upper line right to left.
+              std::vector<Point<2>> outline = lines[k + 1];
+              outline.insert(outline.end(), lines[k].rbegin(), lines[k].rend());
+              tools.emplace_back(2, gmsh_2d::add_occ_polygon(outline));
+            }
+          for (const auto *group : surface_groups)
+            for (const int s : *group)
+              objects.emplace_back(2, s);
+          for (const auto *group : curve_groups)
+            for (const int c : *group)
+              objects.emplace_back(1, c);
+          gmsh::model::occ::fragment(objects, tools, pieces, origin);
+        });
 
       // Each input's pieces, by its position in objects, then tools.
       std::map<std::pair<int, int>, unsigned int> position;
@@ -253,10 +273,12 @@ namespace fdem
               else
                 outside.push_back(piece);
             }
-      GmshSession::run("Geometry/Slope/Layer boundaries: Gmsh could not split the model", [&]() {
-        gmsh::model::occ::remove(outside, true);
-        gmsh::model::occ::synchronize();
-      });
+      GmshSession::run(
+        "Geometry/Slope/Layer boundaries: Gmsh could not split the model",
+        [&]() {
+          gmsh::model::occ::remove(outside, true);
+          gmsh::model::occ::synchronize();
+        });
       for (const std::string &name : slope.layers)
         if (by_material.count(name) == 1)
           {

@@ -90,7 +90,7 @@ namespace fdem
      * holds the pieces in its layers, across all blocks.
      */
     void
-    split_into_layers(const Slope &                        slope,
+    split_into_layers(const Slope                           &slope,
                       const std::vector<std::vector<int> *> &surface_groups,
                       const std::vector<std::vector<int> *> &curve_groups);
 
