@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/blocks/block_materials.h>
 #include <fdem/blocks/surface_loads.h>
 #include <fdem/checks/layout_checks.h>
 #include <fdem/geometry/make_mesh.h>
@@ -144,7 +145,7 @@ namespace fdem
     // Every rank makes the same mesh; rank 0 writes it.
     const std::string  msh = writes_files && !validating ? parameters.output_directory() + "/mesh.msh" : "";
     mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh,
-                                    parameters.fe_degree);
+                                    parameters.fe_degree, parameters.material_names);
 
     // Every block of the mesh needs a material, and every name a block.
     for (const std::string &name : mesh.block_names)
@@ -158,6 +159,7 @@ namespace fdem
                   ExcMessage("Blocks/Names: '" + name + "' is not a block " +
                              "(physical group of dimension " + std::to_string(dim) +
                              ") in " + mesh.source + "."));
+    blocks::check_materials(mesh, parameters);
     for (const std::string &name : parameters.boundary_names)
       face_group(name, "Boundaries/Names");
     for (const std::string &name : parameters.interface_names)
@@ -236,10 +238,10 @@ namespace fdem
       {
         const std::string &name = mesh.block_names[b];
         blocks.push_back(std::make_unique<blocks::ElasticBlock<dim>>(
-          name, mesh, std::vector<unsigned int>{b},
-          std::map<unsigned int, parameters::MaterialParameters>{
-            {b, parameters.materials.at(name)}},
+          name, mesh, std::vector<unsigned int>{b}, blocks::block_materials(mesh, parameters, b),
           parameters.fe_degree));
+        if (!parameters.water.piezometric_line.empty())
+          blocks.back()->water_table = blocks::make_pressure_function<dim>("piezometric", parameters.water);
         blocks.back()->setup_constraints(conditions, interface_ids);
         blocks.back()->set_surface_loads(pressures, tractions);
         blocks.back()->find_free_rigid_modes();
@@ -283,6 +285,7 @@ namespace fdem
   {
     TimerOutput::Scope scope(timer, "interfaces");
     interfaces.clear();
+    soil_strengths.clear();
     for (const std::string &name : parameters.interface_names)
       {
         const types::boundary_id group = face_group(name, "Interfaces/Names");
@@ -305,6 +308,9 @@ namespace fdem
                                                      sides[0], *blocks[sides[0]],
                                                      sides[1], *blocks[sides[1]],
                                                      parameters.interfaces.at(name).search_distance));
+        soil_strengths.push_back(parameters.interfaces.at(name).strength_from_material ?
+                                   blocks::soil_strength_at_nodes(*blocks[sides[0]], group, mesh, name) :
+                                   std::map<types::global_dof_index, blocks::SoilStrength>());
         // A node on two interfaces (the line of intersection of a wedge) is
         // paired once, in the interface listed first.
         contact::remove_pairs_of_earlier_interfaces(interfaces);
@@ -346,19 +352,31 @@ namespace fdem
   std::vector<contact::PairStrength>
   Model<dim>::pair_strengths(const double K) const
   {
+    // c and tan(phi) in interface i at @p pair (of i, or of an earlier
+    // interface sharing the node): the interface's, or its materials'.
+    const auto soil = [this](const unsigned int i, const contact::NodePair<dim> &pair) {
+      const parameters::InterfaceParameters &p = parameters.interfaces.at(interfaces[i].name);
+      if (!p.strength_from_material)
+        return blocks::SoilStrength{p.cohesion, std::tan(p.friction_angle * numbers::PI / 180)};
+      auto it = soil_strengths[i].find(pair.dofs_I[0]);
+      if (it == soil_strengths[i].end()) // an earlier interface's pair, I and J swapped
+        it = soil_strengths[i].find(pair.dofs_J[0]);
+      AssertThrow(it != soil_strengths[i].end(), ExcInternalError());
+      return it->second;
+    };
     std::vector<contact::PairStrength> strengths;
-    for (const auto &interface : interfaces)
+    for (unsigned int i = 0; i < interfaces.size(); ++i)
       {
-        const parameters::InterfaceParameters &p = parameters.interfaces.at(interface.name);
-        for (const auto &pair : interface.pairs)
+        const parameters::InterfaceParameters &p = parameters.interfaces.at(interfaces[i].name);
+        for (const auto &pair : interfaces[i].pairs)
           {
             contact::PairStrength strength;
             const double          reduction = p.reduced_by_K ? K : 1.0;
             if (!p.frictionless)
               {
-                strength.friction_coefficient =
-                  std::tan(p.friction_angle * numbers::PI / 180) / reduction;
-                strength.cohesion_force = p.cohesion * pair.area / reduction;
+                const blocks::SoilStrength s = soil(i, pair);
+                strength.friction_coefficient = s.friction_coefficient / reduction;
+                strength.cohesion_force       = s.cohesion * pair.area / reduction;
               }
             strength.tensile_force = p.tensile_strength * pair.area;
             strengths.push_back(strength);
@@ -369,15 +387,15 @@ namespace fdem
     std::vector<unsigned int> first_pair(interfaces.size(), 0);
     for (unsigned int i = 1; i < interfaces.size(); ++i)
       first_pair[i] = first_pair[i - 1] + interfaces[i - 1].pairs.size();
-    for (const auto &interface : interfaces)
+    for (unsigned int i = 0; i < interfaces.size(); ++i)
       {
-        const parameters::InterfaceParameters &p = parameters.interfaces.at(interface.name);
-        for (const auto &shared : interface.shared_nodes)
+        const parameters::InterfaceParameters &p = parameters.interfaces.at(interfaces[i].name);
+        for (const auto &shared : interfaces[i].shared_nodes)
           {
             contact::PairStrength &strength = strengths[first_pair[shared.interface] + shared.pair];
             if (!p.frictionless)
-              strength.cohesion_force +=
-                p.cohesion * shared.area / (p.reduced_by_K ? K : 1.0);
+              strength.cohesion_force += soil(i, interfaces[shared.interface].pairs[shared.pair]).cohesion * shared.area /
+                                         (p.reduced_by_K ? K : 1.0);
             strength.tensile_force += p.tensile_strength * shared.area;
           }
       }

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <fdem/blocks/block_materials.h>
 #include <fdem/blocks/elastic_block.h>
 #include <fdem/contact/interface_pairs.h>
 #include <fdem/contact/mixed_system.h>
@@ -137,6 +138,11 @@ namespace fdem
     geometry::MeshDescription<dim>                      mesh;
     std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> blocks;
     std::vector<contact::Interface<dim>>                interfaces;
+    /**
+     * Per interface with Strength = material: the soil strength at each
+     * node of its side I, by the node's x dof (empty for the others).
+     */
+    std::vector<std::map<types::global_dof_index, blocks::SoilStrength>> soil_strengths;
     std::vector<Vector<double>>                         external_displacements;
     std::unique_ptr<contact::MixedSystem<dim>>          mixed_system;
     contact::ContactOutcome<dim>                        contact_outcome;

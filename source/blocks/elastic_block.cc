@@ -110,7 +110,8 @@ namespace fdem
       : fe_values(mapping,
                   fe,
                   family.cell_quadrature(fe.degree + 1),
-                  update_values | update_gradients | update_JxW_values)
+                  update_values | update_gradients | update_quadrature_points |
+                    update_JxW_values)
       , fe_face_values(mapping,
                        fe,
                        family.face_quadrature(fe.degree + 2),
@@ -136,11 +137,18 @@ namespace fdem
       const double E = material.youngs_modulus, nu = material.poissons_ratio;
       const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
       const double mu     = E / (2 * (1 + nu));
-      Tensor<1, dim> body_force;
+      Tensor<1, dim> body_force, saturated_body_force;
+      const double   g = loads.gravitational_acceleration;
       for (unsigned int d = 0; d < dim; ++d)
-        body_force[d] = (material.unit_weight +
-                         material.density * loads.gravitational_acceleration) *
-                        loads.gravity_direction[d];
+        {
+          body_force[d] = material.weight(g) * loads.gravity_direction[d];
+          saturated_body_force[d] =
+            material.saturated_weight(g) * loads.gravity_direction[d];
+        }
+      // Below the water table the saturated weight, point by point: the
+      // mesh need not follow the water table.
+      const bool saturated_differs =
+        water_table && material.saturated_weight(g) != material.weight(g);
 
       const FEValuesExtractors::Vector displacement(0);
       fe_values.reinit(cell);
@@ -155,7 +163,12 @@ namespace fdem
       div.resize(n);
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
-          const double JxW = fe_values.JxW(q);
+          const double          JxW = fe_values.JxW(q);
+          const Tensor<1, dim> &weight =
+            (saturated_differs &&
+             water_table->value(fe_values.quadrature_point(q)) > 0) ?
+              saturated_body_force :
+              body_force;
           for (unsigned int j = 0; j < n; ++j)
             {
               eps[j] = fe_values[displacement].symmetric_gradient(j, q);
@@ -169,7 +182,7 @@ namespace fdem
                 cell_matrix(i, j) +=
                   (lambda * div_i * div[j] + 2 * mu * (eps_i * eps[j])) * JxW;
               cell_rhs(i) +=
-                fe_values[displacement].value(i, q) * body_force * JxW;
+                fe_values[displacement].value(i, q) * weight * JxW;
             }
         }
       for (const auto &face : cell->face_iterators())

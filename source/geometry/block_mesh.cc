@@ -22,11 +22,12 @@ namespace fdem
       std::vector<unsigned int> global_index;
       std::vector<Point<dim>>   vertices;
       std::vector<CellData<dim>> cells;
-      for (const CellData<dim> &cell : mesh.cells)
-        if (std::find(blocks.begin(), blocks.end(), cell.material_id) !=
+      for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+        if (std::find(blocks.begin(), blocks.end(), mesh.cells[c].material_id) !=
             blocks.end())
           {
-            CellData<dim> local_cell = cell;
+            CellData<dim> local_cell = mesh.cells[c];
+            local_cell.material_id   = mesh.material_key(c);
             for (unsigned int &v : local_cell.vertices)
               {
                 if (local_index[v] == numbers::invalid_unsigned_int)

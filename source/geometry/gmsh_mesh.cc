@@ -233,7 +233,8 @@ namespace fdem
 
     template <int dim>
     MeshDescription<dim>
-    extract_current_gmsh_model(const std::string &source)
+    extract_current_gmsh_model(const std::string &             source,
+                               const std::vector<std::string> &material_names)
     {
       static_assert(dim == 2 || dim == 3, "Only 2D and 3D meshes.");
       const std::string hypercubes = (dim == 2) ? "quadrilaterals" : "hexahedra";
@@ -249,8 +250,10 @@ namespace fdem
                              "-dimensional, but a " + std::to_string(dim) +
                              "-dimensional mesh was asked for."));
 
-      gmsh::vectorpair block_groups;
-      gmsh::model::getPhysicalGroups(block_groups, dim);
+      // Groups named in material_names are material regions, the others
+      // blocks (gmsh_materials.cc).
+      gmsh::vectorpair block_groups, material_groups;
+      split_block_and_material_groups<dim>(material_names, block_groups, material_groups);
       const std::string kind_of_group = (dim == 2) ? "Surface" : "Volume";
       AssertThrow(!block_groups.empty(),
                   ExcMessage(source + ": there is no physical group of " +
@@ -262,6 +265,7 @@ namespace fdem
       std::map<std::size_t, unsigned int>                  block_of_element;
       std::vector<std::vector<std::size_t>>                cell_corner_tags;
       std::vector<unsigned int>                            cell_blocks;
+      std::vector<std::size_t>                             cell_element_tags;
       for (const auto &group : block_groups)
         {
           const unsigned int block = mesh.block_names.size();
@@ -282,10 +286,15 @@ namespace fdem
                             source + ": element " + std::to_string(tag) +
                             " belongs to two blocks, '" +
                             mesh.block_names[inserted.first->second] +
-                            "' and '" + mesh.block_names[block] + "'."));
+                            "' and '" + mesh.block_names[block] +
+                            "' (if one is a material region, list it in "
+                            "Materials/Names)."));
               cell_blocks.push_back(block);
+              cell_element_tags.push_back(tag);
             }
         }
+
+      read_material_groups(source, material_groups, cell_element_tags, mesh);
 
       // Keep only the vertices of cells, numbered in the order of their tags.
       std::map<std::size_t, unsigned int> vertex_of_node;
@@ -444,8 +453,9 @@ namespace fdem
 
     template <int dim>
     MeshDescription<dim>
-    read_gmsh_file(const std::string           &file_name,
-                   const std::function<void()> &before_meshing)
+    read_gmsh_file(const std::string              &file_name,
+                   const std::function<void()>    &before_meshing,
+                   const std::vector<std::string> &material_names)
     {
       check_before_gmsh(file_name);
       AssertThrow(std::ifstream(file_name).good() &&
@@ -472,7 +482,8 @@ namespace fdem
           GmshSession::run("Gmsh could not mesh '" + file_name + "'",
                            [&]() { gmsh::model::mesh::generate(dim); });
         }
-      return extract_current_gmsh_model<dim>("Gmsh file '" + file_name + "'");
+      return extract_current_gmsh_model<dim>("Gmsh file '" + file_name + "'",
+                                             material_names);
     }
 
 
@@ -489,8 +500,12 @@ namespace fdem
       // entities: one discrete entity per block and per face group. All
       // nodes go to the first block's entity; elements refer to node tags
       // of any entity.
+      // A cell's entity is that of its material key (block and material
+      // region), so that both kinds of group are sets of entities.
       std::vector<int> block_entities, face_entities;
-      for (unsigned int b = 0; b < mesh.block_names.size(); ++b)
+      const unsigned int n_keys =
+        mesh.block_names.size() * (1 + mesh.material_names.size());
+      for (unsigned int k = 0; k < n_keys; ++k)
         block_entities.push_back(gmsh::model::addDiscreteEntity(dim));
       for (unsigned int g = 0; g < mesh.face_group_names.size(); ++g)
         face_entities.push_back(gmsh::model::addDiscreteEntity(dim - 1));
@@ -537,7 +552,10 @@ namespace fdem
       // 4 tetrahedron, 5 hexahedron.
       const bool simplex =
         !mesh.cells.empty() && mesh.cells[0].vertices.size() == dim + 1;
-      add_elements(mesh.cells,
+      std::vector<CellData<dim>> keyed_cells = mesh.cells;
+      for (unsigned int c = 0; c < keyed_cells.size(); ++c)
+        keyed_cells[c].material_id = mesh.material_key(c);
+      add_elements(keyed_cells,
                    block_entities,
                    dim,
                    (dim == 2) ? (simplex ? 2 : 3) : (simplex ? 4 : 5),
@@ -551,11 +569,31 @@ namespace fdem
                    });
       gmsh::model::mesh::reclassifyNodes();
 
-      for (unsigned int b = 0; b < block_entities.size(); ++b)
+      // Physical groups of entities without elements are left out.
+      std::vector<std::vector<int>> block_groups(mesh.block_names.size()),
+        material_groups(mesh.material_names.size());
+      std::vector<bool> used(n_keys, false);
+      for (unsigned int c = 0; c < keyed_cells.size(); ++c)
+        used[keyed_cells[c].material_id] = true;
+      for (unsigned int k = 0; k < n_keys; ++k)
+        if (used[k])
+          {
+            block_groups[mesh.block_of_key(k)].push_back(block_entities[k]);
+            if (mesh.material_of_key(k) != mesh.no_material)
+              material_groups[mesh.material_of_key(k)].push_back(block_entities[k]);
+          }
+      for (unsigned int b = 0; b < block_groups.size(); ++b)
         gmsh::model::setPhysicalName(
           dim,
-          gmsh::model::addPhysicalGroup(dim, {block_entities[b]}, b + 1),
+          gmsh::model::addPhysicalGroup(dim, block_groups[b], b + 1),
           mesh.block_names[b]);
+      for (unsigned int m = 0; m < material_groups.size(); ++m)
+        gmsh::model::setPhysicalName(
+          dim,
+          gmsh::model::addPhysicalGroup(dim,
+                                        material_groups[m],
+                                        block_groups.size() + m + 1),
+          mesh.material_names[m]);
       for (unsigned int g = 0; g < face_entities.size(); ++g)
         gmsh::model::setPhysicalName(
           dim - 1,
@@ -571,13 +609,17 @@ namespace fdem
 
 
     template MeshDescription<2>
-    extract_current_gmsh_model<2>(const std::string &);
+    extract_current_gmsh_model<2>(const std::string &,
+                                  const std::vector<std::string> &);
     template MeshDescription<3>
-    extract_current_gmsh_model<3>(const std::string &);
+    extract_current_gmsh_model<3>(const std::string &,
+                                  const std::vector<std::string> &);
     template MeshDescription<2>
-    read_gmsh_file<2>(const std::string &, const std::function<void()> &);
+    read_gmsh_file<2>(const std::string &, const std::function<void()> &,
+                      const std::vector<std::string> &);
     template MeshDescription<3>
-    read_gmsh_file<3>(const std::string &, const std::function<void()> &);
+    read_gmsh_file<3>(const std::string &, const std::function<void()> &,
+                      const std::vector<std::string> &);
     template void
     write_gmsh_file<2>(const MeshDescription<2> &, const std::string &);
     template void

@@ -132,7 +132,8 @@ namespace fdem
     make_mesh(const parameters::GeometryParameters &geometry,
               const std::string                    &prm_directory,
               const std::string                    &msh_output_file,
-              const unsigned int                    fe_degree)
+              const unsigned int                    fe_degree,
+              const std::vector<std::string>       &material_names)
     {
       // A mesh far too fine for this machine is refused before Gmsh or a
       // generator allocates it (Mesh size = 1e-6 grew without bound); a
@@ -165,9 +166,10 @@ namespace fdem
       if (geometry.source == Source::mesh_file)
         {
           const std::string file = geometry.mesh_file_path(prm_directory);
-          mesh                   = read_gmsh_file<dim>(file, [&]() {
-            refuse_or_announce(estimate_gmsh_geometry(dim, file));
-          });
+          mesh                   = read_gmsh_file<dim>(
+            file,
+            [&]() { refuse_or_announce(estimate_gmsh_geometry(dim, file)); },
+            material_names);
         }
       else if (geometry.source_is_3d())
         {
@@ -209,12 +211,14 @@ namespace fdem
     make_mesh<2>(const parameters::GeometryParameters &,
                  const std::string &,
                  const std::string &,
-                 unsigned int);
+                 unsigned int,
+                 const std::vector<std::string> &);
     template MeshDescription<3>
     make_mesh<3>(const parameters::GeometryParameters &,
                  const std::string &,
                  const std::string &,
-                 unsigned int);
+                 unsigned int,
+                 const std::vector<std::string> &);
     template void
     apply_transformation<2>(const parameters::GeometryParameters &,
                             MeshDescription<2> &);

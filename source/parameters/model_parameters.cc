@@ -79,52 +79,6 @@ namespace fdem
     }
 
     void
-    MaterialParameters::declare_parameters(ParameterHandler &prm)
-    {
-      prm.declare_entry("Young's modulus",
-                        "0",
-                        Patterns::Double(0),
-                        "Young's modulus E of the block (force/length^2, e.g. "
-                        "kPa with kN and m). Must be given (> 0).");
-      prm.declare_entry("Poisson's ratio",
-                        "0.3",
-                        Patterns::Double(0, 0.5),
-                        "Poisson's ratio of the block (dimensionless, 0 <= nu "
-                        "< 0.5). 2D models are in plane strain.");
-      prm.declare_entry("Unit weight",
-                        "0",
-                        Patterns::Double(0),
-                        "Unit weight of the block (force/length^3, e.g. "
-                        "kN/m^3); acts along Loads/Gravity direction.");
-      prm.declare_entry("Density",
-                        "0",
-                        Patterns::Double(0),
-                        "Density of the block (mass/length^3); its weight is "
-                        "density times Loads/Gravitational acceleration. Give "
-                        "either a unit weight or a density, not both.");
-    }
-
-    void
-    MaterialParameters::parse_parameters(ParameterHandler & prm,
-                                         const std::string &path)
-    {
-      youngs_modulus = prm.get_double("Young's modulus");
-      poissons_ratio = prm.get_double("Poisson's ratio");
-      unit_weight    = prm.get_double("Unit weight");
-      density        = prm.get_double("Density");
-      AssertThrow(youngs_modulus > 0,
-                  ExcMessage(path +
-                             "/Young's modulus: the block has no material; "
-                             "give a Young's modulus > 0."));
-      AssertThrow(poissons_ratio < 0.5,
-                  ExcMessage(path + "/Poisson's ratio: must be below 0.5."));
-      AssertThrow(unit_weight == 0 || density == 0,
-                  ExcMessage(path +
-                             ": give either 'Unit weight' or 'Density', not "
-                             "both."));
-    }
-
-    void
     BoundaryParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.declare_entry("Constraint",
@@ -226,6 +180,16 @@ namespace fdem
                         "(eq. 10) as on the sliding surface, but its forces do "
                         "not enter F_R and F_tau (eq. 11). A sliding surface is "
                         "always reduced.");
+      prm.declare_entry("Strength",
+                        "given",
+                        Patterns::Selection("given|material"),
+                        "Where the interface's c and phi come from: given (the "
+                        "Cohesion and Friction angle above, the same all along) "
+                        "or material (each node pair takes the Cohesion and "
+                        "Friction angle of the material it runs through: that "
+                        "of the cells of the moving block, block I, at the "
+                        "pair; those above are then not used). Tensile strength "
+                        "and Frictionless stay the interface's.");
       prm.declare_entry("Pore pressure",
                         "0",
                         Patterns::Anything(),
@@ -253,6 +217,11 @@ namespace fdem
                                     "have cohesion; set it to 0."));
       sliding_surface = prm.get_bool("Sliding surface");
       reduced_by_K    = sliding_surface || prm.get_bool("Reduced by K");
+      strength_from_material = prm.get("Strength") == "material";
+      AssertThrow(!(frictionless && strength_from_material),
+                  ExcMessage(path + "/Strength: a frictionless interface takes "
+                                    "no strength from its materials; set it to "
+                                    "'given'."));
       pore_pressure   = Utilities::trim(prm.get("Pore pressure"));
       AssertThrow(pore_pressure == "piezometric" || expression_parses(pore_pressure, dim, 1),
                   ExcMessage(path + "/Pore pressure: cannot parse '" + pore_pressure +

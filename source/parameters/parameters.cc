@@ -6,6 +6,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -33,6 +34,20 @@ namespace fdem
                           "Names of the blocks: the physical groups of "
                           "dimension 'Dimension' in the mesh. Each gets a "
                           "subsection of this name with its material.");
+        prm.leave_subsection();
+        prm.enter_subsection("Materials");
+        prm.declare_entry("Names",
+                          "",
+                          Patterns::List(Patterns::Anything(), 0),
+                          "Names of the material regions: physical groups of "
+                          "dimension 'Dimension' in a Gmsh model that may "
+                          "overlap the blocks (a cell in one block and at most "
+                          "one material), or the materials of the slope "
+                          "generator's Layers. Each gets a subsection of this "
+                          "name with its Young's modulus, Poisson's ratio, "
+                          "weights and soil strength. A block's own subsection "
+                          "is the material of its cells outside every region. "
+                          "Empty: none.");
         prm.leave_subsection();
         prm.enter_subsection("Boundaries");
         prm.declare_entry("Names",
@@ -104,7 +119,8 @@ namespace fdem
     Parameters::declare_parameters(ParameterHandler &              prm,
                                    const std::vector<std::string> &blocks,
                                    const std::vector<std::string> &boundaries,
-                                   const std::vector<std::string> &interfaces)
+                                   const std::vector<std::string> &interfaces,
+                                   const std::vector<std::string> &materials)
     {
       prm.declare_entry("Dimension",
                         "2",
@@ -120,6 +136,7 @@ namespace fdem
       LoadParameters::declare_parameters(prm);
       declare_name_lists(prm);
       declare_named_subsections<MaterialParameters>(prm, "Blocks", blocks);
+      declare_named_subsections<MaterialParameters>(prm, "Materials", materials);
       declare_named_subsections<BoundaryParameters>(prm,
                                                     "Boundaries",
                                                     boundaries);
@@ -149,6 +166,13 @@ namespace fdem
       block_names     = names_in(prm, "Blocks");
       boundary_names  = names_in(prm, "Boundaries");
       interface_names = names_in(prm, "Interfaces");
+      material_names  = names_in(prm, "Materials");
+      for (const std::string &name : material_names)
+        AssertThrow(std::find(block_names.begin(), block_names.end(), name) ==
+                      block_names.end(),
+                    ExcMessage("Materials/Names: '" + name + "' is also a "
+                               "block; a physical group is either a block or "
+                               "a material region."));
       for (const std::string &name : boundary_names)
         for (const std::string &other : interface_names)
           AssertThrow(name != other,
@@ -160,6 +184,14 @@ namespace fdem
         {
           prm.enter_subsection(name);
           materials[name].parse_parameters(prm, "Blocks/" + name);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+      prm.enter_subsection("Materials");
+      for (const std::string &name : material_names)
+        {
+          prm.enter_subsection(name);
+          materials[name].parse_parameters(prm, "Materials/" + name);
           prm.leave_subsection();
         }
       prm.leave_subsection();
@@ -195,10 +227,11 @@ namespace fdem
     {
       // First pass: only the name lists, to know which subsections exist.
       ParameterHandler names_prm;
-      Parameters::declare_parameters(names_prm, {}, {}, {});
+      Parameters::declare_parameters(names_prm, {}, {}, {}, {});
       parse_file(names_prm, filename, true);
 
       Parameters parameters;
+      parameters.material_names  = names_in(names_prm, "Materials");
       parameters.block_names     = names_in(names_prm, "Blocks");
       parameters.boundary_names  = names_in(names_prm, "Boundaries");
       parameters.interface_names = names_in(names_prm, "Interfaces");
@@ -208,7 +241,8 @@ namespace fdem
       Parameters::declare_parameters(prm,
                                      parameters.block_names,
                                      parameters.boundary_names,
-                                     parameters.interface_names);
+                                     parameters.interface_names,
+                                     parameters.material_names);
       parse_file(prm, filename, false);
       parameters.parse_parameters(prm);
 
@@ -228,17 +262,18 @@ namespace fdem
     void
     print_parameters(std::ostream &out, const std::string &filename)
     {
-      std::vector<std::string> blocks, boundaries, interfaces;
+      std::vector<std::string> blocks, boundaries, interfaces, materials;
       ParameterHandler         names_prm;
-      Parameters::declare_parameters(names_prm, {}, {}, {});
+      Parameters::declare_parameters(names_prm, {}, {}, {}, {});
       if (!filename.empty())
         parse_file(names_prm, filename, true);
       blocks     = names_in(names_prm, "Blocks");
       boundaries = names_in(names_prm, "Boundaries");
       interfaces = names_in(names_prm, "Interfaces");
+      materials  = names_in(names_prm, "Materials");
 
       ParameterHandler prm;
-      Parameters::declare_parameters(prm, blocks, boundaries, interfaces);
+      Parameters::declare_parameters(prm, blocks, boundaries, interfaces, materials);
       if (!filename.empty())
         parse_file(prm, filename, false);
       prm.print_parameters(out, ParameterHandler::Text);

@@ -64,6 +64,8 @@ namespace fdem
             }
           r.area            = pair.area;
           r.initial_gap     = pair.initial_gap;
+          r.cohesion        = full_strengths[p].cohesion_force / pair.area;
+          r.friction_angle  = std::atan(full_strengths[p].friction_coefficient) * 180 / numbers::PI;
           results.push_back(r);
         }
       return results;
@@ -238,7 +240,7 @@ namespace fdem
       out << "interface,pair,x,y" << (dim == 3 ? ",z" : "") << ",normal_force,"
           << (dim == 2 ? "tangential_force" : "tangential_force_1,tangential_force_2")
           << ",normal_pressure,shear_stress,gap,slip,status,local_safety_factor,area,"
-             "initial_gap,reference_normal_pressure\n";
+             "initial_gap,reference_normal_pressure,cohesion,friction_angle\n";
       out << std::setprecision(12);
       for (unsigned int i = 0; i < interfaces.size(); ++i)
         for (unsigned int k = 0; k < results[i].size(); ++k)
@@ -255,7 +257,7 @@ namespace fdem
                 << r.local_safety_factor << ',' << r.area << ',' << r.initial_gap << ',';
             if (std::isfinite(r.reference_pressure))
               out << r.reference_pressure;
-            out << '\n';
+            out << ',' << r.cohesion << ',' << r.friction_angle << '\n';
           }
     }
 

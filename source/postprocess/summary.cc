@@ -3,6 +3,7 @@
 #include <fdem/postprocess/summary.h>
 
 #include <cmath>
+#include <algorithm>
 #include <numeric>
 
 namespace fdem
@@ -110,6 +111,28 @@ namespace fdem
         if (dim == 3)
           tangential_force = tangential_resultant.norm();
         const double extent = postprocess::contact_extent(results[i]);
+        // The full-strength (c, phi) of the pairs, one entry per distinct
+        // pair of values (pairs where two materials meet take their means).
+        nlohmann::json strengths = nlohmann::json::array();
+        for (const auto &r : results[i])
+          {
+            const auto same = [](const double a, const double b) {
+              return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+            };
+            std::size_t e = 0;
+            while (e < strengths.size() &&
+                   !(same(strengths[e]["cohesion"], r.cohesion) &&
+                     same(strengths[e]["friction_angle"], r.friction_angle)))
+              ++e;
+            if (e == strengths.size())
+              strengths.push_back({{"cohesion", r.cohesion},
+                                   {"friction_angle", r.friction_angle},
+                                   {"n_pairs", 0},
+                                   {"area", 0.0}});
+            auto &entry      = strengths[e];
+            entry["n_pairs"] = entry["n_pairs"].template get<unsigned int>() + 1;
+            entry["area"]    = entry["area"].template get<double>() + r.area;
+          }
         summary["interfaces"].push_back(
           {{"name", model.interfaces[i].name},
            {"block_I", model.blocks[model.interfaces[i].block_I]->name},
@@ -128,7 +151,8 @@ namespace fdem
            {"max_normal_pressure", max_pressure},
            {"contact_extent", extent},
            {"total_normal_force", normal_force},
-           {"total_tangential_force", tangential_force}});
+           {"total_tangential_force", tangential_force},
+           {"strengths", strengths}});
       }
     if (!hertz.empty())
       summary["hertz"] = hertz;

@@ -141,7 +141,15 @@ TEST(GmshFile, CellInTwoBlocksIsRejected)
                                gmsh::model::addPhysicalGroup(2, {surface}),
                                "b");
   expect_error([] { geometry::extract_current_gmsh_model<2>("overlap"); },
-               "overlap: element 1 belongs to two blocks, 'a' and 'b'.");
+               "overlap: element 1 belongs to two blocks, 'a' and 'b' (if one "
+               "is a material region, list it in Materials/Names).");
+  // Named as a material, 'b' is the material region of block 'a''s cell.
+  const auto mesh = geometry::extract_current_gmsh_model<2>("overlap", {"b"});
+  EXPECT_EQ(mesh.block_names, std::vector<std::string>{"a"});
+  EXPECT_EQ(mesh.material_names, std::vector<std::string>{"b"});
+  EXPECT_EQ(mesh.cell_materials, std::vector<unsigned int>{0});
+  // Block 0 plus one block times (1 + region 0).
+  EXPECT_EQ(mesh.material_key(0), 1u);
 }
 
 

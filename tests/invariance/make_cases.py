@@ -14,7 +14,8 @@ Unit sets, from the cases' kN, m, kPa:
   lbf_ft_psf forces / 4.4482216152605e-3 (lbf = 4.4482216152605 N exactly),
              lengths / 0.3048 (ft = 0.3048 m exactly), stresses and unit
              weights from those
-Common E: both blocks' Young's modulus set to 1e-8, 1e-2, 1e8 and 1e14 (kPa),
+Common E: both blocks' Young's modulus set to 1e-8, 1e-2, 1e8 and 1e14 (kPa)
+(with materials: all scaled by one factor that gives the first that value),
 the rest as in kN, m, kPa. K must be the same in all of them: every decision
 of the program is taken on dimensionless numbers (doc/theory.md,
 "Scale-free decisions").
@@ -83,6 +84,26 @@ CASES = {
         "interfaces": lambda F, L: [],
         "extra": lambda F, L: [],
     },
+    "layered_slope": {
+        "prm": "layered_slope.prm",
+        "blocks": {},
+        # Materials: Young's modulus, unit weight, saturated unit weight,
+        # cohesion (kPa, kN/m^3).
+        "materials": {"fill": (1.0e4, 19, 20.5, 5), "clay": (5.0e3, 18, 19.5, 10),
+                      "sand": (3.0e4, 20, 21, 0)},
+        "quick": ["subsection Geometry", "  subsection Slope",
+                  "    set Mesh size = 2.0", "  end", "end"],
+        "interfaces": lambda F, L: [],
+        # The piezometric line is in the model's coordinates (the layers
+        # are the generator's, scaled with the mesh).
+        "extra": lambda F, L: [
+            "subsection Water",
+            f"  set Unit weight of water = {num(9.81 * F / L**3)}",
+            "  set Piezometric line = " + "; ".join(
+                f"{num(x * L)},{num(y * L)}"
+                for x, y in [(0, 24), (10, 24.8), (30, 29), (50, 30)]),
+            "end"],
+    },
     "block_on_plane_3d": {
         "prm": "block_on_plane_3d.prm",
         "blocks": {"block": (1e6, 25), "foundation": (1e6, 25)},
@@ -133,6 +154,16 @@ def unit_lines(case, F, L):
                   f"    set Unit weight     = {num(unit_weight * F / L**3)}",
                   "  end"]
     lines.append("end")
+    if data.get("materials"):
+        lines.append("subsection Materials")
+        for name, (modulus, unit_weight, saturated, cohesion) in data["materials"].items():
+            lines += [f"  subsection {name}",
+                      f"    set Young's modulus       = {num(modulus * F / L**2)}",
+                      f"    set Unit weight           = {num(unit_weight * F / L**3)}",
+                      f"    set Saturated unit weight = {num(saturated * F / L**3)}",
+                      f"    set Cohesion              = {num(cohesion * F / L**2)}",
+                      "  end"]
+        lines.append("end")
     entries = data["interfaces"](F, L)
     if entries:
         lines.append("subsection Interfaces")
@@ -146,7 +177,17 @@ def modulus_lines(case, E):
     lines = ["subsection Blocks"]
     for name in CASES[case]["blocks"]:
         lines += [f"  subsection {name}", f"    set Young's modulus = {E}", "  end"]
-    return lines + ["end"]
+    lines.append("end")
+    if CASES[case].get("materials"):
+        lines.append("subsection Materials")
+        # All scaled by one factor, which makes the first material's E:
+        # the ratios between the layers stay.
+        reference = next(iter(CASES[case]["materials"].values()))[0]
+        for name, values in CASES[case]["materials"].items():
+            modulus = num(values[0] * float(E) / reference)
+            lines += [f"  subsection {name}", f"    set Young's modulus = {modulus}", "  end"]
+        lines.append("end")
+    return lines
 
 
 if __name__ == "__main__":

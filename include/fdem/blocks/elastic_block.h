@@ -68,7 +68,8 @@ namespace fdem
     public:
       /**
        * Builds the block from the cells of @p block_ids in @p mesh, with the
-       * material of each block index in @p materials.
+       * material of each material key (MeshDescription::material_key()) of
+       * its cells in @p materials.
        */
       ElasticBlock(const std::string &                          name,
                    const geometry::MeshDescription<dim> &       mesh,
@@ -233,8 +234,17 @@ namespace fdem
       std::unique_ptr<const Mapping<dim>> mapping_object;
       const Mapping<dim> &           mapping;
       DoFHandler<dim>                dof_handler;
-      /** Material per block index (the cells' material ids). */
+      /**
+       * Material per material id of the cells (MeshDescription::material_key():
+       * the block's own material, or the block's part of a material region).
+       */
       std::map<unsigned int, parameters::MaterialParameters> materials;
+      /**
+       * Water pressure of the water table (Water/Piezometric line), if one
+       * is given: where it is positive, a cell's weight is its material's
+       * saturated weight (evaluated at each quadrature point).
+       */
+      std::shared_ptr<const Function<dim>> water_table;
       /** Dirichlet conditions of the block. */
       AffineConstraints<double>      dirichlet_constraints;
       /** Dirichlet conditions plus the minimal support of the free modes. */

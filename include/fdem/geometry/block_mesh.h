@@ -19,8 +19,9 @@ namespace fdem
      * Builds the triangulation of the blocks whose indices are listed in
      * @p blocks (one block: an elastic body of the mixed method; all blocks:
      * the merged mesh of a plain FE model). Vertices shared with other blocks
-     * are copied, which duplicates the nodes along the interfaces. Cells keep
-     * their block index as material id; boundary faces get the index of their
+     * are copied, which duplicates the nodes along the interfaces. Cells get
+     * their MeshDescription::material_key() as material id (the block index
+     * for cells of the block's own material); boundary faces get the index of their
      * face group as boundary id, or unnamed_boundary_id.
      */
     template <int dim>

@@ -70,13 +70,17 @@ namespace fdem
     template <int dim>
     MeshDescription<dim>
     read_gmsh_file(const std::string               &file_name,
-                   const std::function<void()> &before_meshing = {});
+                   const std::function<void()>     &before_meshing = {},
+                   const std::vector<std::string> &material_names = {});
 
     /**
      * Convert the mesh of the model currently loaded in Gmsh (a GmshSession
-     * must be active). Physical groups of dimension @p dim become the blocks
-     * (an unnamed group is called "block <tag>"), those of dimension dim-1
-     * the face groups. Cells must be quadrilaterals or triangles (2D),
+     * must be active). Physical groups of dimension @p dim whose names are
+     * in @p material_names are material regions, the other ones the blocks
+     * (an unnamed group is called "block <tag>"); those of dimension dim-1
+     * are the face groups. Every cell lies in exactly one block and in at
+     * most one material region; a region's cells must lie in blocks
+     * (read_material_groups()). Cells must be quadrilaterals or triangles (2D),
      * hexahedra or tetrahedra (3D), of any order, and all of one shape (a
      * mixed mesh would need hp elements); their corner nodes are used.
      * Only vertices of cells are kept, and the cells are made positively
@@ -85,12 +89,38 @@ namespace fdem
      */
     template <int dim>
     MeshDescription<dim>
-    extract_current_gmsh_model(const std::string &source);
+    extract_current_gmsh_model(const std::string &             source,
+                               const std::vector<std::string> &material_names = {});
+
+    /**
+     * The physical groups of dimension @p dim of the current Gmsh model,
+     * those named in @p material_names in @p material_groups, the others in
+     * @p block_groups (as (dim, tag) pairs).
+     */
+    template <int dim>
+    void
+    split_block_and_material_groups(const std::vector<std::string> &material_names,
+                                    std::vector<std::pair<int, int>> &block_groups,
+                                    std::vector<std::pair<int, int>> &material_groups);
+
+    /**
+     * Sets mesh.material_names and mesh.cell_materials from the material
+     * groups @p material_groups of the current Gmsh model, whose cells are
+     * the elements @p cell_element_tags (in the order of mesh's cells to
+     * come). Throws naming @p source for an element in two material groups
+     * or in a material group but no block.
+     */
+    template <int dim>
+    void
+    read_material_groups(const std::string &                     source,
+                         const std::vector<std::pair<int, int>> &material_groups,
+                         const std::vector<std::size_t> &        cell_element_tags,
+                         MeshDescription<dim> &                  mesh);
 
     /**
      * Write @p mesh as a Gmsh file (format from the extension; .msh is
-     * written as version 4 ASCII), with one physical group per block and
-     * per face group. Opens its own GmshSession.
+     * written as version 4 ASCII), with one physical group per block, per
+     * material region and per face group. Opens its own GmshSession.
      */
     template <int dim>
     void

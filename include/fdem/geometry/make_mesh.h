@@ -6,6 +6,7 @@
 #include <fdem/parameters/geometry_parameters.h>
 
 #include <string>
+#include <vector>
 
 namespace fdem
 {
@@ -24,13 +25,17 @@ namespace fdem
      * elements of degree @p fe_degree): beyond Geometry/Memory limit it is
      * refused with a one-line error naming the entry, and a large one is
      * announced on stdout ("meshing (...): about N elements").
+     * @p material_names are the names of Materials/Names: the physical
+     * groups of dimension dim of a mesh file that are material regions
+     * (the generators name their own).
      */
     template <int dim>
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
               const std::string                    &prm_directory,
               const std::string                    &msh_output_file,
-              unsigned int                          fe_degree = 1);
+              unsigned int                          fe_degree = 1,
+              const std::vector<std::string>       &material_names = {});
 
     /**
      * Map every vertex x of @p mesh to R (s x) + t, with the scale factor s,

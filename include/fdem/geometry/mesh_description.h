@@ -45,6 +45,62 @@ namespace fdem
       std::vector<std::string> block_names;
 
       /**
+       * Names of the material regions, by index: Gmsh physical groups of
+       * dimension dim whose names are declared in Materials/Names (or the
+       * layers of the slope generator). They may overlap the blocks: a block
+       * (a kinematic unit) is made of one or more materials.
+       */
+      std::vector<std::string> material_names;
+
+      /**
+       * Per cell (same order as `cells`): the index of its material region
+       * into material_names, or no_material for a cell in none, which takes
+       * its block's own material. Empty when there are no material regions.
+       */
+      std::vector<unsigned int> cell_materials;
+
+      /** The entry of cell_materials of a cell outside every material region. */
+      static constexpr unsigned int no_material = static_cast<unsigned int>(-1);
+
+      /**
+       * The material of cell @p c as one number, unique per block and
+       * material, used as the material id of the cells of a triangulation:
+       * the block index b for the block's own material, b + n_blocks (1 + m)
+       * for the block's part of material region m.
+       */
+      unsigned int
+      material_key(const unsigned int c) const
+      {
+        const unsigned int b = cells[c].material_id;
+        return (cell_materials.empty() || cell_materials[c] == no_material) ?
+                 b :
+                 b + block_names.size() * (1 + cell_materials[c]);
+      }
+
+      /** The block of a material_key(). */
+      unsigned int
+      block_of_key(const unsigned int key) const
+      {
+        return key % block_names.size();
+      }
+
+      /** The material region of a material_key(), or no_material. */
+      unsigned int
+      material_of_key(const unsigned int key) const
+      {
+        return key < block_names.size() ? no_material :
+                                          key / block_names.size() - 1;
+      }
+
+      /** The name of a material_key()'s material: a block's or a region's. */
+      const std::string &
+      material_key_name(const unsigned int key) const
+      {
+        return key < block_names.size() ? block_names[key] :
+                                          material_names[material_of_key(key)];
+      }
+
+      /**
        * Faces of named groups: `vertices` are indices into `vertices`,
        * `boundary_id` is the group index into face_group_names. A face that
        * belongs to several groups appears once per group.

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <fdem/parameters/material_parameters.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <array>
@@ -12,27 +14,6 @@ namespace fdem
 {
   namespace parameters
   {
-    /**
-     * Material of one block: subsection "Blocks/<block name>".
-     * Units are the model's (e.g. kN and m, or N and mm), used consistently.
-     */
-    struct MaterialParameters
-    {
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-      void
-      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
-
-      /** Young's modulus E (force/length^2). */
-      double youngs_modulus = 0;
-      /** Poisson's ratio nu, 0 <= nu < 0.5. */
-      double poissons_ratio = 0.3;
-      /** Unit weight (force/length^3); acts along the gravity direction. */
-      double unit_weight = 0;
-      /** Density (mass/length^3); multiplied by the gravitational acceleration. */
-      double density = 0;
-    };
-
     /** How a boundary part is supported. */
     enum class Constraint
     {
@@ -103,6 +84,13 @@ namespace fdem
        * do not enter eq. (11).
        */
       bool reduced_by_K = true;
+      /**
+       * Where c and phi come from: false, the entries above (one pair of
+       * values for the whole interface); true ("Strength = material"), each
+       * node pair takes the soil strength of the material of the cells it
+       * runs through on the side of block I (the moving block).
+       */
+      bool strength_from_material = false;
       /**
        * Pore pressure (force/length^2) in the interface, a function of x, y
        * (, z), or "piezometric" for the hydrostatic pressure below

@@ -19,8 +19,8 @@ namespace fdem
     /**
      * Everything a .prm file says. The numbers of blocks, boundary parts and
      * interfaces vary from case to case, so their subsections are declared
-     * from the name lists "Blocks/Names", "Boundaries/Names" and
-     * "Interfaces/Names": the file is read twice, first for the names, then
+     * from the name lists "Blocks/Names", "Materials/Names",
+     * "Boundaries/Names" and "Interfaces/Names": the file is read twice, first for the names, then
      * strictly (an unknown entry or subsection is an error).
      */
     struct Parameters
@@ -43,6 +43,12 @@ namespace fdem
       OutputParameters   output;
 
       std::vector<std::string>                   block_names;
+      /** Names of the material regions (Materials/Names). */
+      std::vector<std::string>                   material_names;
+      /**
+       * Materials by name: each block's own (Blocks/<name>) and each
+       * material region's (Materials/<name>); no name is both.
+       */
       std::map<std::string, MaterialParameters>  materials;
       std::vector<std::string>                   boundary_names;
       std::map<std::string, BoundaryParameters>  boundaries;
@@ -54,7 +60,8 @@ namespace fdem
       declare_parameters(dealii::ParameterHandler &      prm,
                          const std::vector<std::string> &block_names,
                          const std::vector<std::string> &boundary_names,
-                         const std::vector<std::string> &interface_names);
+                         const std::vector<std::string> &interface_names,
+                         const std::vector<std::string> &material_names = {});
 
       /** Reads the values from a handler declared by declare_parameters(). */
       void

@@ -35,6 +35,12 @@ namespace fdem
       contact::PairStatus status = contact::PairStatus::stick;
       double area = 0, initial_gap = 0;
       /**
+       * The pair's full-strength cohesion (its cohesive force over its area)
+       * and friction angle (degrees): the interface's, or the materials'
+       * with Strength = material (0 and 0 for a frictionless interface).
+       */
+      double cohesion = 0, friction_angle = 0;
+      /**
        * Local safety factor: the pair's full shear strength c A - tan(phi)
        * f_n over its mobilised shear |f_t|; 0 for an open pair, at most 1000
        * (a pair with no shear).

@@ -161,6 +161,7 @@ namespace fdem
           "triangles of twice the size recombined and subdivided), or "
           "Gmsh's Frontal-Delaunay triangles of the size itself "
           "(FE_SimplexP).");
+        declare_layer_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -200,6 +201,7 @@ namespace fdem
           interslice_inclinations.push_back(Utilities::string_to_double(angle));
         tension_crack_depth       = prm.get_double("Tension crack depth");
         tension_crack_water_depth = prm.get_double("Tension crack water depth");
+        parse_layer_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -256,6 +258,7 @@ namespace fdem
                                      "above the ground surface.");
           slope_interslices::slope_cuts(*this); // throws on bad cuts
         }
+      validate_layers();
     }
 
 
@@ -386,24 +389,48 @@ namespace fdem
         }
       AssertThrow(mass_on_ground, ExcMessage(not_separated));
 
+      for (unsigned int b = 0; b + 1 < n_blocks; ++b)
+        AssertThrow(!interslices[b].empty(),
+                    ExcMessage(name + "/Interslice surfaces: blocks " +
+                               std::to_string(b + 1) + " and " +
+                               std::to_string(b + 2) +
+                               " of the sliding mass do not meet."));
+
+      // Soil layers (slope_layers.cc): every part split along the layer
+      // boundaries, one material region per layer material.
+      std::vector<std::vector<int>> mass_surfaces(n_blocks);
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        mass_surfaces[b] = {masses[b]};
+      std::vector<int>                foundation_surfaces{foundation};
+      std::vector<std::vector<int> *> surface_groups{&foundation_surfaces};
+      std::vector<std::vector<int> *> curve_groups{
+        &crack, &ground_curves, &left, &right, &bottom};
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        {
+          surface_groups.push_back(&mass_surfaces[b]);
+          curve_groups.push_back(&sliding[b]);
+          curve_groups.push_back(&interslices[b]);
+        }
+      split_into_layers(slope, surface_groups, curve_groups);
+      // The mesh is refined along the curves inside the model, as split.
+      all_internal = crack;
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        {
+          all_internal.insert(all_internal.end(), sliding[b].begin(), sliding[b].end());
+          all_internal.insert(all_internal.end(), interslices[b].begin(), interslices[b].end());
+        }
+
       const auto numbered = [n_blocks](const std::string &what,
                                        const unsigned int b) {
         return n_blocks == 1 ? what : what + " " + std::to_string(b + 1);
       };
       for (unsigned int b = 0; b < n_blocks; ++b)
-        add_physical_group(2, {masses[b]}, numbered("sliding mass", b));
-      add_physical_group(2, {foundation}, "foundation");
+        add_physical_group(2, mass_surfaces[b], numbered("sliding mass", b));
+      add_physical_group(2, foundation_surfaces, "foundation");
       for (unsigned int b = 0; b < n_blocks; ++b)
         add_physical_group(1, sliding[b], numbered("sliding surface", b));
       for (unsigned int b = 0; b + 1 < n_blocks; ++b)
-        {
-          AssertThrow(!interslices[b].empty(),
-                      ExcMessage(name + "/Interslice surfaces: blocks " +
-                                 std::to_string(b + 1) + " and " +
-                                 std::to_string(b + 2) +
-                                 " of the sliding mass do not meet."));
-          add_physical_group(1, interslices[b], numbered("interslice", b));
-        }
+        add_physical_group(1, interslices[b], numbered("interslice", b));
       if (!crack.empty())
         add_physical_group(1, crack, "tension crack");
       add_physical_group(1, ground_curves, "ground");
@@ -424,7 +451,7 @@ namespace fdem
           gmsh_2d::set_unstructured_quad_options();
         gmsh::model::mesh::generate(2);
       });
-      return extract_current_gmsh_model<2>(name);
+      return extract_current_gmsh_model<2>(name, slope.layers);
     }
   } // namespace geometry
 } // namespace fdem

@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <string>
 #include <vector>
 
 namespace fdem
@@ -61,6 +62,17 @@ namespace fdem
       double tension_crack_depth = 0;
       /** Height of the water in the crack above its bottom (m). */
       double tension_crack_water_depth = 0;
+      /**
+       * Materials of the soil layers from the top down (names of
+       * Materials/Names; one may come back lower down). Empty: no layers.
+       */
+      std::vector<std::string> layers;
+      /**
+       * The boundaries between consecutive layers, top down: polylines
+       * across the whole model, each strictly below the one before
+       * (slope_layers.cc).
+       */
+      std::vector<std::vector<Point<2>>> layer_boundaries;
 
       /** Declare the subsection "Slope" (inside "Geometry"). */
       static void
@@ -74,7 +86,30 @@ namespace fdem
        * invalid. */
       void
       validate() const;
+
+      /** The entries of the layers (slope_layers.cc), in "Slope". */
+      static void
+      declare_layer_parameters(ParameterHandler &prm);
+      /** Reads the entries of the layers. */
+      void
+      parse_layer_parameters(ParameterHandler &prm);
+      /** Checks the layers against the model's outline. */
+      void
+      validate_layers() const;
     };
+
+    /**
+     * Splits the model's surfaces by the layer boundaries of @p slope
+     * (nothing without layers) in the current Gmsh model (OpenCASCADE,
+     * synchronised): every surface of @p surface_groups and every curve of
+     * @p curve_groups is replaced in its list by its pieces, and one
+     * physical group of dimension 2 per layer material (slope.layers' names)
+     * holds the pieces in its layers, across all blocks.
+     */
+    void
+    split_into_layers(const Slope                           &slope,
+                      const std::vector<std::vector<int> *> &surface_groups,
+                      const std::vector<std::vector<int> *> &curve_groups);
 
     /**
      * A slope (the ground polyline closed down to the base elevation) split
@@ -88,7 +123,9 @@ namespace fdem
      * i+1 (slope_interslices.h). A tension crack adds the face group
      * "tension crack" (a face of both blocks, not an interface). The elements
      * have the size mesh_size_on_sliding_surface there and grow to mesh_size
-     * away from it. Opens its own GmshSession.
+     * away from it. With layers, every block is split along the layer
+     * boundaries and each layer's cells form a material region named after
+     * its material. Opens its own GmshSession.
      */
     MeshDescription<2>
     make_slope_mesh(const Slope &slope);

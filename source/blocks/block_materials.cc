@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/blocks/block_materials.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace fdem
+{
+  namespace blocks
+  {
+    namespace
+    {
+      /** "Blocks/<name>" or "Materials/<name>" of a material key. */
+      template <int dim>
+      std::string
+      material_path(const geometry::MeshDescription<dim> &mesh,
+                    const unsigned int                    key)
+      {
+        return (key < mesh.block_names.size() ? "Blocks/" : "Materials/") +
+               mesh.material_key_name(key);
+      }
+    } // namespace
+
+    template <int dim>
+    void
+    check_materials(const geometry::MeshDescription<dim> &mesh,
+                    const parameters::Parameters         &parameters)
+    {
+      const auto &declared = parameters.material_names;
+      for (const std::string &name : mesh.material_names)
+        AssertThrow(std::find(declared.begin(), declared.end(), name) !=
+                      declared.end(),
+                    ExcMessage("Materials/Names: the material '" + name +
+                               "' of " + mesh.source +
+                               " is not listed; list it and give "
+                               "it a subsection with its Young's modulus."));
+      for (const std::string &name : declared)
+        AssertThrow(std::find(mesh.material_names.begin(),
+                              mesh.material_names.end(),
+                              name) != mesh.material_names.end(),
+                    ExcMessage("Materials/Names: '" + name +
+                               "' is not a material "
+                               "region (physical group of dimension " +
+                               std::to_string(dim) + ", or a layer) in " +
+                               mesh.source + "."));
+      std::set<unsigned int> keys;
+      for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+        keys.insert(mesh.material_key(c));
+      for (const unsigned int key : keys)
+        parameters.materials.at(mesh.material_key_name(key))
+          .require_elastic_constants(
+            material_path(mesh, key),
+            key < mesh.block_names.size() ?
+              "the block has cells outside every material "
+              "region, which take its own material" :
+              "the material has cells");
+    }
+
+    template <int dim>
+    std::map<unsigned int, parameters::MaterialParameters>
+    block_materials(const geometry::MeshDescription<dim> &mesh,
+                    const parameters::Parameters         &parameters,
+                    const unsigned int                    b)
+    {
+      std::map<unsigned int, parameters::MaterialParameters> materials;
+      for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+        if (mesh.cells[c].material_id == b)
+          {
+            const unsigned int key = mesh.material_key(c);
+            if (materials.count(key) == 0)
+              materials[key] =
+                parameters.materials.at(mesh.material_key_name(key));
+          }
+      return materials;
+    }
+
+    template <int dim>
+    std::map<types::global_dof_index, SoilStrength>
+    soil_strength_at_nodes(const ElasticBlock<dim>              &block,
+                           const types::boundary_id              group,
+                           const geometry::MeshDescription<dim> &mesh,
+                           const std::string                    &interface_name)
+    {
+      // Per node (its x dof): int phi dGamma, int phi c dGamma, int phi
+      // tan(phi) dGamma, and the same with |phi| for nodes whose weights
+      // vanish (vertices of quadratic triangles).
+      struct Sums
+      {
+        std::array<double, 3> weighted{}, absolute{};
+      };
+      std::map<types::global_dof_index, Sums> sums;
+      FEFaceValues<dim>                       fe_face_values(block.mapping,
+                                       block.fe,
+                                       block.element_family.face_quadrature(
+                                         block.fe.degree + 2),
+                                       update_values | update_JxW_values);
+      std::vector<types::global_dof_index>    dofs(block.fe.n_dofs_per_cell());
+      for (const auto &cell : block.dof_handler.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == group)
+            {
+              const parameters::MaterialParameters &material =
+                block.materials.at(cell->material_id());
+              AssertThrow(material.has_strength,
+                          ExcMessage(
+                            "Interfaces/" + interface_name +
+                            "/Strength: the interface runs through '" +
+                            mesh.material_key_name(cell->material_id()) +
+                            "', which has no soil strength; give " +
+                            material_path(mesh, cell->material_id()) +
+                            "/Friction angle (and Cohesion)."));
+              const double tan_phi =
+                std::tan(material.friction_angle * numbers::PI / 180);
+              fe_face_values.reinit(cell, face);
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (block.fe.system_to_component_index(i).first == 0)
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    {
+                      const double phi = fe_face_values.shape_value(i, q) *
+                                         fe_face_values.JxW(q);
+                      Sums &s = sums[dofs[i]];
+                      s.weighted[0] += phi;
+                      s.weighted[1] += phi * material.cohesion;
+                      s.weighted[2] += phi * tan_phi;
+                      s.absolute[0] += std::abs(phi);
+                      s.absolute[1] += std::abs(phi) * material.cohesion;
+                      s.absolute[2] += std::abs(phi) * tan_phi;
+                    }
+            }
+      std::map<types::global_dof_index, SoilStrength> strengths;
+      for (const auto &[dof, s] : sums)
+        {
+          if (s.absolute[0] == 0)
+            continue; // a dof of a face-interior point not on the group
+          const bool weighted = std::abs(s.weighted[0]) > 1e-12 * s.absolute[0];
+          const auto &w       = weighted ? s.weighted : s.absolute;
+          strengths[dof]      = {w[1] / w[0], w[2] / w[0]};
+        }
+      return strengths;
+    }
+
+    template void
+    check_materials(const geometry::MeshDescription<2> &,
+                    const parameters::Parameters &);
+    template void
+    check_materials(const geometry::MeshDescription<3> &,
+                    const parameters::Parameters &);
+    template std::map<unsigned int, parameters::MaterialParameters>
+    block_materials(const geometry::MeshDescription<2> &,
+                    const parameters::Parameters &,
+                    const unsigned int);
+    template std::map<unsigned int, parameters::MaterialParameters>
+    block_materials(const geometry::MeshDescription<3> &,
+                    const parameters::Parameters &,
+                    const unsigned int);
+    template std::map<types::global_dof_index, SoilStrength>
+    soil_strength_at_nodes(const ElasticBlock<2> &,
+                           const types::boundary_id,
+                           const geometry::MeshDescription<2> &,
+                           const std::string &);
+    template std::map<types::global_dof_index, SoilStrength>
+    soil_strength_at_nodes(const ElasticBlock<3> &,
+                           const types::boundary_id,
+                           const geometry::MeshDescription<3> &,
+                           const std::string &);
+  } // namespace blocks
+} // namespace fdem

@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+//
+// Soil layers of the slope generator: each layer is a material region,
+// bounded by polylines across the whole model. The model's surfaces are
+// split by one strip surface per layer (OpenCASCADE fragment), so that a
+// piece's layer is the strip it came from, with no point-in-region test.
+
+#include <fdem/geometry/cases/gmsh_2d.h>
+#include <fdem/geometry/cases/slope.h>
+#include <fdem/geometry/gmsh_mesh.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    namespace
+    {
+      /** y of the polyline @p line (increasing x) at @p x, within its x range.
+       */
+      double
+      elevation(const std::vector<Point<2>> &line, const double x)
+      {
+        for (unsigned int i = 1; i < line.size(); ++i)
+          if (x <= line[i][0])
+            {
+              const double t =
+                (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]);
+              return (1 - t) * line[i - 1][1] + t * line[i][1];
+            }
+        return line.back()[1];
+      }
+
+      /** @p line cut to x_min <= x <= x_max (it spans that range). */
+      std::vector<Point<2>>
+      clip(const std::vector<Point<2>> &line,
+           const double                 x_min,
+           const double                 x_max)
+      {
+        std::vector<Point<2>> clipped{Point<2>(x_min, elevation(line, x_min))};
+        for (const Point<2> &p : line)
+          if (p[0] > x_min && p[0] < x_max)
+            clipped.push_back(p);
+        clipped.emplace_back(x_max, elevation(line, x_max));
+        return clipped;
+      }
+
+      /** The x of the points of @p a and @p b inside [x_min, x_max], and the
+       * ends. */
+      std::vector<double>
+      breakpoints(const std::vector<Point<2>> &a,
+                  const std::vector<Point<2>> &b,
+                  const double                 x_min,
+                  const double                 x_max)
+      {
+        std::set<double> x{x_min, x_max};
+        for (const auto *line : {&a, &b})
+          for (const Point<2> &p : *line)
+            if (p[0] > x_min && p[0] < x_max)
+              x.insert(p[0]);
+        return {x.begin(), x.end()};
+      }
+
+      std::string
+      number(const double x)
+      {
+        std::ostringstream out;
+        out << x;
+        return out.str();
+      }
+    } // namespace
+
+    void
+    Slope::declare_layer_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Layers",
+        "",
+        Patterns::List(Patterns::Anything(), 0),
+        "Soil layers from the top down: the material of each, "
+        "a name of Materials/Names (a material may come back "
+        "lower down). The layers cut across the sliding mass "
+        "and the foundation alike. Empty: no layers (each block "
+        "is of its own material).");
+      prm.declare_entry("Layer boundaries",
+                        "",
+                        Patterns::Anything(),
+                        "The boundaries between consecutive layers, from the "
+                        "top down, separated by '|' (one fewer than Layers): "
+                        "each a polyline 'x,y; x,y; ...' (m) with increasing x "
+                        "from the left edge of the model (or beyond) to its "
+                        "right edge (or beyond), inside the model (on or below "
+                        "the ground surface, above the base) and strictly "
+                        "below the boundary before it.");
+    }
+
+    void
+    Slope::parse_layer_parameters(ParameterHandler &prm)
+    {
+      layers = Utilities::split_string_list(prm.get("Layers"), ',');
+      layer_boundaries.clear();
+      const std::string text = Utilities::trim(prm.get("Layer boundaries"));
+      if (!text.empty())
+        for (const std::string &line : Utilities::split_string_list(text, '|'))
+          {
+            std::vector<Point<2>> points;
+            try
+              {
+                points = case_input::parse_points(line);
+              }
+            catch (...)
+              {
+                AssertThrow(false,
+                            ExcMessage(
+                              "Geometry/Slope/Layer boundaries: '" + line +
+                              "' is not a list of points 'x,y; x,y; ...'."));
+              }
+            layer_boundaries.push_back(points);
+          }
+    }
+
+    void
+    Slope::validate_layers() const
+    {
+      const std::string path = "Geometry/Slope/Layer boundaries: ";
+      for (const std::string &name : layers)
+        case_input::require(!name.empty(),
+                            "Geometry/Slope/Layers: empty name in the list.");
+      case_input::require(layers.empty() ?
+                            layer_boundaries.empty() :
+                            layer_boundaries.size() + 1 == layers.size(),
+                          path + "give one boundary fewer than Layers (" +
+                            std::to_string(layers.size()) + " layers, " +
+                            std::to_string(layer_boundaries.size()) +
+                            " boundaries).");
+      const double x_min = ground_surface.front()[0],
+                   x_max = ground_surface.back()[0];
+      double height      = 0;
+      for (const Point<2> &p : ground_surface)
+        height = std::max(height, p[1] - base_elevation);
+      const double tolerance = 1e-10 * (x_max - x_min + height);
+      for (unsigned int k = 0; k < layer_boundaries.size(); ++k)
+        {
+          const auto       &line  = layer_boundaries[k];
+          const std::string which = "boundary " + std::to_string(k + 1) + " ";
+          case_input::require(line.size() >= 2,
+                              path + which + "needs at least two points.");
+          for (unsigned int i = 1; i < line.size(); ++i)
+            case_input::require(line[i][0] > line[i - 1][0],
+                                path + which + "must have increasing x.");
+          case_input::require(line.front()[0] <= x_min + tolerance &&
+                                line.back()[0] >= x_max - tolerance,
+                              path + which + "must span the model from x = " +
+                                number(x_min) + " to x = " + number(x_max) +
+                                ".");
+          for (const double x : breakpoints(line, ground_surface, x_min, x_max))
+            case_input::require(
+              elevation(line, x) <= elevation(ground_surface, x) + tolerance &&
+                elevation(line, x) > base_elevation + tolerance,
+              path + which + "leaves the model at x = " + number(x) +
+                " (above the ground surface or not above the base).");
+          if (k > 0)
+            for (const double x :
+                 breakpoints(line, layer_boundaries[k - 1], x_min, x_max))
+              case_input::require(elevation(line, x) <
+                                    elevation(layer_boundaries[k - 1], x) -
+                                      tolerance,
+                                  path + "boundaries " + std::to_string(k) +
+                                    " and " + std::to_string(k + 1) +
+                                    " cross or touch at x = " + number(x) +
+                                    "; each must lie strictly below the one "
+                                    "before it.");
+        }
+    }
+
+    void
+    split_into_layers(const Slope                           &slope,
+                      const std::vector<std::vector<int> *> &surface_groups,
+                      const std::vector<std::vector<int> *> &curve_groups)
+    {
+      if (slope.layers.empty())
+        return;
+      const auto  &ground = slope.ground_surface;
+      const double x_min = ground.front()[0], x_max = ground.back()[0];
+      double       y_max = ground.front()[1];
+      for (const Point<2> &p : ground)
+        y_max = std::max(y_max, p[1]);
+      // Strips reach well beyond the model, so that its whole outline lies
+      // inside their union; the parts outside are removed afterwards.
+      const double margin = x_max - x_min + y_max - slope.base_elevation;
+      std::vector<std::vector<Point<2>>> lines;
+      lines.push_back({Point<2>(x_min - margin, y_max + margin),
+                       Point<2>(x_max + margin, y_max + margin)});
+      for (const auto &boundary : slope.layer_boundaries)
+        {
+          std::vector<Point<2>> line = clip(boundary, x_min, x_max);
+          line.insert(line.begin(), Point<2>(x_min - margin, line.front()[1]));
+          line.emplace_back(x_max + margin, line.back()[1]);
+          lines.push_back(line);
+        }
+      lines.push_back(
+        {Point<2>(x_min - margin, slope.base_elevation - margin),
+         Point<2>(x_max + margin, slope.base_elevation - margin)});
+
+      gmsh::vectorpair              objects, tools, pieces;
+      std::vector<gmsh::vectorpair> origin;
+      GmshSession::run(
+        "Geometry/Slope/Layer boundaries: Gmsh could not split the model",
+        [&]() {
+          for (unsigned int k = 0; k + 1 < lines.size(); ++k)
+            {
+              // The strip of layer k: its lower line left to right, then its
+              // upper line right to left.
+              std::vector<Point<2>> outline = lines[k + 1];
+              outline.insert(outline.end(), lines[k].rbegin(), lines[k].rend());
+              tools.emplace_back(2, gmsh_2d::add_occ_polygon(outline));
+            }
+          for (const auto *group : surface_groups)
+            for (const int s : *group)
+              objects.emplace_back(2, s);
+          for (const auto *group : curve_groups)
+            for (const int c : *group)
+              objects.emplace_back(1, c);
+          gmsh::model::occ::fragment(objects, tools, pieces, origin);
+        });
+
+      // Each input's pieces, by its position in objects, then tools.
+      std::map<std::pair<int, int>, unsigned int> position;
+      for (unsigned int i = 0; i < objects.size(); ++i)
+        position[objects[i]] = i;
+      std::set<int> inside;
+      for (auto *group : surface_groups)
+        {
+          std::vector<int> split;
+          for (const int s : *group)
+            for (const auto &piece : origin[position.at({2, s})])
+              if (piece.first == 2)
+                {
+                  split.push_back(piece.second);
+                  inside.insert(piece.second);
+                }
+          *group = split;
+        }
+      for (auto *group : curve_groups)
+        {
+          std::vector<int> split;
+          for (const int c : *group)
+            for (const auto &piece : origin[position.at({1, c})])
+              if (piece.first == 1)
+                split.push_back(piece.second);
+          *group = split;
+        }
+      // Pieces of the layers inside the model, by material; the rest of the
+      // strips is removed.
+      std::map<std::string, std::vector<int>> by_material;
+      gmsh::vectorpair                        outside;
+      for (unsigned int k = 0; k < slope.layers.size(); ++k)
+        for (const auto &piece : origin[objects.size() + k])
+          if (piece.first == 2)
+            {
+              if (inside.count(piece.second) == 1)
+                by_material[slope.layers[k]].push_back(piece.second);
+              else
+                outside.push_back(piece);
+            }
+      GmshSession::run(
+        "Geometry/Slope/Layer boundaries: Gmsh could not split the model",
+        [&]() {
+          gmsh::model::occ::remove(outside, true);
+          gmsh::model::occ::synchronize();
+        });
+      for (const std::string &name : slope.layers)
+        if (by_material.count(name) == 1)
+          {
+            add_physical_group(2, by_material[name], name);
+            by_material.erase(name);
+          }
+    }
+  } // namespace geometry
+} // namespace fdem

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/parameters/material_parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+
+namespace fdem
+{
+  namespace parameters
+  {
+    using namespace dealii;
+
+    void
+    MaterialParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Young's modulus",
+        "0",
+        Patterns::Double(0),
+        "Young's modulus E of the material (force/length^2, "
+        "e.g. kPa with kN and m). Must be given (> 0) for every "
+        "material that a cell uses; a block whose cells all lie "
+        "in material regions (Materials) needs none of its own.");
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        Patterns::Double(0, 0.5),
+                        "Poisson's ratio of the material (dimensionless, 0 <= "
+                        "nu < 0.5). 2D models are in plane strain.");
+      prm.declare_entry("Unit weight",
+                        "0",
+                        Patterns::Double(0),
+                        "Unit weight of the material (force/length^3, e.g. "
+                        "kN/m^3); acts along Loads/Gravity direction.");
+      prm.declare_entry("Density",
+                        "0",
+                        Patterns::Double(0),
+                        "Density of the material (mass/length^3); its weight "
+                        "is density times Loads/Gravitational acceleration. "
+                        "Give either a unit weight or a density, not both.");
+      prm.declare_entry(
+        "Saturated unit weight",
+        "0",
+        Patterns::Double(0),
+        "Unit weight below the water table, Water/Piezometric "
+        "line (force/length^3, e.g. kN/m^3), evaluated at each "
+        "quadrature point; 0: the same weight as above it. It "
+        "is the total weight (soil and water): give the water "
+        "pressure on interfaces as Pore pressure = piezometric.");
+      prm.declare_entry(
+        "Friction angle",
+        "",
+        Patterns::Anything(),
+        "Friction angle phi of the soil (degrees, 0 <= phi < "
+        "90), used by interfaces with Strength = material where "
+        "they run through this material. Empty: none given.");
+      prm.declare_entry("Cohesion",
+                        "0",
+                        Patterns::Double(0),
+                        "Cohesion c of the soil (force/length^2, e.g. kPa), "
+                        "used with its Friction angle by interfaces with "
+                        "Strength = material.");
+    }
+
+    void
+    MaterialParameters::parse_parameters(ParameterHandler  &prm,
+                                         const std::string &path)
+    {
+      youngs_modulus        = prm.get_double("Young's modulus");
+      poissons_ratio        = prm.get_double("Poisson's ratio");
+      unit_weight           = prm.get_double("Unit weight");
+      density               = prm.get_double("Density");
+      saturated_unit_weight = prm.get_double("Saturated unit weight");
+      cohesion              = prm.get_double("Cohesion");
+      AssertThrow(poissons_ratio < 0.5,
+                  ExcMessage(path + "/Poisson's ratio: must be below 0.5."));
+      AssertThrow(unit_weight == 0 || density == 0,
+                  ExcMessage(path +
+                             ": give either 'Unit weight' or 'Density', not "
+                             "both."));
+      const std::string phi = Utilities::trim(prm.get("Friction angle"));
+      has_strength          = !phi.empty();
+      if (has_strength)
+        {
+          bool number = true;
+          try
+            {
+              friction_angle = Utilities::string_to_double(phi);
+            }
+          catch (...)
+            {
+              number = false;
+            }
+          AssertThrow(number && friction_angle >= 0 && friction_angle < 90,
+                      ExcMessage(path + "/Friction angle: '" + phi +
+                                 "' is not an angle in degrees from 0 to below "
+                                 "90."));
+        }
+      else
+        AssertThrow(cohesion == 0,
+                    ExcMessage(path + "/Cohesion: give the Friction angle too "
+                                      "(0 for a purely cohesive soil)."));
+    }
+
+    void
+    MaterialParameters::require_elastic_constants(const std::string &path,
+                                                  const std::string &what) const
+    {
+      AssertThrow(youngs_modulus > 0,
+                  ExcMessage(path + "/Young's modulus: " + what +
+                             "; give a Young's modulus > 0."));
+    }
+  } // namespace parameters
+} // namespace fdem
