@@ -13,7 +13,8 @@ namespace fdem
     DenseMixedSolver<dim>::DenseMixedSolver(const MixedSystem<dim> &system)
       : system(system)
     {
-      Assert(system.flexibility.m() == dim * system.n_pairs(), ExcInternalError());
+      Assert(system.flexibility.m() == dim * system.n_pairs(),
+             ExcInternalError());
     }
 
     template <int dim>
@@ -22,13 +23,13 @@ namespace fdem
     {
       const FullMatrix<double> &flexibility    = system.flexibility;
       const FullMatrix<double> &rigid_coupling = system.rigid_coupling;
-      const Vector<double> &    rigid_loads    = system.rigid_loads;
-      const Vector<double> &    external_gap   = system.external_gap;
-      const SystemScales &      scales         = system.scales;
+      const Vector<double>     &rigid_loads    = system.rigid_loads;
+      const Vector<double>     &external_gap   = system.external_gap;
+      const SystemScales       &scales         = system.scales;
       const unsigned int        n_pairs        = system.n_pairs();
       const unsigned int        n_forces       = flexibility.m();
       const unsigned int        n_rigid        = rigid_loads.size();
-      const unsigned int n        = n_forces + n_rigid;
+      const unsigned int        n              = n_forces + n_rigid;
 
       FullMatrix<double> matrix(n, n);
       Vector<double>     rhs(n);
@@ -111,7 +112,7 @@ namespace fdem
       solution.factorized           = result.factorized;
       solution.n_changed_rows       = result.n_changed_rows;
       solution.why_factorized       = result.why_factorized;
-      solution.reuse_method         = result.method != nullptr ? result.method : "";
+      solution.reuse_method = result.method != nullptr ? result.method : "";
       return solution;
     }
 
@@ -120,8 +121,9 @@ namespace fdem
     DenseMixedSolver<dim>::describe(const ContactSolution &solution)
     {
       return std::to_string(solution.n_changed_rows) + " rows changed, LU " +
-             (solution.factorized ? std::string("factorised: ") + solution.why_factorized :
-                                    std::string("reused: ") + solution.reuse_method);
+             (solution.factorized ?
+                std::string("factorised: ") + solution.why_factorized :
+                std::string("reused: ") + solution.reuse_method);
     }
 
     template class DenseMixedSolver<2>;

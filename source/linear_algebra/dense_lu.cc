@@ -9,9 +9,15 @@
 
 // Hand-declared: deal.II 9.4's lapack_templates.h has no gecon.
 extern "C" void
-dgecon_(const char *norm, const dealii::types::blas_int *n, const double *a,
-        const dealii::types::blas_int *lda, const double *anorm, double *rcond, double *work,
-        dealii::types::blas_int *iwork, dealii::types::blas_int *info);
+dgecon_(const char                    *norm,
+        const dealii::types::blas_int *n,
+        const double                  *a,
+        const dealii::types::blas_int *lda,
+        const double                  *anorm,
+        double                        *rcond,
+        double                        *work,
+        dealii::types::blas_int       *iwork,
+        dealii::types::blas_int       *info);
 
 namespace fdem
 {
@@ -40,7 +46,8 @@ namespace fdem
       , lu(std::move(column_major))
       , pivots(size)
     {
-      Assert(lu.size() == static_cast<std::size_t>(n) * n, dealii::ExcInternalError());
+      Assert(lu.size() == static_cast<std::size_t>(n) * n,
+             dealii::ExcInternalError());
       if (n == 0)
         {
           rcond = 1;
@@ -48,7 +55,8 @@ namespace fdem
         }
       // The 1-norm (largest column sum), which gecon needs of the matrix
       // before its factorisation.
-      double norm = dealii::lange("1", &n, &n, lu.data(), &n, static_cast<double *>(nullptr));
+      double norm = dealii::lange(
+        "1", &n, &n, lu.data(), &n, static_cast<double *>(nullptr));
       dealii::getrf(&n, &n, lu.data(), &n, pivots.data(), &info);
       if (info != 0 || !std::isfinite(norm))
         {
@@ -59,7 +67,15 @@ namespace fdem
       std::vector<double>                  work(4 * n);
       std::vector<dealii::types::blas_int> iwork(n);
       dealii::types::blas_int              condition_info = 0;
-      dgecon_("1", &n, lu.data(), &n, &norm, &rcond, work.data(), iwork.data(), &condition_info);
+      dgecon_("1",
+              &n,
+              lu.data(),
+              &n,
+              &norm,
+              &rcond,
+              work.data(),
+              iwork.data(),
+              &condition_info);
       if (condition_info != 0)
         rcond = 0;
     }
@@ -67,19 +83,29 @@ namespace fdem
     void
     DenseLU::solve(dealii::Vector<double> &b) const
     {
-      Assert(b.size() == static_cast<std::size_t>(n), dealii::ExcInternalError());
+      Assert(b.size() == static_cast<std::size_t>(n),
+             dealii::ExcInternalError());
       solve(b.data(), 1);
     }
 
     void
-    DenseLU::solve(double *columns, const unsigned int n_rhs, const bool transpose) const
+    DenseLU::solve(double            *columns,
+                   const unsigned int n_rhs,
+                   const bool         transpose) const
     {
       Assert(factorized(), dealii::ExcInternalError());
       if (n == 0 || n_rhs == 0)
         return;
       const dealii::types::blas_int nrhs       = n_rhs;
       dealii::types::blas_int       solve_info = 0;
-      dealii::getrs(transpose ? "T" : "N", &n, &nrhs, lu.data(), &n, pivots.data(), columns, &n,
+      dealii::getrs(transpose ? "T" : "N",
+                    &n,
+                    &nrhs,
+                    lu.data(),
+                    &n,
+                    pivots.data(),
+                    columns,
+                    &n,
                     &solve_info);
       AssertThrow(solve_info == 0, dealii::ExcInternalError());
     }

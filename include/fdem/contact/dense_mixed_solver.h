@@ -35,7 +35,8 @@ namespace fdem
       ContactSolution
       solve(const std::vector<PairRows<dim>> &rows);
 
-      /** How @p solution was solved, for the log: rows changed, LU factorised or reused. */
+      /** How @p solution was solved, for the log: rows changed, LU factorised
+       * or reused. */
       static std::string
       describe(const ContactSolution &solution);
 
