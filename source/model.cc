@@ -423,7 +423,7 @@ namespace fdem
     control.max_iterations = parameters.contact.max_status_iterations;
     control.runaway_factor = parameters.contact.runaway_factor;
     log << "  contact problem:" << std::endl;
-    const contact::ReusableLU &dense = mixed_system->dense_solver();
+    const linear_algebra::ReusableLU &dense = mixed_system->dense_solver();
     const unsigned int factorized_before = dense.n_factorizations, reused_before = dense.n_reused_solves;
     const unsigned long gmres_before = mixed_system->n_krylov_iterations;
     contact_outcome    = contact::solve_contact_problem(*mixed_system, strengths, states, control, log);

@@ -5,14 +5,14 @@
 // when a few rows change (ReusableLU, doc/theory.md): the same solution and
 // condition estimate as a fresh factorisation, and a fresh factorisation
 // when many rows change or the system is singular.
-#include <fdem/contact/reusable_lu.h>
+#include <fdem/linear_algebra/reusable_lu.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-using fdem::contact::ReusableLU;
+using fdem::linear_algebra::ReusableLU;
 using dealii::FullMatrix;
 using dealii::Vector;
 

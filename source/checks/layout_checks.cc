@@ -137,6 +137,18 @@ namespace fdem
         }
       };
 
+      std::string
+      number_text(const double x)
+      {
+        std::ostringstream text;
+        text.precision(4);
+        text << x;
+        return text.str();
+      }
+    } // namespace
+
+    namespace internal
+    {
       template <int dim>
       std::string
       point_text(const Point<dim> &x)
@@ -150,15 +162,11 @@ namespace fdem
         return text.str();
       }
 
-      std::string
-      number_text(const double x)
-      {
-        std::ostringstream text;
-        text.precision(4);
-        text << x;
-        return text.str();
-      }
-    } // namespace
+      template std::string
+      point_text(const Point<2> &);
+      template std::string
+      point_text(const Point<3> &);
+    } // namespace internal
 
     template <int dim>
     std::vector<std::string>
@@ -222,7 +230,7 @@ namespace fdem
                       ExcMessage("Blocks '" + mesh.block_names[blocks.first] + "' and '" +
                                  mesh.block_names[blocks.second] + "' of " + mesh.source +
                                  " share faces of total " + (dim == 2 ? "length " : "area ") +
-                                 number_text(stretch.measure) + " around " + point_text(where) +
+                                 number_text(stretch.measure) + " around " + internal::point_text(where) +
                                  (groups.empty() ? " in no face group" :
                                                    " in face groups not listed (" + groups + ")") +
                                  others +

@@ -18,19 +18,6 @@ namespace fdem
   {
     namespace
     {
-      template <int dim>
-      std::string
-      point_text(const Point<dim> &x)
-      {
-        std::ostringstream text;
-        text.precision(6);
-        text << "(" << x[0];
-        for (unsigned int d = 1; d < dim; ++d)
-          text << ", " << x[d];
-        text << ")";
-        return text.str();
-      }
-
       /**
        * Non-negative least squares, min |A x - b| over x >= 0 (Lawson and
        * Hanson's active set method), for the few rows of a block's free
@@ -179,7 +166,7 @@ namespace fdem
                 {
                   new_index[i].push_back(numbers::invalid_unsigned_int);
                   removed.push_back("  interface '" + interface.name + "': the pair at " +
-                                    point_text(pair.position_J) + " between '" +
+                                    internal::point_text(pair.position_J) + " between '" +
                                     blocks[interface.block_I]->name + "' and '" +
                                     blocks[interface.block_J]->name +
                                     "' is left out: its nodes are joined through pairs "

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/contact/dense_mixed_solver.h>
+#include <fdem/contact/iterative_mixed_solver.h>
 #include <fdem/contact/mixed_system.h>
 
 #include <algorithm>
@@ -151,8 +153,29 @@ namespace fdem
         external_gap[dim * p] += pairs[p]->initial_gap;
 
       set_diagonal_scales();
-      if (solver_type == MixedSystemSolver::iterative)
-        setup_preconditioner();
+      if (solver_type == MixedSystemSolver::dense)
+        dense = std::make_unique<DenseMixedSolver<dim>>(*this);
+      else
+        iterative = std::make_unique<IterativeMixedSolver<dim>>(*this);
+    }
+
+    template <int dim>
+    MixedSystem<dim>::~MixedSystem() = default;
+
+    template <int dim>
+    const linear_algebra::ReusableLU &
+    MixedSystem<dim>::dense_solver() const
+    {
+      static const linear_algebra::ReusableLU unused;
+      return dense ? dense->lu : unused;
+    }
+
+    template <int dim>
+    const IterativeMixedSolver<dim> &
+    MixedSystem<dim>::iterative_solver() const
+    {
+      AssertThrow(iterative, ExcMessage("This mixed system uses the dense solver."));
+      return *iterative;
     }
 
     template <int dim>
@@ -219,68 +242,50 @@ namespace fdem
       external_gap.add(change, moving_external_gap);
       moving_compliance_scale = scale;
       set_diagonal_scales();
-      lu.clear(); // the factors are of the old C
-    }
-
-    template <int dim>
-    void
-    MixedSystem<dim>::vmult_flexibility(Vector<double> &dst, const Vector<double> &src) const
-    {
-      if (solver_type == MixedSystemSolver::dense)
-        flexibility.vmult(dst, src);
-      else
-        dst = flexibility_products({src})[0];
+      dense->lu.clear(); // the factors are of the old C
     }
 
     template <int dim>
     std::vector<Vector<double>>
-    MixedSystem<dim>::flexibility_products(const std::vector<Vector<double>> &sources) const
+    MixedSystem<dim>::flexibility_products(const std::vector<Vector<double>> &sources)
     {
       // C f = sum_b s_k T_k K_b^{-1} (sum_l s_l T_l^T f_l): the load of the
       // pair forces on each block, one solve, its displacements at the pairs.
-      // At most 64 sources at a time: the loads and displacements are
-      // vectors of the blocks' size.
       std::vector<Vector<double>> products(sources.size(), Vector<double>(external_gap.size()));
-      const unsigned int          batch = 64;
-      for (unsigned int first = 0; first < sources.size(); first += batch)
-        for (const BlockTouch &touch : touches)
-          {
-            const unsigned int n_columns =
-              std::min<unsigned int>(batch, sources.size() - first);
-            const blocks::ElasticBlock<dim> &block = *blocks[touch.block];
-            std::vector<Vector<double>> loads(n_columns, Vector<double>(block.dof_handler.n_dofs()));
-            for (unsigned int c = 0; c < n_columns; ++c)
-              for (unsigned int k = 0; k < touch.pairs.size(); ++k)
-                {
-                  const unsigned int p = touch.pairs[k];
-                  Tensor<1, dim>     f;
-                  for (unsigned int i = 0; i < dim; ++i)
-                    f[i] = sources[first + c][dim * p + i];
-                  const Tensor<1, dim> global =
-                    touch.signs[k] * (transpose(pairs[p]->frame) * f);
-                  for (unsigned int i = 0; i < dim; ++i)
-                    loads[c][touch.dofs[dim * k + i]] += global[i];
-                }
-            const std::vector<Vector<double>> u = block.solve(loads);
-            for (unsigned int c = 0; c < n_columns; ++c)
-              for (unsigned int k = 0; k < touch.pairs.size(); ++k)
-                {
-                  const unsigned int p = touch.pairs[k];
-                  Tensor<1, dim>     u_k;
-                  for (unsigned int i = 0; i < dim; ++i)
-                    u_k[i] = u[c][touch.dofs[dim * k + i]];
-                  const Tensor<1, dim> local = touch.signs[k] * (pairs[p]->frame * u_k);
-                  for (unsigned int i = 0; i < dim; ++i)
-                    products[first + c][dim * p + i] += local[i];
-                }
-          }
+      for (const BlockTouch &touch : touches)
+        blocks[touch.block]->solve_blocked(
+          sources.size(),
+          [&](const unsigned int c, Vector<double> &load) {
+            for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+              {
+                const unsigned int p = touch.pairs[k];
+                Tensor<1, dim>     f;
+                for (unsigned int i = 0; i < dim; ++i)
+                  f[i] = sources[c][dim * p + i];
+                const Tensor<1, dim> global = touch.signs[k] * (transpose(pairs[p]->frame) * f);
+                for (unsigned int i = 0; i < dim; ++i)
+                  load[touch.dofs[dim * k + i]] += global[i];
+              }
+          },
+          [&](const unsigned int c, const Vector<double> &u) {
+            for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+              {
+                const unsigned int p = touch.pairs[k];
+                Tensor<1, dim>     u_k;
+                for (unsigned int i = 0; i < dim; ++i)
+                  u_k[i] = u[touch.dofs[dim * k + i]];
+                const Tensor<1, dim> local = touch.signs[k] * (pairs[p]->frame * u_k);
+                for (unsigned int i = 0; i < dim; ++i)
+                  products[c][dim * p + i] += local[i];
+              }
+          });
       n_flexibility_products += sources.size();
       return products;
     }
 
     template <int dim>
     ContactSolution
-    MixedSystem<dim>::solve_all_stick() const
+    MixedSystem<dim>::solve_all_stick()
     {
       return solve(std::vector<PairState<dim>>(pairs.size()),
                    std::vector<PairStrength>(pairs.size()));
@@ -289,7 +294,7 @@ namespace fdem
     template <int dim>
     ContactSolution
     MixedSystem<dim>::solve(const std::vector<PairState<dim>> &states,
-                            const std::vector<PairStrength> &  strengths) const
+                            const std::vector<PairStrength> &  strengths)
     {
       Assert(states.size() == pairs.size(), ExcInternalError());
       Assert(strengths.size() == pairs.size(), ExcInternalError());
@@ -305,125 +310,50 @@ namespace fdem
       ContactSolution solution;
       if (!test.holds)
         {
-          unsolved(solution);
-          solution.failure              = SolveFailure::mechanism;
+          solution                      = unsolved(SolveFailure::mechanism);
           solution.reciprocal_condition = 0;
           solution.factorized           = false;
         }
+      else if (dense)
+        solution = dense->solve(rows);
       else
-        solution =
-          solver_type == MixedSystemSolver::dense ? solve_dense(rows) : solve_iterative(rows);
+        {
+          solution = iterative->solve(rows);
+          n_krylov_iterations += solution.n_krylov_iterations;
+        }
       solution.rigid_modes = test;
       return solution;
     }
 
     template <int dim>
-    ContactSolution
-    MixedSystem<dim>::solve_dense(const std::vector<PairRows<dim>> &rows) const
+    std::string
+    MixedSystem<dim>::describe_solve(const ContactSolution &solution) const
     {
-      const unsigned int n_forces = flexibility.m();
-      const unsigned int n_rigid  = rigid_loads.size();
-      const unsigned int n        = n_forces + n_rigid;
-
-      FullMatrix<double> matrix(n, n);
-      Vector<double>     rhs(n);
-      for (unsigned int p = 0; p < pairs.size(); ++p)
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            const unsigned int row = dim * p + i;
-            rhs[row]               = rows[p].value[i];
-            // sum_k gap[i][k] (C f - W gamma - g_bar)_k
-            for (unsigned int k = 0; k < dim; ++k)
-              {
-                const double a = rows[p].gap[i][k];
-                if (a == 0)
-                  continue;
-                const unsigned int source = dim * p + k;
-                for (unsigned int j = 0; j < n_forces; ++j)
-                  matrix(row, j) += a * flexibility(source, j);
-                for (unsigned int j = 0; j < n_rigid; ++j)
-                  matrix(row, n_forces + j) -= a * rigid_coupling(source, j);
-                rhs[row] += a * external_gap[source];
-              }
-            for (unsigned int k = 0; k < dim; ++k)
-              matrix(row, dim * p + k) += rows[p].force[i][k];
-          }
-      // Equilibrium of the free modes: -W^T f = -omega^T F.
-      for (unsigned int r = 0; r < n_rigid; ++r)
-        {
-          for (unsigned int j = 0; j < n_forces; ++j)
-            matrix(n_forces + r, j) = -rigid_coupling(j, r);
-          rhs[n_forces + r] = -rigid_loads[r];
-        }
-
-      // The dimensionless system D_r A D_c (D_c x~) = D_r b: unknowns f / F_0
-      // and gamma_m w_m / u_0, pair rows over their magnitudes, rigid rows
-      // over w_m F_0 (doc/theory.md, "Scale-free decisions"). Its entries
-      // are the same in any units and for any common E, so that what the
-      // factorisation decides (pivots, reuse, refinement) is too.
-      // ReusableLU equilibrates it further and reuses the factors of an
-      // earlier system while few rows have changed.
-      std::vector<double> row_scale(n), column_scale(n);
-      for (unsigned int p = 0; p < pairs.size(); ++p)
-        {
-          const Tensor<1, dim> rho = row_magnitudes(rows[p], scales);
-          for (unsigned int i = 0; i < dim; ++i)
-            {
-              row_scale[dim * p + i]    = 1.0 / rho[i];
-              column_scale[dim * p + i] = scales.force;
-            }
-        }
-      for (unsigned int r = 0; r < n_rigid; ++r)
-        {
-          row_scale[n_forces + r]    = 1.0 / (scales.rigid[r] * scales.force);
-          column_scale[n_forces + r] = scales.displacement / scales.rigid[r];
-        }
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          rhs[i] *= row_scale[i];
-          for (unsigned int j = 0; j < n; ++j)
-            matrix(i, j) *= row_scale[i] * column_scale[j];
-        }
-      const ReusableLU::Result result = lu.solve(matrix, rhs);
-      for (unsigned int i = 0; i < n; ++i)
-        rhs[i] *= column_scale[i];
-
-      ContactSolution solution;
-      solution.reciprocal_condition   = result.reciprocal_condition;
-      solution.factorized             = result.factorized;
-      solution.n_changed_rows         = result.n_changed_rows;
-      solution.why_factorized         = result.why_factorized;
-      solution.reuse_method           = result.method != nullptr ? result.method : "";
-      // The rigid modes can be held (solve()): a system ReusableLU could
-      // not solve to its backward error is a numerical breakdown.
-      solution.solved = result.solved;
-      if (solution.solved)
-        finish_solution(rhs, solution);
-      else
-        {
-          unsolved(solution);
-          solution.failure = SolveFailure::numerical;
-        }
-      return solution;
+      return dense ? DenseMixedSolver<dim>::describe(solution) :
+                     IterativeMixedSolver<dim>::describe(solution);
     }
 
     template <int dim>
-    void
-    MixedSystem<dim>::unsolved(ContactSolution &solution) const
+    ContactSolution
+    MixedSystem<dim>::unsolved(const SolveFailure failure) const
     {
-      solution.solved = false;
+      ContactSolution solution;
+      solution.solved  = false;
+      solution.failure = failure;
       solution.forces.reinit(external_gap.size());
       solution.rigid_motions.reinit(rigid_loads.size());
       solution.elastic_displacements.reinit(external_gap.size());
       solution.relative_displacements = external_gap;
+      return solution;
     }
 
     template <int dim>
-    void
-    MixedSystem<dim>::finish_solution(const Vector<double> &x, ContactSolution &solution) const
+    ContactSolution
+    MixedSystem<dim>::solution_from(const Vector<double> &x, Vector<double> elastic) const
     {
       const unsigned int n_forces = external_gap.size();
       const unsigned int n_rigid  = rigid_loads.size();
+      ContactSolution    solution;
       solution.forces.reinit(n_forces);
       solution.rigid_motions.reinit(n_rigid);
       for (unsigned int i = 0; i < n_forces; ++i)
@@ -431,13 +361,13 @@ namespace fdem
       for (unsigned int i = 0; i < n_rigid; ++i)
         solution.rigid_motions[i] = x[n_forces + i];
 
-      solution.elastic_displacements.reinit(n_forces);
-      vmult_flexibility(solution.elastic_displacements, solution.forces);
+      solution.elastic_displacements  = std::move(elastic);
       solution.relative_displacements = external_gap;
       solution.relative_displacements -= solution.elastic_displacements;
       Vector<double> product(n_forces);
       rigid_coupling.vmult(product, solution.rigid_motions);
       solution.relative_displacements += product;
+      return solution;
     }
 
     template <int dim>

@@ -7,7 +7,7 @@
 // solver's verdict on a nearly singular but solvable system; and what
 // ContactOutcome::is_mechanism() says. The runs in other units are
 // tests/invariance/*.prm (run_checks.py invariance).
-#include <fdem/contact/reusable_lu.h>
+#include <fdem/linear_algebra/reusable_lu.h>
 #include <fdem/contact/scaling.h>
 #include <fdem/contact/status_iteration.h>
 
@@ -193,7 +193,7 @@ TEST(ScaleFree, IllConditionedIsRefinedNotFailed)
     x_exact[i] = uniform(random);
   A.vmult(b, x_exact);
 
-  contact::ReusableLU      lu;
+  linear_algebra::ReusableLU lu;
   Vector<double>           x      = b;
   const auto               result = lu.solve(A, x);
   EXPECT_LT(result.reciprocal_condition, 1e-14);
@@ -203,7 +203,7 @@ TEST(ScaleFree, IllConditionedIsRefinedNotFailed)
   FullMatrix<double> singular = A;
   for (unsigned int j = 0; j < n; ++j)
     singular(1, j) = singular(0, j);
-  contact::ReusableLU fresh;
+  linear_algebra::ReusableLU fresh;
   Vector<double>      y = b;
   EXPECT_FALSE(fresh.solve(singular, y).solved);
 }

@@ -96,6 +96,11 @@ namespace fdem
 
     namespace internal
     {
+      /** A point as "(x, y)" or "(x, y, z)", six digits: how the checks' messages name a place. */
+      template <int dim>
+      std::string
+      point_text(const Point<dim> &x);
+
       /**
        * The parts of check_interfaces() that need only the pairs and the
        * blocks (source/checks/support_checks.cc): the minimum number of

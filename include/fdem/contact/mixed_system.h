@@ -6,13 +6,14 @@
 #include <fdem/contact/contact_law.h>
 #include <fdem/contact/interface_pairs.h>
 #include <fdem/contact/pair_rows.h>
-#include <fdem/contact/reusable_lu.h>
 #include <fdem/contact/scaling.h>
+#include <fdem/linear_algebra/reusable_lu.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace fdem
@@ -103,6 +104,11 @@ namespace fdem
       unsigned int max_iterations = 2000;
     };
 
+    template <int dim>
+    class DenseMixedSolver;
+    template <int dim>
+    class IterativeMixedSolver;
+
     /**
      * The mixed system of the paper's eq. (9) in the form of
      * design/formulation.md Sec. 2-3:
@@ -115,7 +121,9 @@ namespace fdem
      * loads alone plus the initial gaps, W the relative motion of the pairs
      * under the free rigid modes, and omega^T F the external load on those
      * modes (eqs. 7-8). All of it is computed once: the FE part is linear.
-     * The rows of each pair then follow its status.
+     * The rows of each pair then follow its status (pair_rows()); solve()
+     * hands them to one of two solvers over the same rows: DenseMixedSolver
+     * (C formed, LU) or IterativeMixedSolver (C through the blocks, GMRES).
      */
     template <int dim>
     class MixedSystem
@@ -132,6 +140,13 @@ namespace fdem
         const std::vector<Interface<dim>> &interfaces,
         const MixedSystemSolver            solver = MixedSystemSolver::dense,
         const bool                         keep_moving_part = false);
+
+      /** The solvers keep a reference to the system: it stays where it is. */
+      MixedSystem(const MixedSystem &) = delete;
+      MixedSystem &
+      operator=(const MixedSystem &) = delete;
+
+      ~MixedSystem();
 
       /**
        * Scales the compliance of the moving blocks (those with free rigid
@@ -156,14 +171,21 @@ namespace fdem
        * (design/formulation.md Sec. 3): stick g = 0; slip g_n = 0 and the
        * tangential force at the Mohr-Coulomb limit along the slip direction;
        * open f = 0; at the tension cut-off f_n = sigma_t A instead of g_n = 0.
+       * Whether the free modes can be held is tested first (RigidModeTest);
+       * then the solver solves, keeping what saves work in the next solve
+       * (the dense solver's factors, the iterative solver's last solution).
        */
       ContactSolution
       solve(const std::vector<PairState<dim>> &states,
-            const std::vector<PairStrength> &  strengths) const;
+            const std::vector<PairStrength> &  strengths);
 
       /** Solves with every pair in stick. */
       ContactSolution
-      solve_all_stick() const;
+      solve_all_stick();
+
+      /** How @p solution was solved, for the log (the solver's words). */
+      std::string
+      describe_solve(const ContactSolution &solution) const;
 
       /**
        * Nodal forces on block @p b: its external loads plus the contact
@@ -191,11 +213,24 @@ namespace fdem
       }
 
       /**
-       * dst = C src, with the dense C or, for the iterative solver, through
-       * one solve of each block that a pair touches.
+       * C times each of @p sources through the block factorisations: the
+       * load of the pair forces on each block, one blocked solve, its
+       * displacements at the pairs. Counted in n_flexibility_products.
        */
-      void
-      vmult_flexibility(Vector<double> &dst, const Vector<double> &src) const;
+      std::vector<Vector<double>>
+      flexibility_products(const std::vector<Vector<double>> &sources);
+
+      /**
+       * The solution from x = [f; gamma] and the elastic relative
+       * displacements @p elastic = C f that the solver computed: g = g_bar -
+       * C f + W gamma.
+       */
+      ContactSolution
+      solution_from(const Vector<double> &x, Vector<double> elastic) const;
+
+      /** Zero forces and motions, marked as not solved for @p failure. */
+      ContactSolution
+      unsolved(const SolveFailure failure) const;
 
       /** The solver of the system. */
       MixedSystemSolver
@@ -222,22 +257,26 @@ namespace fdem
       double rigid_mode_tolerance = 1e-10;
 
       /** Products C f computed so far (the iterative solver's block solves). */
-      mutable unsigned long n_flexibility_products = 0;
+      unsigned long n_flexibility_products = 0;
       /** GMRES iterations so far. */
-      mutable unsigned long n_krylov_iterations = 0;
+      unsigned long n_krylov_iterations = 0;
 
-      /** The dense solver: its counts of factorisations and reused solves. */
-      const ReusableLU &
-      dense_solver() const
-      {
-        return lu;
-      }
+      /**
+       * The dense solver's LU: its counts of factorisations and reused
+       * solves (an unused one, with zero counts, for the iterative solver).
+       */
+      const linear_algebra::ReusableLU &
+      dense_solver() const;
 
-      /** When the dense solver factorises afresh (tests compare with reuse = false). */
-      ReusableLU::Control &
-      dense_solver_control()
+      /** The iterative solver (its preconditioner's parts); the system must use it. */
+      const IterativeMixedSolver<dim> &
+      iterative_solver() const;
+
+      /** The mean of the diagonal of C: the scale of the rigid unknowns in GMRES. */
+      double
+      mean_self_flexibility() const
       {
-        return lu.control;
+        return mean_flexibility;
       }
 
       /** Number of pairs over all interfaces. */
@@ -264,15 +303,6 @@ namespace fdem
       FullMatrix<double> flexibility;
       /** The pairs' own dim x dim blocks of C (both solvers). */
       std::vector<Tensor<2, dim>> self_flexibility;
-      /**
-       * The pairs' blocks of P C P, P the orthogonal projector onto the
-       * forces that the free modes do not feel (ker W^T): the pairs' own
-       * flexibility without the part that the minimal supports of free
-       * blocks add to every entry of C, a rigid motion that the rigid
-       * unknowns take up. The iterative solver's preconditioner uses them
-       * (empty for the dense solver).
-       */
-      std::vector<Tensor<2, dim>> projected_self_flexibility;
       /** Relative displacement under the external loads, plus gaps. */
       Vector<double> external_gap;
       /** d g / d gamma: relative motion of the pairs under each free mode. */
@@ -317,61 +347,9 @@ namespace fdem
       void
       set_diagonal_scales();
 
-      /** The iterative solver's last solution: the start of the next solve. */
-      mutable Vector<double> last_iterate;
-
-      /** C times each of @p sources, through the block factorisations. */
-      std::vector<Vector<double>>
-      flexibility_products(const std::vector<Vector<double>> &sources) const;
-
-      /**
-       * W (W^T W)^{-1} (n_forces x n_rigid): z - B W^T z is the part of z in
-       * ker W^T (empty without free modes).
-       */
-      FullMatrix<double> projector_coefficients;
-
-      /**
-       * The iterative solver's coarse space: the pairs in groups of
-       * neighbours, Z with one column per group and local direction (1 on
-       * the group's pairs in that direction, projected onto ker W^T), and
-       * C Z.
-       */
-      std::vector<unsigned int> pair_group;
-      unsigned int              n_groups = 0;
-      FullMatrix<double>        coarse_basis, coarse_flexibility;
-
-      /** Groups the pairs and computes Z and C Z. */
-      void
-      setup_coarse_space();
-
-      /**
-       * Computes projected_self_flexibility and the coarse space (the
-       * iterative solver).
-       */
-      void
-      setup_preconditioner();
-
-      /** The system with the rows @p rows by the dense LU. */
-      ContactSolution
-      solve_dense(const std::vector<PairRows<dim>> &rows) const;
-
-      /** The system with the rows @p rows by GMRES (the iterative solver). */
-      ContactSolution
-      solve_iterative(const std::vector<PairRows<dim>> &rows) const;
-
-      /** g, C f and the unknowns into @p solution from x = [f; gamma]. */
-      void
-      finish_solution(const Vector<double> &x, ContactSolution &solution) const;
-
-      /** Zero forces and motions into @p solution, marked as not solved. */
-      void
-      unsolved(ContactSolution &solution) const;
-      /**
-       * The factors of the last factorised system, reused while few rows
-       * change between solves. Mutable: solve() leaves the system as it is,
-       * the factors only save work (one solve at a time, no threads).
-       */
-      mutable ReusableLU lu;
+      /** The solver: one of the two. */
+      std::unique_ptr<DenseMixedSolver<dim>>     dense;
+      std::unique_ptr<IterativeMixedSolver<dim>> iterative;
     };
   } // namespace contact
 } // namespace fdem

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <deal.II/lac/lapack_support.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -9,13 +10,20 @@
 
 namespace fdem
 {
-  namespace contact
+  /** Dense linear algebra that is not specific to the method. */
+  namespace linear_algebra
   {
     /**
      * Dense LU factorisation with partial pivoting (LAPACK getrf) of a
      * square matrix, with an estimate of its reciprocal condition number in
      * the 1-norm (LAPACK gecon). The mixed system is small and dense, and
      * whether it is singular (no static equilibrium) is part of the answer.
+     *
+     * Not LAPACKFullMatrix: in deal.II 9.4 its compute_lu_factorization()
+     * throws on a zero pivot (here a verdict, not an error), its condition
+     * estimate needs a Cholesky factor, and it solves only its own types
+     * (ReusableLU solves raw columns). The LAPACK calls are deal.II's
+     * (lapack_templates.h), but for gecon, which that header lacks.
      */
     class DenseLU
     {
@@ -59,11 +67,11 @@ namespace fdem
       }
 
     private:
-      int                 n;
-      std::vector<double> lu;
-      std::vector<int>    pivots;
-      int                 info  = 0;
-      double              rcond = 0;
+      dealii::types::blas_int              n;
+      std::vector<double>                  lu;
+      std::vector<dealii::types::blas_int> pivots;
+      dealii::types::blas_int              info  = 0;
+      double                               rcond = 0;
     };
-  } // namespace contact
+  } // namespace linear_algebra
 } // namespace fdem

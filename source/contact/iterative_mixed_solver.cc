@@ -13,8 +13,8 @@
 // on the rigid modes (MixedSystem::solve, RigidModeTest). A coarse
 // correction on groups of neighbouring pairs takes care of the smooth force
 // patterns, which the pairs' blocks precondition worst.
-#include <fdem/contact/dense_lu.h>
-#include <fdem/contact/mixed_system.h>
+#include <fdem/contact/iterative_mixed_solver.h>
+#include <fdem/linear_algebra/dense_lu.h>
 
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -43,13 +43,32 @@ namespace fdem
     } // namespace
 
     template <int dim>
-    ContactSolution
-    MixedSystem<dim>::solve_iterative(const std::vector<PairRows<dim>> &rows) const
+    IterativeMixedSolver<dim>::IterativeMixedSolver(MixedSystem<dim> &system)
+      : system(system)
     {
-      const unsigned int n_forces = external_gap.size();
-      const unsigned int n_rigid  = rigid_loads.size();
-      const unsigned int n        = n_forces + n_rigid;
-      const unsigned int n_pairs  = pairs.size();
+      setup_preconditioner();
+    }
+
+    template <int dim>
+    std::string
+    IterativeMixedSolver<dim>::describe(const ContactSolution &solution)
+    {
+      return std::to_string(solution.n_krylov_iterations) + " GMRES iterations";
+    }
+
+    template <int dim>
+    ContactSolution
+    IterativeMixedSolver<dim>::solve(const std::vector<PairRows<dim>> &rows)
+    {
+      const Vector<double> &    external_gap     = system.external_gap;
+      const Vector<double> &    rigid_loads      = system.rigid_loads;
+      const FullMatrix<double> &rigid_coupling   = system.rigid_coupling;
+      const SystemScales &      scales           = system.scales;
+      const double              mean_flexibility = system.mean_self_flexibility();
+      const unsigned int        n_forces         = external_gap.size();
+      const unsigned int        n_rigid          = rigid_loads.size();
+      const unsigned int        n                = n_forces + n_rigid;
+      const unsigned int        n_pairs          = system.n_pairs();
       // gamma_r = rigid_scale[r] x_r: x_r = gamma_r w_r / c_0 is a force.
       std::vector<double> rigid_scale(n_rigid);
       for (unsigned int r = 0; r < n_rigid; ++r)
@@ -71,13 +90,13 @@ namespace fdem
       for (unsigned int r = 0; r < n_rigid; ++r)
         rhs[n_forces + r] = -rigid_loads[r];
 
-      const FunctionOperator system{[&](Vector<double> &y, const Vector<double> &x) {
+      const FunctionOperator mixed_operator{[&](Vector<double> &y, const Vector<double> &x) {
         Vector<double> f(n_forces), gamma(n_rigid), d(n_forces), w(n_forces);
         for (unsigned int i = 0; i < n_forces; ++i)
           f[i] = x[i];
         for (unsigned int r = 0; r < n_rigid; ++r)
           gamma[r] = rigid_scale[r] * x[n_forces + r];
-        vmult_flexibility(d, f);
+        d = system.flexibility_products({f})[0];
         rigid_coupling.vmult(w, gamma);
         d -= w;
         y.reinit(n);
@@ -125,7 +144,7 @@ namespace fdem
               for (unsigned int k = 0; k < dim; ++k)
                 H(dim * p + i, r) += MG[i][k] * rigid_scale[r] * rigid_coupling(dim * p + k, r);
         }
-      std::unique_ptr<DenseLU> rigid_lu;
+      std::unique_ptr<linear_algebra::DenseLU> rigid_lu;
       solution.reciprocal_condition = 1;
       if (n_rigid > 0)
         {
@@ -134,14 +153,16 @@ namespace fdem
           for (unsigned int r = 0; r < n_rigid; ++r)
             for (unsigned int c = 0; c < n_rigid; ++c)
               S(r, c) /= scales.rigid[r];
-          rigid_lu = std::make_unique<DenseLU>(S);
+          rigid_lu = std::make_unique<linear_algebra::DenseLU>(S);
           solution.reciprocal_condition = rigid_lu->reciprocal_condition_number();
           // The rigid modes can be held (RigidModeTest): a preconditioner
           // whose rigid part has no inverse is a numerical breakdown.
           if (!rigid_lu->factorized())
             {
-              unsolved(solution);
-              solution.failure = SolveFailure::numerical;
+              const double condition        = solution.reciprocal_condition;
+              solution                      = system.unsolved(SolveFailure::numerical);
+              solution.factorized           = false;
+              solution.reciprocal_condition = condition;
               return solution;
             }
         }
@@ -201,7 +222,7 @@ namespace fdem
           }
       FullMatrix<double> E(n_coarse, n_coarse);
       RZ.Tmmult(E, AZ);
-      const DenseLU coarse_lu(E);
+      const linear_algebra::DenseLU coarse_lu(E);
       // A coarse problem without a digit left (no such state is known) is
       // left out: the pairs' preconditioner alone is still a preconditioner.
       const bool coarse = n_coarse > 0 && coarse_lu.reciprocal_condition_number() > 1e-14;
@@ -229,48 +250,51 @@ namespace fdem
 
       // Start from the last solution: between status iterations only the
       // pairs that changed move it.
+      unsigned int   n_iterations = 0;
       Vector<double> x(n);
       if (last_iterate.size() == n)
         x = last_iterate;
       Vector<double> preconditioned_rhs(n);
       preconditioner.vmult(preconditioned_rhs, rhs);
-      const double target = krylov_control.tolerance * preconditioned_rhs.l2_norm();
+      const double target = system.krylov_control.tolerance * preconditioned_rhs.l2_norm();
       if (target == 0)
         x = 0;
       else
         {
-          SolverControl control(krylov_control.max_iterations, target, false, false);
+          SolverControl control(system.krylov_control.max_iterations, target, false, false);
           // Up to 400 Krylov vectors: a restart costs more iterations than
           // the vectors cost memory (n x 400 numbers).
           typename SolverGMRES<Vector<double>>::AdditionalData data(std::min(n, 400u));
           SolverGMRES<Vector<double>> gmres(control, data);
           try
             {
-              gmres.solve(system, x, rhs, preconditioner);
+              gmres.solve(mixed_operator, x, rhs, preconditioner);
             }
           catch (const SolverControl::NoConvergence &)
             {
-              solution.n_krylov_iterations = control.last_step();
-              n_krylov_iterations += control.last_step();
+              solution                     = system.unsolved(SolveFailure::numerical);
+              solution.factorized          = false;
               solution.reciprocal_condition = 0;
-              unsolved(solution);
-              solution.failure = SolveFailure::numerical;
+              solution.n_krylov_iterations = control.last_step();
               return solution;
             }
-          solution.n_krylov_iterations = control.last_step();
-          n_krylov_iterations += control.last_step();
+          n_iterations = control.last_step();
         }
       last_iterate = x;
       for (unsigned int r = 0; r < n_rigid; ++r)
         x[n_forces + r] *= rigid_scale[r];
-      solution.solved = true;
-      finish_solution(x, solution);
+      Vector<double> forces(n_forces);
+      for (unsigned int i = 0; i < n_forces; ++i)
+        forces[i] = x[i];
+      const double condition          = solution.reciprocal_condition;
+      solution                        = system.solution_from(x, system.flexibility_products({forces})[0]);
+      solution.factorized             = false;
+      solution.reciprocal_condition   = condition;
+      solution.n_krylov_iterations    = n_iterations;
       return solution;
     }
 
-    template ContactSolution
-    MixedSystem<2>::solve_iterative(const std::vector<PairRows<2>> &) const;
-    template ContactSolution
-    MixedSystem<3>::solve_iterative(const std::vector<PairRows<3>> &) const;
+    template class IterativeMixedSolver<2>;
+    template class IterativeMixedSolver<3>;
   } // namespace contact
 } // namespace fdem

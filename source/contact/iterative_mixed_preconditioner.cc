@@ -2,14 +2,14 @@
 // Copyright (C) 2026 the fdem-slope authors
 //
 // The setup of the iterative solver's preconditioner (see
-// mixed_system_iterative.cc for the solver): the pairs' own blocks of P C P
+// iterative_mixed_solver.cc for the solver): the pairs' own blocks of P C P
 // (P onto ker W^T), each pair's M_p = G_p D_p + F_p factorised per solve,
 // the rigid unknowns' small system S, and a coarse space on groups of
 // neighbouring pairs for the smooth force patterns, which the pairs' blocks
 // precondition worst. All of it is done once per model, in the flexibility
 // phase.
-#include <fdem/contact/dense_lu.h>
-#include <fdem/contact/mixed_system.h>
+#include <fdem/contact/iterative_mixed_solver.h>
+#include <fdem/linear_algebra/dense_lu.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
@@ -23,36 +23,38 @@ namespace fdem
   {
     template <int dim>
     void
-    MixedSystem<dim>::setup_preconditioner()
+    IterativeMixedSolver<dim>::setup_preconditioner()
     {
-      const unsigned int n_pairs  = pairs.size();
-      const unsigned int n_forces = dim * n_pairs;
-      const unsigned int n_rigid  = rigid_loads.size();
+      const FullMatrix<double> &rigid_coupling = system.rigid_coupling;
+      const SystemScales &      scales         = system.scales;
+      const unsigned int        n_pairs        = system.n_pairs();
+      const unsigned int        n_forces       = dim * n_pairs;
+      const unsigned int        n_rigid        = system.n_rigid_unknowns();
 
       // P C P = C - Pi C - C Pi + Pi C Pi with Pi = W (W^T W)^{-1} W^T, from
       // C W (one product per free mode). On a free block the diagonal of C
       // is several times that of P C P (6.6 times on the block on a plane
       // of prm/, 77 pairs), and its block-Jacobi preconditioner is the
       // worse for it (condition 108 against 25 on ker W^T, computed).
-      projected_self_flexibility = self_flexibility;
+      projected_self_flexibility = system.self_flexibility;
       if (n_rigid > 0)
         {
           FullMatrix<double> WW(n_rigid, n_rigid);
           rigid_coupling.Tmmult(WW, rigid_coupling);
-          const DenseLU WW_lu(WW);
+          const linear_algebra::DenseLU WW_lu(WW);
           // Whether W has full rank is judged on its columns over their
           // largest entries (translations and rotations differ in units).
           FullMatrix<double> WW_scaled(n_rigid, n_rigid);
           for (unsigned int r = 0; r < n_rigid; ++r)
             for (unsigned int c = 0; c < n_rigid; ++c)
               WW_scaled(r, c) = WW(r, c) / (scales.rigid[r] * scales.rigid[c]);
-          if (DenseLU(WW_scaled).reciprocal_condition_number() > 1e-12)
+          if (linear_algebra::DenseLU(WW_scaled).reciprocal_condition_number() > 1e-12)
             {
               std::vector<Vector<double>> W(n_rigid, Vector<double>(n_forces));
               for (unsigned int r = 0; r < n_rigid; ++r)
                 for (unsigned int j = 0; j < n_forces; ++j)
                   W[r][j] = rigid_coupling(j, r);
-              const std::vector<Vector<double>> CW = flexibility_products(W);
+              const std::vector<Vector<double>> CW = system.flexibility_products(W);
               // B = W (W^T W)^{-1} (n_forces x n_rigid), X = W^T C W.
               FullMatrix<double> B(n_forces, n_rigid), X(n_rigid, n_rigid);
               for (unsigned int j = 0; j < n_forces; ++j)
@@ -89,11 +91,11 @@ namespace fdem
 
     template <int dim>
     void
-    MixedSystem<dim>::setup_coarse_space()
+    IterativeMixedSolver<dim>::setup_coarse_space()
     {
-      const unsigned int n_pairs  = pairs.size();
+      const unsigned int n_pairs  = system.n_pairs();
       const unsigned int n_forces = dim * n_pairs;
-      const unsigned int n_rigid  = rigid_loads.size();
+      const unsigned int n_rigid  = system.n_rigid_unknowns();
       pair_group.assign(n_pairs, 0);
       n_groups = 0;
       if (n_pairs == 0)
@@ -120,12 +122,12 @@ namespace fdem
               return;
             }
           // Halve along the longest extent of the group's positions.
-          Point<dim> low = pairs[order[begin]]->position_I, high = low;
+          Point<dim> low = system.pair(order[begin]).position_I, high = low;
           for (unsigned int k = begin; k < end; ++k)
             for (unsigned int d = 0; d < dim; ++d)
               {
-                low[d]  = std::min(low[d], pairs[order[k]]->position_I[d]);
-                high[d] = std::max(high[d], pairs[order[k]]->position_I[d]);
+                low[d]  = std::min(low[d], system.pair(order[k]).position_I[d]);
+                high[d] = std::max(high[d], system.pair(order[k]).position_I[d]);
               }
           unsigned int axis = 0;
           for (unsigned int d = 1; d < dim; ++d)
@@ -136,7 +138,7 @@ namespace fdem
                            order.begin() + middle,
                            order.begin() + end,
                            [&](const unsigned int a, const unsigned int b) {
-                             return pairs[a]->position_I[axis] < pairs[b]->position_I[axis];
+                             return system.pair(a).position_I[axis] < system.pair(b).position_I[axis];
                            });
           bisect(begin, middle);
           bisect(middle, end);
@@ -156,7 +158,7 @@ namespace fdem
         for (Vector<double> &z : indicators)
           {
             Vector<double> resultant(n_rigid);
-            rigid_coupling.Tvmult(resultant, z);
+            system.rigid_coupling.Tvmult(resultant, z);
             Vector<double> correction(n_forces);
             projector_coefficients.vmult(correction, resultant);
             z -= correction;
@@ -180,7 +182,7 @@ namespace fdem
       for (unsigned int c = 0; c < n_coarse; ++c)
         for (unsigned int a = 0; a < n_indicators; ++a)
           Z[c].add(eigenvectors(a, c) / std::sqrt(eigenvalues[c]), indicators[a]);
-      const std::vector<Vector<double>> CZ = flexibility_products(Z);
+      const std::vector<Vector<double>> CZ = system.flexibility_products(Z);
       coarse_basis.reinit(n_forces, n_coarse);
       coarse_flexibility.reinit(n_forces, n_coarse);
       for (unsigned int c = 0; c < n_coarse; ++c)
@@ -192,12 +194,12 @@ namespace fdem
     }
 
     template void
-    MixedSystem<2>::setup_coarse_space();
+    IterativeMixedSolver<2>::setup_coarse_space();
     template void
-    MixedSystem<3>::setup_coarse_space();
+    IterativeMixedSolver<3>::setup_coarse_space();
     template void
-    MixedSystem<2>::setup_preconditioner();
+    IterativeMixedSolver<2>::setup_preconditioner();
     template void
-    MixedSystem<3>::setup_preconditioner();
+    IterativeMixedSolver<3>::setup_preconditioner();
   } // namespace contact
 } // namespace fdem

@@ -2,7 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
-#include <fdem/contact/dense_lu.h>
+#include <fdem/linear_algebra/dense_lu.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -12,7 +12,7 @@
 
 namespace fdem
 {
-  namespace contact
+  namespace linear_algebra
   {
     /**
      * Solves a sequence of dense systems A x = b whose matrices differ from
@@ -167,5 +167,5 @@ namespace fdem
       double factorized_condition = 0;
       bool   factorized_solved    = false;
     };
-  } // namespace contact
+  } // namespace linear_algebra
 } // namespace fdem

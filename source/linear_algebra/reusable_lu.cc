@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
-#include <fdem/contact/reusable_lu.h>
+#include <fdem/linear_algebra/reusable_lu.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -9,15 +9,14 @@
 #include <functional>
 #include <limits>
 
-extern "C"
-{
-  void
-  dlacn2_(const int *n, double *v, double *x, int *isgn, double *est, int *kase, int *isave);
-}
+// Hand-declared: deal.II 9.4's lapack_templates.h has no lacn2 (the
+// estimator inside gecon, here applied to an updated inverse).
+extern "C" void
+dlacn2_(const int *n, double *v, double *x, int *isgn, double *est, int *kase, int *isave);
 
 namespace fdem
 {
-  namespace contact
+  namespace linear_algebra
   {
     namespace
     {
@@ -405,5 +404,5 @@ namespace fdem
         rhs[i] = s0[i] * y[i];
       return true;
     }
-  } // namespace contact
+  } // namespace linear_algebra
 } // namespace fdem
