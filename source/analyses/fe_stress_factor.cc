@@ -9,7 +9,7 @@ namespace fdem
   {
     template <int dim>
     FeStressFactor
-    fe_stress_factor(const contact::MixedSystem<dim> &         system,
+    fe_stress_factor(contact::MixedSystem<dim> &                system,
                      const std::vector<contact::PairStrength> &strengths,
                      const std::vector<bool> &                 on_sliding_surface)
     {
@@ -40,11 +40,11 @@ namespace fdem
     }
 
     template FeStressFactor
-    fe_stress_factor(const contact::MixedSystem<2> &,
+    fe_stress_factor(contact::MixedSystem<2> &,
                      const std::vector<contact::PairStrength> &,
                      const std::vector<bool> &);
     template FeStressFactor
-    fe_stress_factor(const contact::MixedSystem<3> &,
+    fe_stress_factor(contact::MixedSystem<3> &,
                      const std::vector<contact::PairStrength> &,
                      const std::vector<bool> &);
   } // namespace analyses
