@@ -70,9 +70,28 @@ def settings_for(case):
         s[f"Blocks/{block}/Poisson's ratio"] = 0.3
         s[f"Blocks/{block}/Unit weight"] = case["gamma"]
     s["Interfaces/Names"] = ", ".join(surfaces + interslices)
+    layers = case.get("layers")
+    if layers:
+        # Materials separate from blocks: the layers' own E, weights and
+        # strengths; every surface takes the strength of the soil it cuts.
+        s["Geometry/Slope/Layers"] = ", ".join(l["name"] for l in layers)
+        s["Geometry/Slope/Layer boundaries"] = " | ".join(text(l["top"]) for l in layers[1:])
+        s["Materials/Names"] = ", ".join(l["name"] for l in layers)
+        for l in layers:
+            for entry, key in (("Young's modulus", "E"), ("Unit weight", "gamma"),
+                               ("Saturated unit weight", "gamma_sat"), ("Cohesion", "c"),
+                               ("Friction angle", "phi")):
+                s[f"Materials/{l['name']}/{entry}"] = l[key]
+            s[f"Materials/{l['name']}/Poisson's ratio"] = 0.3
+        for block in masses + ["foundation"]:
+            for entry in ("Young's modulus", "Poisson's ratio", "Unit weight"):
+                del s[f"Blocks/{block}/{entry}"]
     for name in surfaces + interslices:
-        s[f"Interfaces/{name}/Friction angle"] = case["phi"]
-        s[f"Interfaces/{name}/Cohesion"] = case["c"]
+        if layers:
+            s[f"Interfaces/{name}/Strength"] = "material"
+        else:
+            s[f"Interfaces/{name}/Friction angle"] = case["phi"]
+            s[f"Interfaces/{name}/Cohesion"] = case["c"]
         if name.startswith("interslice"):
             s[f"Interfaces/{name}/Sliding surface"] = "false"
             s[f"Interfaces/{name}/Reduced by K"] = "true"
@@ -96,8 +115,10 @@ def references(case):
     """Spencer's F and lambda; the vertical-wedge F (vertical interslices
     only); the largest use of the interslice strength by Spencer's forces at
     the cuts (doc/limit_equilibrium.md)."""
-    section = le.Section(case["ground"], [le.Layer(None, case["gamma"], None, case["c"], case["phi"])],
-                         case.get("piezometric"))
+    layers = [le.Layer(None if i == 0 else l["top"], l["gamma"], l["gamma_sat"], l["c"], l["phi"])
+              for i, l in enumerate(case["layers"])] if case.get("layers") else \
+        [le.Layer(None, case["gamma"], None, case["c"], case["phi"])]
+    section = le.Section(case["ground"], layers, case.get("piezometric"))
     surface = surface_in_ground(case["ground"], case["polyline"])
     crack = dict(crack_depth=case.get("crack_depth", 0), crack_water_depth=case.get("crack_water_depth", 0))
     F, lam = le.spencer(section, surface, 800, **crack)
@@ -125,6 +146,14 @@ CASES = [
     dict(name="kinked surface, vertical interslices, water-filled tension crack 3 m",
          ground=PAPER_GROUND, polyline=KINKED, interslices="vertical", gamma=20, c=3, phi=19.6,
          crack_depth=3, crack_water_depth=3),
+    dict(name="three layers, water table, surface along the clay, vertical interslices",
+         ground=PAPER_GROUND, polyline=[(7, 26), (13, 23.2), (28, 23.5), (40, 36)],
+         interslices="vertical", piezometric=[(0, 24), (10, 24.8), (30, 29), (50, 30)],
+         layers=[dict(name="fill", top=None, E=1e4, gamma=19, gamma_sat=20.5, c=5, phi=25),
+                 dict(name="clay", top=[(0, 24), (10, 24.5), (50, 28.5)], E=5e3, gamma=18,
+                      gamma_sat=19.5, c=10, phi=18),
+                 dict(name="sand", top=[(0, 22.5), (50, 22.5)], E=3e4, gamma=20, gamma_sat=21,
+                      c=0, phi=33)]),
     dict(name="deep three-segment surface, vertical interslices", ground=PAPER_GROUND,
          polyline=[(4, 26), (11, 21.5), (22, 21), (32, 27), (42, 36)], interslices="vertical",
          gamma=20, c=5, phi=25),
@@ -152,6 +181,21 @@ def main():
                "—" if use is None else f"{use:.2f}", program[1]]
         rows.append(row)
         print(" | ".join(row), flush=True)
+    # The layered case under mesh refinement, with and without interslices.
+    layered = next(c for c in CASES if c.get("layers"))
+    refinement = []
+    for interslices in ("vertical", "none"):
+        for h in (1.0, 0.5, 0.25):
+            case = dict(layered, interslices=interslices, mesh_size=h)
+            run = common.run_case(args.exe, "paper_slope.prm", settings=settings_for(case))
+            if run.ok and run.summary.get("safety_factor") is not None:
+                change = run.summary["stiffness_sensitivity"].get("relative_change")
+                refinement.append((interslices, f"{h:g}", str(common.n_pairs(run.summary)),
+                                   f"{run.summary['safety_factor']:.5f}",
+                                   f"{100 * change:.2f} %" if isinstance(change, float) else str(change)))
+            else:
+                refinement.append((interslices, f"{h:g}", "", run.failure() or run.summary["status"], ""))
+            print(" | ".join(refinement[-1]), flush=True)
     with open(args.output, "w") as out:
         out.write(LEAD)
         out.write("| case | K (this program) | F (vertical wedges) | F (Spencer) | K − F_Spencer "
@@ -160,17 +204,34 @@ def main():
         for row in rows:
             out.write("| " + " | ".join(row) + " |\n")
         out.write(TRAIL)
+        out.write(REFINEMENT)
+        out.write("| interslices | mesh size (m) | node pairs | K | stiffness sensitivity |\n")
+        out.write("| --- | ---: | ---: | ---: | ---: |\n")
+        for row in refinement:
+            out.write("| " + " | ".join(row) + " |\n")
 
 
 LEAD = """# Non-circular surfaces beside limit equilibrium
 
 Written by `benchmarks/le_comparison.py`. The paper's slope (ground 0,25;
-10,25; 30,35; 50,35, γ = 20 kN/m³, E = 1e4 kPa, ν = 0.3) with polyline
-sliding surfaces, run by this program with the slope generator (mesh size
-0.5 m, Q2) and by Spencer's method on the same surface
-(`tools/limit_equilibrium.py`, 800 slices, doc/limit_equilibrium.md). The
-stiffness sensitivity is the largest relative change of K with the moving
-blocks 10 times stiffer or softer (doc/theory.md, "The stiffness check").
+10,25; 30,35; 50,35; γ = 20 kN/m³, E = 1e4 kPa, ν = 0.3 unless layered)
+with polyline sliding surfaces, run by this program with the slope
+generator (mesh size 0.5 m, Q2; the defaults otherwise: no tensile
+strength) and, on the same surface, by two limit-equilibrium methods of
+`tools/limit_equilibrium.py` (800 slices, doc/limit_equilibrium.md):
+
+- **vertical wedges**: the mass cut by vertical interslices at the
+  polyline's interior vertices, every surface at its limit with c/K and
+  tan φ/K: the mechanism this program computes with
+  `Interslice surfaces = vertical`;
+- **Spencer's method**: interslice forces at one inclination λ, moment
+  and force equilibrium.
+
+The last columns: the largest ratio, at the interslices' sections, of
+Spencer's interslice shear to the shear strength there at Spencer's F
+(above 1, Spencer's forces break Mohr–Coulomb across that section), and
+the stiffness sensitivity of K (its largest relative change with the
+moving blocks 10 times stiffer or softer; doc/theory.md).
 
 """
 
@@ -178,18 +239,35 @@ TRAIL = """
 ## Why they differ
 
 - **One block on a kinked surface** cannot slide rigidly: the elastic mass
-  must deform, and its K measures its elasticity (the stiffness sensitivity
-  says so, and the run warns). Spencer's method has no such restriction.
-- **With interslices** each block moves rigidly, and the interslice
-  surfaces are part of the mechanism with their strength reduced by K.
-  The program's mechanism is then that of a multi-wedge analysis in which
-  every interslice is at its limit (Sarma's and the two-wedge method's
-  assumption, doc/theory.md), where Spencer assumes a constant inclination
-  of the interslice forces and never asks whether an interslice can carry
-  them. Mobilising the interslice strength adds resistance: K lies above
-  Spencer's F by the share the interslices take. Vertical interslices
-  carry less shear than inclined ones that follow the kink's bisector, so
-  the two choices bracket the answer's dependence on this assumption.
+  must deform, and its K measures its elasticity. The stiffness
+  sensitivity says so and the run warns.
+- **With vertical interslices** the program computes the vertical-wedge
+  mechanism; it agrees with the independent vertical-wedge value to the
+  discretisation and to what the defaults leave out (pairs of the surface
+  that open in tension lose their cohesion; where three blocks meet at a
+  vertex one interslice pair is left out, doc/layout_checks.md).
+- **The wedges against Spencer.** The two methods assume different things
+  about the interslices. Where Spencer's interslice shear exceeds the
+  interslices' strength (ratio above 1), Spencer's answer is not
+  admissible across those sections and the wedges, which keep every
+  interslice at its strength, give the lower value; where it stays below
+  (ratio under 1), the wedges' interslices carry more shear than Spencer's
+  and their F is the higher. A designer who trusts Spencer on such a
+  surface is trusting interslice forces that the soil may not carry: the
+  table gives the ratio for that reason.
+- **Bisector interslices** follow the kinks; no limit-equilibrium value of
+  ours is computed for them. Their K is lower than with vertical ones on
+  the kinked surface: an inclined interslice lets the blocks slide past
+  each other more easily.
+"""
+
+REFINEMENT = """
+## The layered case under refinement
+
+The three-layer case above (the surface along the clay, the water table),
+with vertical interslices and as one block, at three mesh sizes (the
+element size on the sliding surface is the mesh size):
+
 """
 
 if __name__ == "__main__":

@@ -9,11 +9,11 @@ namespace fdem
   {
     template <int dim>
     FeStressFactor
-    fe_stress_factor(contact::MixedSystem<dim> &                system,
+    fe_stress_factor(contact::MixedSystem<dim>                &system,
                      const std::vector<contact::PairStrength> &strengths,
-                     const std::vector<bool> &                 on_sliding_surface)
+                     const std::vector<bool> &on_sliding_surface)
     {
-      FeStressFactor result;
+      FeStressFactor               result;
       contact::ContactOutcome<dim> stuck;
       stuck.states.resize(system.n_pairs()); // a default state sticks
       stuck.solution = system.solve_all_stick();
@@ -23,15 +23,17 @@ namespace fdem
           return result;
         }
       // The same sums as eq. (11), at full strength.
-      const ReducedStrengthSolution sums =
-        resisting_and_sliding_forces(system, stuck, strengths, on_sliding_surface);
+      const ReducedStrengthSolution sums = resisting_and_sliding_forces(
+        system, stuck, strengths, on_sliding_surface);
       for (unsigned int p = 0; p < on_sliding_surface.size(); ++p)
-        result.n_pairs_in_tension += on_sliding_surface[p] && stuck.solution.forces[dim * p] > 0;
+        result.n_pairs_in_tension +=
+          on_sliding_surface[p] && stuck.solution.forces[dim * p] > 0;
       result.resisting_force = sums.resisting_force;
       result.sliding_force   = sums.sliding_force;
       if (!(sums.sliding_force > 0))
         {
-          result.not_computed = "no shear force on the sliding surface in the all-stick state";
+          result.not_computed =
+            "no shear force on the sliding surface in the all-stick state";
           return result;
         }
       result.computed = true;

@@ -39,8 +39,8 @@ namespace fdem
      */
     template <int dim>
     FeStressFactor
-    fe_stress_factor(contact::MixedSystem<dim> &                system,
+    fe_stress_factor(contact::MixedSystem<dim>                &system,
                      const std::vector<contact::PairStrength> &strengths,
-                     const std::vector<bool> &                 on_sliding_surface);
+                     const std::vector<bool> &on_sliding_surface);
   } // namespace analyses
 } // namespace fdem

@@ -60,6 +60,17 @@ namespace fdem
       static bool active;
     };
 
+    namespace internal
+    {
+      /**
+       * Index in Gmsh's corner order of deal.II's corner i of a cell with
+       * @p n_corners corners: the map is its own inverse (gmsh_mesh.cc reads,
+       * gmsh_write.cc writes).
+       */
+      unsigned int
+      gmsh_corner(const int structdim, const unsigned int n_corners, const unsigned int i);
+    } // namespace internal
+
     /**
      * Read a Gmsh file and convert it with extract_current_gmsh_model(): a
      * mesh (.msh of any version, ASCII or binary) or a geometry (.geo), which

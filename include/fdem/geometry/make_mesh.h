@@ -34,7 +34,7 @@ namespace fdem
     make_mesh(const parameters::GeometryParameters &geometry,
               const std::string                    &prm_directory,
               const std::string                    &msh_output_file,
-              unsigned int                          fe_degree = 1,
+              unsigned int                          fe_degree      = 1,
               const std::vector<std::string>       &material_names = {});
 
     /**

@@ -151,6 +151,21 @@ namespace fdem
         orientation.dip_direction = values[1];
         return orientation;
       }
+
+      double
+      polyline_elevation(const std::vector<Point<2>> &line, const double x)
+      {
+        if (x <= line.front()[0])
+          return line.front()[1];
+        for (unsigned int i = 1; i < line.size(); ++i)
+          if (x <= line[i][0])
+            {
+              const double t =
+                (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]);
+              return (1 - t) * line[i - 1][1] + t * line[i][1];
+            }
+        return line.back()[1];
+      }
     } // namespace case_input
   }   // namespace geometry
 } // namespace fdem

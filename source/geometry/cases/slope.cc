@@ -30,19 +30,6 @@ namespace fdem
         return true;
       }
 
-      /** Elevation of the ground polyline at @p x (inside its x range). */
-      double
-      ground_elevation(const std::vector<Point<2>> &ground, const double x)
-      {
-        for (unsigned int i = 1; i < ground.size(); ++i)
-          if (x <= ground[i][0])
-            {
-              const double t =
-                (x - ground[i - 1][0]) / (ground[i][0] - ground[i - 1][0]);
-              return (1 - t) * ground[i - 1][1] + t * ground[i][1];
-            }
-        return ground.back()[1];
-      }
 
       /** Whether @p p lies on or above the ground, or outside its x range. */
       bool
@@ -51,7 +38,8 @@ namespace fdem
         if (p[0] <= ground.front()[0] || p[0] >= ground.back()[0])
           return true;
         const double length = ground.back()[0] - ground.front()[0];
-        return p[1] >= ground_elevation(ground, p[0]) - 1e-10 * length;
+        return p[1] >=
+               case_input::polyline_elevation(ground, p[0]) - 1e-10 * length;
       }
 
 
@@ -416,8 +404,12 @@ namespace fdem
       all_internal = crack;
       for (unsigned int b = 0; b < n_blocks; ++b)
         {
-          all_internal.insert(all_internal.end(), sliding[b].begin(), sliding[b].end());
-          all_internal.insert(all_internal.end(), interslices[b].begin(), interslices[b].end());
+          all_internal.insert(all_internal.end(),
+                              sliding[b].begin(),
+                              sliding[b].end());
+          all_internal.insert(all_internal.end(),
+                              interslices[b].begin(),
+                              interslices[b].end());
         }
 
       const auto numbered = [n_blocks](const std::string &what,

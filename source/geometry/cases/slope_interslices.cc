@@ -31,21 +31,6 @@ namespace fdem
           return text.str();
         }
 
-        /** Elevation of the ground at @p x, constant beyond its ends. */
-        double
-        ground_at(const std::vector<Point<2>> &ground, const double x)
-        {
-          if (x <= ground.front()[0])
-            return ground.front()[1];
-          for (unsigned int i = 1; i < ground.size(); ++i)
-            if (x <= ground[i][0])
-              {
-                const double t =
-                  (x - ground[i - 1][0]) / (ground[i][0] - ground[i - 1][0]);
-                return (1 - t) * ground[i - 1][1] + t * ground[i][1];
-              }
-          return ground.back()[1];
-        }
 
         double
         cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
@@ -125,9 +110,11 @@ namespace fdem
                 {
                   const Point<2> P = A + ts[i - 1] * (B - A),
                                  Q = A + ts[i] * (B - A);
-                  const double dP  = ground_at(ground, P[0]) - P[1];
-                  const double dQ  = ground_at(ground, Q[0]) - Q[1];
-                  deepest          = std::max({deepest, dP, dQ});
+                  const double dP =
+                    case_input::polyline_elevation(ground, P[0]) - P[1];
+                  const double dQ =
+                    case_input::polyline_elevation(ground, Q[0]) - Q[1];
+                  deepest = std::max({deepest, dP, dQ});
                   if (dP < depth && dQ >= depth)
                     return {k, P + (depth - dP) / (dQ - dP) * (Q - P)};
                 }
@@ -162,9 +149,10 @@ namespace fdem
 
         if (slope.tension_crack_depth > 0)
           {
-            cuts.crack          = true;
-            cuts.crack_at_right = ground_at(ground, line.back()[0]) >=
-                                  ground_at(ground, line.front()[0]);
+            cuts.crack = true;
+            cuts.crack_at_right =
+              case_input::polyline_elevation(ground, line.back()[0]) >=
+              case_input::polyline_elevation(ground, line.front()[0]);
             std::vector<Point<2>> ordered =
               line; // from the far end to the crest
             std::vector<int> order = index;
@@ -187,7 +175,9 @@ namespace fdem
             cuts.surface      = ordered;
             index             = order;
             cuts.crack_bottom = bottom;
-            cuts.crack_top = Point<2>(bottom[0], ground_at(ground, bottom[0]));
+            cuts.crack_top =
+              Point<2>(bottom[0],
+                       case_input::polyline_elevation(ground, bottom[0]));
             cuts.crack_water_level =
               bottom[1] + slope.tension_crack_water_depth;
           }
@@ -208,7 +198,7 @@ namespace fdem
           {
             const Point<2> &v = surface[i];
             AssertThrow(
-              ground_at(ground, v[0]) - v[1] > 1e-6 * size,
+              case_input::polyline_elevation(ground, v[0]) - v[1] > 1e-6 * size,
               ExcMessage(
                 name + "the vertex " + point_text(v) +
                 " of the sliding surface polyline does not lie below the "

@@ -26,20 +26,6 @@ namespace fdem
   {
     namespace
     {
-      /** y of the polyline @p line (increasing x) at @p x, within its x range.
-       */
-      double
-      elevation(const std::vector<Point<2>> &line, const double x)
-      {
-        for (unsigned int i = 1; i < line.size(); ++i)
-          if (x <= line[i][0])
-            {
-              const double t =
-                (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]);
-              return (1 - t) * line[i - 1][1] + t * line[i][1];
-            }
-        return line.back()[1];
-      }
 
       /** @p line cut to x_min <= x <= x_max (it spans that range). */
       std::vector<Point<2>>
@@ -47,11 +33,13 @@ namespace fdem
            const double                 x_min,
            const double                 x_max)
       {
-        std::vector<Point<2>> clipped{Point<2>(x_min, elevation(line, x_min))};
+        std::vector<Point<2>> clipped{
+          Point<2>(x_min, case_input::polyline_elevation(line, x_min))};
         for (const Point<2> &p : line)
           if (p[0] > x_min && p[0] < x_max)
             clipped.push_back(p);
-        clipped.emplace_back(x_max, elevation(line, x_max));
+        clipped.emplace_back(x_max,
+                             case_input::polyline_elevation(line, x_max));
         return clipped;
       }
 
@@ -165,21 +153,25 @@ namespace fdem
                                 ".");
           for (const double x : breakpoints(line, ground_surface, x_min, x_max))
             case_input::require(
-              elevation(line, x) <= elevation(ground_surface, x) + tolerance &&
-                elevation(line, x) > base_elevation + tolerance,
+              case_input::polyline_elevation(line, x) <=
+                  case_input::polyline_elevation(ground_surface, x) +
+                    tolerance &&
+                case_input::polyline_elevation(line, x) >
+                  base_elevation + tolerance,
               path + which + "leaves the model at x = " + number(x) +
                 " (above the ground surface or not above the base).");
           if (k > 0)
             for (const double x :
                  breakpoints(line, layer_boundaries[k - 1], x_min, x_max))
-              case_input::require(elevation(line, x) <
-                                    elevation(layer_boundaries[k - 1], x) -
-                                      tolerance,
-                                  path + "boundaries " + std::to_string(k) +
-                                    " and " + std::to_string(k + 1) +
-                                    " cross or touch at x = " + number(x) +
-                                    "; each must lie strictly below the one "
-                                    "before it.");
+              case_input::require(
+                case_input::polyline_elevation(line, x) <
+                  case_input::polyline_elevation(layer_boundaries[k - 1], x) -
+                    tolerance,
+                path + "boundaries " + std::to_string(k) + " and " +
+                  std::to_string(k + 1) +
+                  " cross or touch at x = " + number(x) +
+                  "; each must lie strictly below the one "
+                  "before it.");
         }
     }
 

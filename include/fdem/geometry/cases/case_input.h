@@ -106,6 +106,11 @@ namespace fdem
       /** The orientation "dip, dip direction". */
       PlaneOrientation
       parse_orientation(const std::string &text);
+
+      /** y of the polyline @p line (points with increasing x) at @p x,
+       * linear between its points and constant beyond its ends. */
+      double
+      polyline_elevation(const std::vector<Point<2>> &line, const double x);
     } // namespace case_input
   }   // namespace geometry
 } // namespace fdem

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+
+// What a run of the Model writes: the blocks' displacements recovered from
+// the contact solution, VTU and PVD files, the interface CSV and
+// summary.json (postprocess/ holds the formats; this file only drives them).
+#include <fdem/model.h>
+#include <fdem/postprocess/block_output.h>
+#include <fdem/postprocess/hertz_reference.h>
+#include <fdem/postprocess/interface_output.h>
+#include <fdem/postprocess/output_files.h>
+#include <fdem/postprocess/run_cost.h>
+#include <fdem/postprocess/summary.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace fdem
+{
+  template <int dim>
+  void
+  Model<dim>::recover_block_displacements()
+  {
+    TimerOutput::Scope scope(timer, "recovery");
+    displacements.clear();
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        Vector<double> u = blocks[b]->solve(
+          mixed_system->block_nodal_forces(b, contact_outcome.solution));
+        Vector<double> gamma(blocks[b]->n_free_rigid_modes());
+        for (unsigned int m = 0; m < gamma.size(); ++m)
+          gamma[m] = contact_outcome.solution
+                       .rigid_motions[mixed_system->first_rigid_unknown[b] + m];
+        blocks[b]->add_rigid_motion(gamma, u);
+        displacements.push_back(u);
+      }
+  }
+
+  template <int dim>
+  std::vector<std::vector<postprocess::PairResult<dim>>>
+  Model<dim>::interface_results() const
+  {
+    std::vector<std::vector<postprocess::PairResult<dim>>> results;
+    const auto   full_strengths = pair_strengths(1.0);
+    unsigned int first_pair     = 0;
+    for (const auto &interface : interfaces)
+      {
+        results.push_back(postprocess::pair_results(interface,
+                                                    first_pair,
+                                                    contact_outcome.solution,
+                                                    contact_outcome.states,
+                                                    full_strengths));
+        first_pair += interface.pairs.size();
+      }
+    return results;
+  }
+
+  template <int dim>
+  void
+  Model<dim>::write_vtu(const std::string                  &suffix,
+                        const double                        time,
+                        std::vector<postprocess::PvdEntry> &entries)
+  {
+    const std::string directory = parameters.output_directory();
+    const auto        results   = interface_results();
+    unsigned int      part      = 0;
+    // Two names may give one file name ('rock/1' and 'rock 1'): the later
+    // gets its index appended, so that no file is written twice.
+    std::set<std::string> stems;
+    const auto            unique = [&](const std::string &kind,
+                            const std::string &name,
+                            const unsigned int i) {
+      return stems.insert(kind + postprocess::file_stem(name)).second ?
+                          suffix :
+                          "-" + std::to_string(i) + suffix;
+    };
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      entries.push_back(
+        {time,
+         part++,
+         postprocess::write_block_vtu(*blocks[b],
+                                      b,
+                                      displacements[b],
+                                      directory,
+                                      unique("block-", blocks[b]->name, b))});
+    for (unsigned int i = 0; i < interfaces.size(); ++i)
+      entries.push_back({time,
+                         part++,
+                         postprocess::write_interface_vtu(
+                           *blocks[interfaces[i].block_J],
+                           interfaces[i],
+                           results[i],
+                           directory,
+                           unique("interface-", interfaces[i].name, i))});
+  }
+
+  template <int dim>
+  void
+  Model<dim>::output_results()
+  {
+    const std::string  directory = parameters.output_directory();
+    TimerOutput::Scope scope(timer, "output");
+
+    auto                 results = interface_results();
+    const nlohmann::json hertz   = postprocess::hertz_reference(*this, results);
+
+    // Without equilibrium there is no field to show: only the summary says why.
+    const bool converged = contact_outcome.converged();
+    if (converged && writes_files)
+      postprocess::write_interface_csv(directory + "/interfaces.csv",
+                                       interfaces,
+                                       results);
+    if (converged && parameters.output.write_vtu)
+      {
+        std::vector<postprocess::PvdEntry> entries;
+        write_vtu("", 0, entries); // collective, rank 0 writes
+        if (writes_files)
+          postprocess::write_pvd(directory + "/solution.pvd", entries);
+        if (!step_files.empty() && writes_files)
+          postprocess::write_pvd(directory + "/safety_factor_steps.pvd",
+                                 step_files);
+      }
+    // Reactions at the minimal support, zero at equilibrium: a pass over all
+    // cells, timed as output.
+    std::vector<double> reactions(blocks.size(), 0.0);
+    if (converged)
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        {
+          const Vector<double> residual =
+            blocks[b]->nodal_residual(displacements[b]);
+          for (const auto dof : blocks[b]->support_dofs)
+            reactions[b] = std::max(reactions[b], std::abs(residual[dof]));
+        }
+    scope.stop();
+
+    summary = postprocess::make_summary(*this,
+                                        results,
+                                        hertz,
+                                        reactions,
+                                        parameters.safety_factor.compute ?
+                                          &safety_factor_result :
+                                          nullptr);
+    // The only entries that differ between two runs of the same input.
+    summary["timings"] =
+      postprocess::section_wall_times(timer, run_timer.wall_time());
+    summary["peak_memory_MiB"] = postprocess::peak_memory_mib();
+    if (writes_files)
+      postprocess::write_json(directory + "/summary.json", summary);
+  }
+
+  template void
+  Model<2>::recover_block_displacements();
+  template void
+  Model<3>::recover_block_displacements();
+  template void
+  Model<2>::output_results();
+  template void
+  Model<3>::output_results();
+  template void
+  Model<2>::write_vtu(const std::string &,
+                      double,
+                      std::vector<postprocess::PvdEntry> &);
+  template void
+  Model<3>::write_vtu(const std::string &,
+                      double,
+                      std::vector<postprocess::PvdEntry> &);
+} // namespace fdem
