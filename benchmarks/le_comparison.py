@@ -16,6 +16,7 @@ import argparse
 import math
 import os
 import sys
+import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -48,8 +49,32 @@ def surface_in_ground(ground, polyline):
         [(x1, le.elevation(polyline, x1))]
 
 
+BASE_PRM = """# The frame of the cases of benchmarks/le_comparison.py; the cases set the rest.
+set Dimension             = 2
+set Finite element degree = 2
+subsection Geometry
+  set Source = slope
+end
+subsection Loads
+  set Gravity direction = 0, -1
+end
+subsection Boundaries
+  set Names = left, right, bottom
+  subsection left
+    set Constraint = normal
+  end
+  subsection right
+    set Constraint = normal
+  end
+  subsection bottom
+    set Constraint = normal
+  end
+end
+"""
+
+
 def settings_for(case):
-    """The .prm entries (over prm/paper_slope.prm) of @p case."""
+    """The .prm entries (over BASE_PRM) of @p case."""
     s = {
         "Geometry/Slope/Ground surface": text(case["ground"]),
         "Geometry/Slope/Base elevation": case.get("base", 20),
@@ -68,7 +93,7 @@ def settings_for(case):
     for block in masses + ["foundation"]:
         s[f"Blocks/{block}/Young's modulus"] = case.get("E", 1e4)
         s[f"Blocks/{block}/Poisson's ratio"] = 0.3
-        s[f"Blocks/{block}/Unit weight"] = case["gamma"]
+        s[f"Blocks/{block}/Unit weight"] = case.get("gamma", 0)
     s["Interfaces/Names"] = ", ".join(surfaces + interslices)
     layers = case.get("layers")
     if layers:
@@ -107,6 +132,8 @@ def settings_for(case):
                              50, case["crack_depth"], case.get("crack_water_depth", 0))
         level = mass.surface[-1][1] + case.get("crack_water_depth", 0)
         s["Boundaries/Names"] = "left, right, bottom, tension crack"
+        for side in ("left", "right", "bottom"):
+            s[f"Boundaries/{side}/Constraint"] = "normal"
         s["Boundaries/tension crack/Pressure"] = f"9.81 * max(0, {level:.12g} - y)"
     return s
 
@@ -165,9 +192,12 @@ def main():
     parser.add_argument("--exe", default=common.DEFAULT_EXE)
     parser.add_argument("--output", default=os.path.join(common.ROOT, "doc", "le_comparison.md"))
     args = parser.parse_args()
+    base = os.path.join(tempfile.mkdtemp(prefix="le-comparison-"), "le_comparison_base.prm")
+    with open(base, "w") as f:
+        f.write(BASE_PRM)
     rows = []
     for case in CASES:
-        run = common.run_case(args.exe, "paper_slope.prm", settings=settings_for(case))
+        run = common.run_case(args.exe, base, settings=settings_for(case))
         F, lam, wedges, use = references(case)
         if run.ok and run.summary.get("safety_factor") is not None:
             K = run.summary["safety_factor"]
@@ -187,7 +217,7 @@ def main():
     for interslices in ("vertical", "none"):
         for h in (1.0, 0.5, 0.25):
             case = dict(layered, interslices=interslices, mesh_size=h)
-            run = common.run_case(args.exe, "paper_slope.prm", settings=settings_for(case))
+            run = common.run_case(args.exe, base, settings=settings_for(case))
             if run.ok and run.summary.get("safety_factor") is not None:
                 change = run.summary["stiffness_sensitivity"].get("relative_change")
                 refinement.append((interslices, f"{h:g}", str(common.n_pairs(run.summary)),
@@ -242,10 +272,17 @@ TRAIL = """
   must deform, and its K measures its elasticity. The stiffness
   sensitivity says so and the run warns.
 - **With vertical interslices** the program computes the vertical-wedge
-  mechanism; it agrees with the independent vertical-wedge value to the
-  discretisation and to what the defaults leave out (pairs of the surface
-  that open in tension lose their cohesion; where three blocks meet at a
-  vertex one interslice pair is left out, doc/layout_checks.md).
+  mechanism: on the homogeneous cases it lies 0.05–0.08 % below the
+  independent vertical-wedge value (measured 2026-11-25), what the defaults
+  leave out: pairs of the surface that open in tension lose their
+  cohesion, and where three blocks meet at a vertex one interslice pair is
+  left out (doc/layout_checks.md). Its stiffness sensitivity is under 1 %.
+- **The layered case is not yet understood**: the program is 1.5 % below
+  the vertical wedges and its stiffness sensitivity is 3.9 % at every mesh
+  size (the table below), where the homogeneous cases stay under 1 %. Both
+  take each pair's strength from the material it runs through; the open
+  question is what in the layered model still depends on the blocks'
+  elasticity.
 - **The wedges against Spencer.** The two methods assume different things
   about the interslices. Where Spencer's interslice shear exceeds the
   interslices' strength (ratio above 1), Spencer's answer is not
