@@ -280,9 +280,15 @@ TRAIL = """
 - **The layered case is not yet understood**: the program is 1.5 % below
   the vertical wedges and its stiffness sensitivity is 3.9 % at every mesh
   size (the table below), where the homogeneous cases stay under 1 %. Both
-  take each pair's strength from the material it runs through; the open
-  question is what in the layered model still depends on the blocks'
-  elasticity.
+  take each pair's strength from the material it runs through. Probed on
+  the same surface at mesh size 1 m: the three layers given one strength
+  (through the same material machinery) give the homogeneous K (1.47667
+  against 1.47627) and 0.72 % sensitivity; with their own strengths the
+  sensitivity is 3.2 % dry, 3.4 % with one E for all, 3.7 % as above. So
+  it is the strength changing along the surfaces, not the machinery, that
+  leaves K depending on stiffness: one pair of the middle segment still
+  sticks at the reported K, the case of doc/theory.md where K* = K before
+  the mechanism has formed. Open.
 - **The wedges against Spencer.** The two methods assume different things
   about the interslices. Where Spencer's interslice shear exceeds the
   interslices' strength (ratio above 1), Spencer's answer is not
