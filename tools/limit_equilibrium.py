@@ -213,10 +213,11 @@ class SlicedMass:
         return out
 
 
-def _spencer_residuals(slices, F, lam, crack_force, crack_point):
-    """E at the last boundary (force equilibrium) and the total moment about
-    the origin (moment equilibrium), for the mass moving to the left.
-    @p slices is the dict of arrays of slice_arrays()."""
+def _spencer_thrusts(slices, F, lam, crack_force):
+    """The effective base normal forces N of the slices and the interslice
+    thrusts E at their right-hand boundaries (E = 0 at the toe), for the
+    mass moving to the left. @p slices is the dict of arrays of
+    slice_arrays()."""
     s = slices
     sa, ca = s["sin"], s["cos"]
     a, b = s["c"] * s["l"] / F, s["tan_phi"] / F
@@ -226,7 +227,18 @@ def _spencer_residuals(slices, F, lam, crack_force, crack_point):
     num = (s["U"] * ca + a * sa - s["W"]) - lam * (a * ca - s["U"] * sa + Px)
     den = lam * (b * ca - sa) - (ca + b * sa)
     N = num / den
-    E = np.sum(N * (b * ca - sa) + (a * ca - s["U"] * sa + Px))
+    return N, np.cumsum(N * (b * ca - sa) + (a * ca - s["U"] * sa + Px))
+
+
+def _spencer_residuals(slices, F, lam, crack_force, crack_point):
+    """E at the last boundary (force equilibrium) and the total moment about
+    the origin (moment equilibrium), for the mass moving to the left.
+    @p slices is the dict of arrays of slice_arrays()."""
+    s = slices
+    sa, ca = s["sin"], s["cos"]
+    a, b = s["c"] * s["l"] / F, s["tan_phi"] / F
+    N, thrusts = _spencer_thrusts(slices, F, lam, crack_force)
+    E = thrusts[-1]
     S = a + b * N
     # Moment about the origin of the weights, the base forces and the
     # crack's water force; interslice forces cancel in the sum.
@@ -315,6 +327,20 @@ def bishop(section, centre, radius, n_slices=400):
     return _root_in_F(g)
 
 
+def _section_strength(mass, x):
+    """Along the vertical section at @p x from the surface up to the ground:
+    the integral of c over its height, the height-weighted mean tan(phi),
+    its height, and the water force on it (hydrostatic below the
+    piezometric line)."""
+    parts, yb, yw = mass._column(x)
+    C = sum(layer.c * (dry + wet) for (dry, wet), layer in zip(parts, mass.layers))
+    h = sum(dry + wet for dry, wet in parts)
+    T = sum(math.tan(math.radians(layer.phi)) * (dry + wet)
+            for (dry, wet), layer in zip(parts, mass.layers)) / h
+    depth = max(min(yw, elevation(mass.ground, x)) - yb, 0.0)
+    return C, T, h, 0.5 * mass.gamma_w * depth**2
+
+
 def vertical_wedges(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0):
     """The multi-wedge factor of safety (the wedge method of the limit-state
     multi-block mechanism): the mass cut into blocks by vertical interslices
@@ -355,17 +381,10 @@ def vertical_wedges(section, surface, n_slices=400, crack_depth=0.0, crack_water
         b["tan_phi"] = b["tL"] / b["L"]
     interslices = []
     for j, x in enumerate(cuts):
-        parts, yb, yw = mass._column(x)
-        C, T, h = 0.0, 0.0, 0.0
-        for (dry, wet), layer in zip(parts, mass.layers):
-            C += layer.c * (dry + wet)
-            T += math.tan(math.radians(layer.phi)) * (dry + wet)
-            h += dry + wet
-        yg = elevation(mass.ground, x)
-        depth = max(min(yw, yg) - yb, 0.0)
+        C, T, _, U = _section_strength(mass, x)
         sense = math.copysign(1.0, math.tan(blocks[j + 1]["alpha"]) - math.tan(blocks[j]["alpha"])) \
             if blocks[j + 1]["alpha"] != blocks[j]["alpha"] else 0.0
-        interslices.append(dict(C=C, tan_phi=T / h, U=0.5 * mass.gamma_w * depth**2, sense=sense))
+        interslices.append(dict(C=C, tan_phi=T, U=U, sense=sense))
 
     def march(K):
         E_left, U_left, T_left = 0.0, 0.0, 0.0
@@ -402,21 +421,11 @@ def spencer_interslice_use(section, surface, xs, n_slices=800, crack_depth=0.0,
     mechanism of blocks cut there is weaker than Spencer's F says."""
     F, lam = spencer(section, surface, n_slices, crack_depth, crack_water_depth)
     mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
-    s = slice_arrays(mass.slices())
-    a, b = s["c"] * s["l"] / F, s["tan_phi"] / F
-    Px = np.zeros_like(a)
-    Px[-1] = -mass.crack_force
-    N = ((s["U"] * s["cos"] + a * s["sin"] - s["W"]) - lam * (a * s["cos"] - s["U"] * s["sin"] + Px)) / \
-        (lam * (b * s["cos"] - s["sin"]) - (s["cos"] + b * s["sin"]))
-    E = np.cumsum(N * (b * s["cos"] - s["sin"]) + (a * s["cos"] - s["U"] * s["sin"] + Px))
+    _, E = _spencer_thrusts(slice_arrays(mass.slices()), F, lam, mass.crack_force)
     uses = []
     for x in xs:
         x = -x if mass.mirrored else x
         k = int(np.argmin(abs(mass.x[1:] - x)))
-        parts, yb, yw = mass._column(x)
-        C = sum(layer.c * (dry + wet) for (dry, wet), layer in zip(parts, mass.layers))
-        h = sum(dry + wet for dry, wet in parts)
-        T = sum(math.tan(math.radians(layer.phi)) * (dry + wet)
-                for (dry, wet), layer in zip(parts, mass.layers)) / h
+        C, T, _, _ = _section_strength(mass, x)
         uses.append(abs(lam * E[k]) / ((C + E[k] * T) / F))
     return uses
