@@ -188,6 +188,16 @@ namespace fdem
         if (boundary.traction != "0")
           tractions[id] = blocks::make_traction_function<dim>(boundary.traction);
       }
+    for (const auto &[name, surface_point] : mesh.standing_water)
+      {
+        const auto id = face_group(name, mesh.source);
+        AssertThrow(pressures.count(id) == 0,
+                    ExcMessage("Boundaries/" + name + "/Pressure: " + mesh.source +
+                               " already fills '" + name + "' with water (Tension crack water "
+                               "depth); give the water in one of the two places."));
+        pressures[id] = blocks::make_standing_water_pressure<dim>(surface_point, parameters.loads.gravity_direction,
+                                                                  parameters.water);
+      }
     for (const std::string &name : parameters.interface_names)
       if (parameters.interfaces.at(name).pore_pressure != "0")
         pressures[face_group(name, "Interfaces/Names")] =

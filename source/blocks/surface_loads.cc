@@ -3,6 +3,7 @@
 #include <fdem/blocks/surface_loads.h>
 
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/function.h>
 
 #include <algorithm>
 
@@ -55,6 +56,22 @@ namespace fdem
 
     template <int dim>
     std::shared_ptr<const Function<dim>>
+    make_standing_water_pressure(const Point<dim>                  &surface_point,
+                                 const std::vector<double>         &gravity,
+                                 const parameters::WaterParameters &water)
+    {
+      Tensor<1, dim> down;
+      for (unsigned int d = 0; d < dim; ++d)
+        down[d] = gravity[d];
+      const double gamma_w = water.unit_weight;
+      return std::make_shared<ScalarFunctionFromFunctionObject<dim>>(
+        [gamma_w, down, surface_point](const Point<dim> &p) {
+          return gamma_w * std::max(0.0, (p - surface_point) * down);
+        });
+    }
+
+    template <int dim>
+    std::shared_ptr<const Function<dim>>
     make_traction_function(const std::string &expression)
     {
       auto function = std::make_shared<FunctionParser<dim>>(dim);
@@ -70,6 +87,10 @@ namespace fdem
     make_pressure_function(const std::string &, const parameters::WaterParameters &);
     template std::shared_ptr<const Function<3>>
     make_pressure_function(const std::string &, const parameters::WaterParameters &);
+    template std::shared_ptr<const Function<2>>
+    make_standing_water_pressure(const Point<2> &, const std::vector<double> &, const parameters::WaterParameters &);
+    template std::shared_ptr<const Function<3>>
+    make_standing_water_pressure(const Point<3> &, const std::vector<double> &, const parameters::WaterParameters &);
     template std::shared_ptr<const Function<2>>
     make_traction_function(const std::string &);
     template std::shared_ptr<const Function<3>>

@@ -57,6 +57,9 @@ namespace fdem
       for (Point<dim> &vertex : mesh.vertices)
         vertex =
           Point<dim>(rotation * (geometry.scale_factor * vertex) + translation);
+      for (auto &[name, point] : mesh.standing_water)
+        point =
+          Point<dim>(rotation * (geometry.scale_factor * point) + translation);
     }
 
 

@@ -120,11 +120,10 @@ CASES = {
         "interfaces": lambda F, L: [(f"sliding surface {i}", entry, 10 * F / L**2)
                                     for i in (1, 2) for entry in ("Cohesion",
                                                                   "Tensile strength")],
-        # The water in the tension crack, y in the new length unit.
+        # The water in the tension crack: the generator's, from the unit
+        # weight of water in the new units.
         "extra": lambda F, L: [
-            "subsection Boundaries", "  subsection tension crack",
-            f"    set Pressure = {num(F / L**2)} * 9.81 * max(0, 18.5 - y / {num(L)})",
-            "  end", "end"],
+            "subsection Water", f"  set Unit weight of water = {num(9.81 * F / L**3)}", "end"],
     },
 }
 

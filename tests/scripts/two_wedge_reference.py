@@ -218,7 +218,10 @@ def check_two_wedge(exe, prm, tolerance):
             lo, hi = (mid, hi) if ground_at(ground, x) - y < depth else (lo, mid)
         C = (C[0] + hi * (B[0] - C[0]), C[1] + hi * (B[1] - C[1]))
         level = C[1] + float(run.parameters["Geometry/Slope/Tension crack water depth"])
-        p = pressure_function(run.parameters["Boundaries/tension crack/Pressure"])
+        # The generator fills the crack to that level (Water/Unit weight
+        # of water, 9.81 unless set).
+        gamma_w = float(run.parameters.get("Water/Unit weight of water", 9.81))
+        p = lambda x, y: gamma_w * max(0.0, level - y)
         for y0, y1 in ((C[1], level), (level, C[1] + depth)):
             crack += 0.5 * (y1 - y0) * (p(C[0], y0) + p(C[0], y1))
     names = {"base 1": "sliding surface 1", "base 2": "sliding surface 2",

@@ -42,6 +42,18 @@ namespace fdem
     make_pressure_function(const std::string &               expression,
                            const parameters::WaterParameters &water);
 
+    /**
+     * The hydrostatic pressure (force/length^2) of standing water whose
+     * surface passes through @p surface_point: gamma_w times the depth below
+     * it along the unit vector @p gravity, 0 above it (the water of a
+     * tension crack).
+     */
+    template <int dim>
+    std::shared_ptr<const Function<dim>>
+    make_standing_water_pressure(const Point<dim>                  &surface_point,
+                                 const std::vector<double>         &gravity,
+                                 const parameters::WaterParameters &water);
+
     /** A traction vector function from an expression with dim components separated by ';'. */
     template <int dim>
     std::shared_ptr<const Function<dim>>

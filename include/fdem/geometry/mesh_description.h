@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -109,6 +110,16 @@ namespace fdem
 
       /** Names of the face groups (Gmsh physical groups of dimension dim-1). */
       std::vector<std::string> face_group_names;
+
+      /**
+       * Face groups that a generator fills with standing water, by name: a
+       * point of the water's surface (moved with the mesh by Geometry/Scale
+       * factor, Rotation and Translation). Their faces carry the hydrostatic
+       * pressure of Water/Unit weight of water times the depth below that
+       * point along Loads/Gravity direction (the slope generator's
+       * water-filled tension crack). Empty for Gmsh files.
+       */
+      std::map<std::string, Point<dim>> standing_water;
 
       /** Where the description came from (file name or generator), for messages. */
       std::string source;

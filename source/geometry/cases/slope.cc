@@ -133,16 +133,19 @@ namespace fdem
           "end of the sliding surface (the end where the ground is higher), "
           "where the sliding surface lies this deep below the ground; the "
           "crack replaces the sliding surface beyond it. Face group 'tension "
-          "crack', a free face of both blocks (not an interface): give it "
-          "its water pressure as a boundary Pressure. 0: no crack.");
+          "crack', a free face of both blocks (not an interface), loaded "
+          "with the pressure of the water in it (Tension crack water "
+          "depth). 0: no crack.");
         prm.declare_entry(
           "Tension crack water depth",
           "0",
           Patterns::Double(0),
           "Height (m) of the water in the tension crack above its bottom, "
-          "at most the crack depth: the mesh gets a node at the water level, "
-          "where the hydrostatic pressure has its kink (the pressure itself "
-          "is the crack's boundary Pressure, e.g. 'piezometric').");
+          "at most the crack depth. Both faces of the crack carry its "
+          "hydrostatic pressure, Water/Unit weight of water times the depth "
+          "below the water level (the mesh gets a node there, at the "
+          "pressure's kink); the crack's face group then takes no boundary "
+          "Pressure. 0: a dry crack.");
         case_input::declare_element_shape_2d(
           prm,
           "quadrilaterals (FE_Q elements; Gmsh's "
@@ -443,7 +446,13 @@ namespace fdem
           gmsh_2d::set_unstructured_quad_options();
         gmsh::model::mesh::generate(2);
       });
-      return extract_current_gmsh_model<2>(name, slope.layers);
+      MeshDescription<2> description =
+        extract_current_gmsh_model<2>(name, slope.layers);
+      // The crack's water pushes on both of its faces up to its level.
+      if (!crack.empty() && slope.tension_crack_water_depth > 0)
+        description.standing_water["tension crack"] =
+          Point<2>(cuts.crack_bottom[0], cuts.crack_water_level);
+      return description;
     }
   } // namespace geometry
 } // namespace fdem
