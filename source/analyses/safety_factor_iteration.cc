@@ -89,7 +89,8 @@ namespace fdem
               << std::right << " " << s.n_stick << " stick, " << s.n_slip << " slip, " << s.n_open
               << " open" << std::endl;
         else
-          log << " no static solution (" << s.result << ")" << std::endl;
+          log << " no static solution" << (s.mechanism ? ": a mechanism" : " (" + s.result + ")")
+              << std::endl;
       }
     } // namespace
 

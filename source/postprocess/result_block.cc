@@ -59,8 +59,9 @@ namespace fdem
                  c.value("reason", std::string("no reason given"));
         if (c.value("kind", std::string()) == "fixed point")
           return "certified: the state solved at K = " +
-                 digits(number(c, "K"), 8) + " gives K* = K to " +
-                 digits(number(c, "relative_difference"), 2) + tolerance;
+                 digits(number(c, "K"), 8) + " gives K* = K within " +
+                 digits(number(c, "relative_difference"), 2) + " relative" +
+                 tolerance;
         const std::string bracket =
           "static at K = " + digits(number(c, "K"), 8) +
           ", a mechanism (no static solution) at K = " +
@@ -68,7 +69,10 @@ namespace fdem
         if (c.value("conservative", false))
           return "certified as a conservative value: " + bracket +
                  ", further apart than the tolerance: K may be a little low";
-        return "certified: " + bracket + tolerance;
+        const double width =
+          (number(c, "K_failed") - number(c, "K")) / number(c, "K");
+        return "certified: " + bracket + ", " + digits(width, 2) + " apart" +
+               tolerance;
       }
 
       /** Stable or not: the stiffness check in words. */
@@ -86,7 +90,7 @@ namespace fdem
         if (std::isnan(change))
           return "NOT stable: no certified K" + blocks;
         const std::string changes =
-          "K changes by " + digits(100 * change, 2) + " %" + blocks +
+          "K changes by " + digits(100 * change, 3) + " %" + blocks +
           " (warning above " + digits(100 * number(s, "warning_above"), 3) +
           " %)";
         return stiffness_warned ? "NOT stable: " + changes :
@@ -198,32 +202,32 @@ namespace fdem
         add("Contact problem",
             summary["contact"].value("result", std::string()));
 
-      std::vector<std::string> warnings;
+      std::vector<std::string> listed;
       for (const auto &w : summary["warnings"])
-        warnings.push_back(w.get<std::string>());
+        listed.push_back(w.get<std::string>());
       if (has_factor)
         {
           bool stiffness_warned = false;
-          for (const std::string &w : warnings)
+          for (const std::string &w : listed)
             stiffness_warned |= message_id(w) == "stiffness-dependent";
           add("Stiffness check", stiffness_words(summary, stiffness_warned));
         }
 
       unsigned int n_changing = 0;
-      for (const std::string &w : warnings)
+      for (const std::string &w : listed)
         n_changing += changes_answer(w);
       const unsigned int n_notes = summary.contains("conditioning") ?
                                      summary["conditioning"]["notes"].size() :
                                      0;
-      std::string        count   = warnings.empty() ?
+      std::string        count   = listed.empty() ?
                                      "none" :
-                                     std::to_string(warnings.size()) + " (" +
+                                     std::to_string(listed.size()) + " (" +
                               std::to_string(n_changing) + " may change K)";
       if (n_notes > 0 && !conditioning_changes_answer(summary))
         count += "; " + std::to_string(n_notes) + " conditioning notes in " +
                  log_file + ", not changing K";
       add("Warnings", count);
-      for (const std::string &w : warnings)
+      for (const std::string &w : listed)
         if (changes_answer(w))
           add("", "warning " + w);
       if (n_notes > 0 && conditioning_changes_answer(summary))

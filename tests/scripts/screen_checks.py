@@ -3,13 +3,14 @@
 """What fdem-slope prints, as a user sees it (doc/troubleshooting.md, "What
 the program prints").
 
-  screen_checks.py default EXE CASE.prm [MAX_LINES]
+  screen_checks.py default EXE CASE.prm [MAX_LINES [DOC.md...]]
         the default screen has at most MAX_LINES lines (default 25), one
         line per safety-factor step, and ends with the result block: K to 3
         decimals and in full, the certificate in words, the stiffness check,
         the warnings and the results folder; no contact iteration, no time
         stamp; log.txt in the results folder has the full log, the screen's
-        lines included
+        lines included; each DOC.md that shows the screen (a code block
+        starting "Case: prm/<case>.prm") shows it as it is today
   screen_checks.py quiet EXE CASE.prm
         --quiet: stdout is one line, K to 17 digits, equal to summary.json's;
         stderr is empty
@@ -41,7 +42,20 @@ def run(exe, prm, args=()):
         return result, open(log_file).read()
 
 
-def check_default(exe, prm, max_lines="25"):
+def check_docs(screen, prm, docs):
+    """The code block of each of @p docs that starts with the case's line
+    must be @p screen, with the case's path as prm/<name>.prm."""
+    name = os.path.basename(prm)
+    shown = re.sub(r"^Case: \S+", f"Case: prm/{name}", screen)
+    for doc in docs:
+        blocks = re.findall(rf"```\n(Case: prm/{re.escape(name)} .*?)```", open(doc).read(), re.DOTALL)
+        assert blocks, f"{doc} shows no screen of {name}"
+        for block in blocks:
+            assert block == shown, f"{doc} shows another screen than today's:\n{block}"
+        print(f"{doc}: the screen as it is today")
+
+
+def check_default(exe, prm, max_lines="25", *docs):
     result, log = run(exe, prm)
     screen = result.stdout.splitlines()
     print(result.stdout)
@@ -67,6 +81,7 @@ def check_default(exe, prm, max_lines="25"):
     assert not missing, f"screen lines missing from log.txt: {missing}"
     assert "contact iteration" in log, "log.txt lacks the contact iterations"
     print(f"{len(screen)} lines on the screen, {len(log.splitlines())} in log.txt")
+    check_docs(result.stdout, prm, docs)
 
 
 def check_quiet(exe, prm):

@@ -48,7 +48,7 @@ def main():
                 failures.append(f"{path}: {m.group(1)}(\"{m.group(2)}\") is not listed in doc/troubleshooting.md")
         for m in re.finditer(r"\b(?:warn|warnings\.push_back)\(\s*([^;]*)", code):
             argument = m.group(1)
-            if not re.match(r"(postprocess::)?warning_text\(|warning\)", argument):
+            if not re.match(r"(postprocess::)?warning_text\(|warning\)|const ", argument):
                 failures.append(f"{path}: a warning without an id: {m.group(0)[:70]}")
         if path not in PRINTERS and re.search(r"\"[^\"\n]*warning: ", code):
             failures.append(f"{path}: prints \"warning:\" itself; make it with warning_text()")
