@@ -21,10 +21,10 @@ namespace fdem
     /**
      * The factors of @p summary to compare K with, in this order: the
      * FE-stress factor ("fe_stress_factor", where computed), then every
-     * method of a "limit_equilibrium" object, if the summary has one: each
-     * entry method -> a number, or an object with a number "K",
-     * "safety_factor" or "factor" (entries without a finite number are left
-     * out).
+     * method of a "limit_equilibrium" object (in its key order, alphabetical),
+     * if the summary has one: each entry method -> a number, or an object with
+     * a number "K", "safety_factor" or "factor" (entries without a finite
+     * number are left out).
      */
     std::vector<ComparisonValue>
     comparison_values(const nlohmann::json &summary);
