@@ -2,7 +2,9 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/model.h>
 #include <fdem/parameters/parameters.h>
+#include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>
+#include <fdem/postprocess/run_log.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -14,9 +16,17 @@
 namespace
 {
   const char *usage =
-    "Usage: fdem-slope [--help] [--print-parameters] [--validate] case.prm\n"
+    "Usage: fdem-slope [--help] [--print-parameters] [--validate]\n"
+    "                  [--quiet | --verbose] case.prm\n"
     "  Computes contact forces and the safety factor of a slope with a known\n"
     "  sliding surface by the mixed FEM-DEM method (Liu et al. 2012).\n"
+    "  The screen shows the case, the model, one line per safety-factor step\n"
+    "  and the result; the results folder's log.txt has the full log.\n"
+    "  --verbose           the full log on the screen too (contact\n"
+    "                      iterations, solver notes, time and memory)\n"
+    "  --quiet             for scripts: on success only K (17 digits) on\n"
+    "                      stdout, nothing when no K is computed; errors\n"
+    "                      stay one line on stderr\n"
     "  --print-parameters  print every parameter (for case.prm, or the\n"
     "                      default case) with its default and help text\n"
     "  --validate          read and check case.prm and the model's layout\n"
@@ -58,6 +68,7 @@ main(int argc, char *argv[])
       host = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       dealii::deallog.depth_console(0);
       bool        print = false, validate = false;
+      auto        verbosity = fdem::postprocess::Verbosity::normal;
       std::string prm_file;
       for (int i = 1; i < argc; ++i)
         {
@@ -71,6 +82,17 @@ main(int argc, char *argv[])
             print = true;
           else if (argument == "--validate")
             validate = true;
+          else if (argument == "--quiet" || argument == "--verbose")
+            {
+              const auto level = argument == "--quiet" ? fdem::postprocess::Verbosity::quiet :
+                                                         fdem::postprocess::Verbosity::verbose;
+              if (verbosity != fdem::postprocess::Verbosity::normal && verbosity != level)
+                {
+                  std::cerr << "fdem-slope: error: give --quiet or --verbose, not both; see --help.\n";
+                  return 2;
+                }
+              verbosity = level;
+            }
           else if (!argument.empty() && argument[0] == '-')
             {
               std::cerr << "fdem-slope: error: unknown option '" << argument
@@ -113,9 +135,32 @@ main(int argc, char *argv[])
             }
           return 0;
         }
-      std::ostream         nowhere(nullptr);
-      const nlohmann::json summary = fdem::run_case(prm_file, host ? std::cout : nowhere);
-      const std::string    status  = summary["status"];
+      // One log in two levels (postprocess/run_log.h). Under --quiet
+      // whatever else would reach stdout (the announcement of a long mesh)
+      // goes to the log file instead.
+      fdem::postprocess::RunLog log(verbosity, host);
+      const bool     quiet  = verbosity == fdem::postprocess::Verbosity::quiet;
+      std::streambuf *stdout_buffer = std::cout.rdbuf();
+      if (quiet)
+        std::cout.rdbuf(log.detail().rdbuf());
+      nlohmann::json summary;
+      try
+        {
+          summary = fdem::run_case(prm_file, log);
+        }
+      catch (...)
+        {
+          std::cout.rdbuf(stdout_buffer);
+          throw;
+        }
+      std::cout.rdbuf(stdout_buffer);
+      const std::string status = summary["status"];
+      if (status == "completed" && quiet && host)
+        {
+          const std::string line = fdem::postprocess::quiet_line(summary);
+          if (!line.empty())
+            std::cout << line << std::endl;
+        }
       if (status != "completed")
         {
           // 3: no static equilibrium at all (every solve failed as a

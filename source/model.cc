@@ -39,10 +39,12 @@ namespace fdem
   template <int dim>
   Model<dim>::Model(const parameters::Parameters &parameters,
                     const std::string &           expanded_parameters,
-                    std::ostream &                log)
+                    std::ostream &                log,
+                    std::ostream *                brief)
     : parameters(parameters)
     , expanded_parameters(expanded_parameters)
     , log(log)
+    , brief(brief != nullptr ? *brief : log)
     , writes_files(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(log, TimerOutput::never, TimerOutput::wall_times)
   {}
@@ -159,7 +161,7 @@ namespace fdem
       face_group(name, "Boundaries/Names");
     for (const std::string &name : parameters.interface_names)
       face_group(name, "Interfaces/Names");
-    log << "Geometry: " << mesh.source << ", " << mesh.cells.size() << " cells, "
+    brief << "Geometry: " << mesh.source << ", " << mesh.cells.size() << " cells, "
         << mesh.block_names.size() << " blocks" << std::endl;
     checks::report(checks::check_mesh_layout(mesh, parameters.interface_names, parameters.boundary_names), warnings, log);
   }
@@ -336,6 +338,12 @@ namespace fdem
                                "motions free and no interface touches it."));
     checks::report(checks::pair_triple_points_once(interfaces, blocks), log);
     checks::report(checks::check_interfaces(mesh, blocks, interfaces, parameters.interfaces), warnings, log);
+    types::global_dof_index n_dofs = 0;
+    for (const auto &block : blocks)
+      n_dofs += block->dof_handler.n_dofs();
+    brief << "Model: " << blocks.size() << (blocks.size() == 1 ? " block, " : " blocks, ") << n_dofs
+          << " dofs; " << interfaces.size() << (interfaces.size() == 1 ? " interface, " : " interfaces, ")
+          << n_pairs_of(interfaces) << " node pairs" << std::endl;
   }
 
   template <int dim>
@@ -454,9 +462,16 @@ namespace fdem
                                1.0 :
                                contact_outcome.iterations.back().reciprocal_condition;
     if (contact_outcome.converged() && condition < 1e-10)
-      log << "  warning: the mixed system is ill-conditioned (reciprocal condition "
-          << condition << "): about " << int(std::round(-std::log10(condition)))
-          << " of the 16 significant digits of the contact forces may be lost." << std::endl;
+      {
+        const int          lost = int(std::round(-std::log10(condition)));
+        std::ostringstream note;
+        note << "the mixed system at K = " << std::setprecision(8) << strength_reduction_factor
+             << " is ill-conditioned (reciprocal condition " << std::setprecision(3) << condition
+             << "): about " << lost << " of the 16 significant digits of the contact forces may be lost.";
+        conditioning_notes.push_back(postprocess::note_text("ill-conditioned", note.str()));
+        max_digits_lost = std::max(max_digits_lost, lost);
+        log << "  note: " << conditioning_notes.back() << std::endl;
+      }
   }
 
   template <int dim>
@@ -489,7 +504,7 @@ namespace fdem
   Model<dim>::warn(const std::string &warning)
   {
     warnings.push_back(warning);
-    log << "warning: " << warning << std::endl;
+    log << "warning: " << warning << std::endl; // the result block lists them again
   }
 
   template <int dim>

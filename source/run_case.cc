@@ -4,6 +4,7 @@
 // The two ways main() runs a case: validate it (up to its node pairs, with
 // the layout checks) or run it into its results folder.
 #include <fdem/model.h>
+#include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>
 
 #include <deal.II/base/mpi.h>
@@ -26,7 +27,7 @@ namespace fdem
   }
 
   nlohmann::json
-  run_case(const std::string &prm_file, std::ostream &log)
+  run_case(const std::string &prm_file, postprocess::RunLog &log)
   {
     std::string            expanded;
     parameters::Parameters parameters = parameters::read_parameters(prm_file, &expanded);
@@ -36,21 +37,31 @@ namespace fdem
                                       Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
     const std::string results   = parameters.output_directory();
     parameters.output.directory = folder.staging();
+    // The file stays open across commit(): the rename moves it with the
+    // folder, and the result block still reaches it.
+    const std::string log_file = "log.txt";
+    log.open_file(folder.staging() + "/" + log_file);
+    log.brief() << "Case: " << prm_file << " (" << parameters.case_name << ", " << parameters.dimension
+                << "D)" << std::endl;
     nlohmann::json summary;
     if (parameters.dimension == 2)
       {
-        Model<2> model(parameters, expanded, log);
+        Model<2> model(parameters, expanded, log.detail(), &log.brief());
         model.run();
         summary = model.summary;
       }
     else
       {
-        Model<3> model(parameters, expanded, log);
+        Model<3> model(parameters, expanded, log.detail(), &log.brief());
         model.run();
         summary = model.summary;
       }
     folder.commit();
-    log << "Results in " << results << "/" << std::endl;
+    std::string folder_name = results;
+    while (folder_name.size() > 1 && folder_name.back() == '/')
+      folder_name.pop_back();
+    for (const std::string &line : postprocess::result_block(summary, folder_name, log_file))
+      log.brief() << line << std::endl;
     return summary;
   }
 } // namespace fdem

@@ -11,6 +11,7 @@
 #include <fdem/parameters/parameters.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/interface_output.h>
+#include <fdem/postprocess/run_log.h>
 #include <fdem/analyses/fe_stress_factor.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 
@@ -37,9 +38,16 @@ namespace fdem
   class Model
   {
   public:
+    /**
+     * @p log takes the run's full log (contact iterations, solver notes,
+     * time stamps), @p brief the lines of the default screen (the model,
+     * the safety-factor steps); without @p brief they go to @p log too
+     * (postprocess::RunLog sends each where it belongs).
+     */
     Model(const parameters::Parameters &parameters,
           const std::string &           expanded_parameters,
-          std::ostream &                log);
+          std::ostream &                log,
+          std::ostream *                brief = nullptr);
 
     /** Everything, as the paper does it, then the output files. */
     void
@@ -123,6 +131,15 @@ namespace fdem
      */
     std::vector<std::string> warnings;
 
+    /**
+     * Conditioning notes of the contact solves (postprocess::note_text(),
+     * id "ill-conditioned"): for the log file and summary.json, and for the
+     * screen only where postprocess::conditioning_changes_answer() says so.
+     */
+    std::vector<std::string> conditioning_notes;
+    /** The most significant digits of the contact forces a note said may be lost. */
+    int max_digits_lost = 0;
+
     /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
     void
     recover_block_displacements();
@@ -174,8 +191,10 @@ namespace fdem
     std::string   expanded_parameters;
 
   public:
-    /** The run's log (screen); only rank 0's reaches it. */
+    /** The run's full log (the log file; the screen with --verbose); only rank 0's reaches it. */
     std::ostream &log;
+    /** The lines of the default screen (and the log file). */
+    std::ostream &brief;
 
     /** A progress line: elapsed time, peak memory and @p what. */
     void
@@ -211,10 +230,12 @@ namespace fdem
   /**
    * Reads the .prm file and runs the case in its dimension; returns the
    * summary. Its "status" is "completed", or says why the contact problem
-   * has no solution.
+   * has no solution. The full log goes to log.txt in the results folder
+   * as well as to @p log's screen; the run ends with the result block
+   * (postprocess::result_block()).
    */
   nlohmann::json
-  run_case(const std::string &prm_file, std::ostream &log);
+  run_case(const std::string &prm_file, postprocess::RunLog &log);
 
   /**
    * Reads the .prm file and makes the model up to its node pairs, with the

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/safety_factor_analysis.h>
+#include <fdem/postprocess/run_log.h>
 
 #include <deal.II/base/timer.h>
 
@@ -42,6 +43,9 @@ namespace fdem
         solution = resisting_and_sliding_forces(*model.mixed_system, model.contact_outcome,
                                                 strengths, on_sliding_surface); // eq. (11)
       }
+      if (solution.has_factor())
+        model.log << "  F_R = " << std::setprecision(9) << solution.resisting_force
+                  << ", F_tau = " << solution.sliding_force << std::endl;
       if (solution.converged && on_solved_step)
         on_solved_step();
       return solution;
@@ -51,9 +55,9 @@ namespace fdem
     Result
     SafetyFactorAnalysis<dim>::run()
     {
-      model.log << "Safety factor (eqs. 10-13):" << std::endl;
+      model.brief << "Safety factor iteration (eqs. 10-13):" << std::endl;
       Result result = iterate([this](const double K) { return solve(K); },
-                                    model.parameters.safety_factor, model.log);
+                              model.parameters.safety_factor, model.brief);
       model.restore_last_static_state();
       model.log << "Safety factor: ";
       if (result.converged)
@@ -71,7 +75,7 @@ namespace fdem
                   << ", further apart than the tolerance: equilibrium is lost before K reaches "
                      "K* (e.g. a plane lifting off) or solves between failed numerically; K is "
                      "the conservative value";
-          model.warn(warning.str());
+          model.warn(postprocess::warning_text("conservative-bound", warning.str()));
         }
       result.stiffness = stiffness_sensitivity(result);
       const StiffnessSensitivity &check = result.stiffness;
@@ -87,7 +91,7 @@ namespace fdem
                   << "): K depends on the blocks' stiffness; the sliding surface may not be a "
                      "mechanism for rigid blocks (one block on a kinked surface: divide the "
                      "sliding mass into blocks at the kinks), and K then measures their elasticity";
-          model.warn(warning.str());
+          model.warn(postprocess::warning_text("stiffness-dependent", warning.str()));
         }
       return result;
     }
@@ -127,6 +131,12 @@ namespace fdem
           const Result r =
             iterate([this](const double K) { return solve(K); }, parameters, model.log);
           (stiffer ? check.K_stiffer : check.K_softer) = r.safety_factor;
+          model.brief << "Stiffness check, moving blocks " << check.factor << " times "
+                      << (stiffer ? "stiffer: " : "softer:  ");
+          if (r.converged)
+            model.brief << "K = " << std::setprecision(8) << r.safety_factor << std::endl;
+          else
+            model.brief << "no certified K (" << r.certificate.reason << ")" << std::endl;
           check.relative_change =
             r.converged ? std::max(check.relative_change,
                                    std::abs(r.safety_factor - base.safety_factor) / base.safety_factor) :

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace fdem
 {
@@ -71,17 +72,25 @@ namespace fdem
                !(K_high < step.K_star * (1 - tolerance));
       }
 
+      /**
+       * One line per step, for the default screen: K, K* and the pairs'
+       * statuses (F_R and F_tau are in summary.json and the log file).
+       */
       void
       log_step(const Step &step, const unsigned int n, std::ostream &log)
       {
         const ReducedStrengthSolution &s = step.solution;
-        log << "  safety factor step " << std::setw(2) << n << ": K = " << std::setprecision(9)
-            << step.K;
+        std::ostringstream             K;
+        K << std::setprecision(8) << step.K;
+        log << "  step " << std::setw(2) << n << ": K = " << std::left << std::setw(11) << K.str()
+            << std::right;
         if (s.has_factor())
-          log << ", F_R = " << s.resisting_force << ", F_tau = " << s.sliding_force
-              << ", K* = " << step.K_star << std::endl;
+          log << " K* = " << std::left << std::setw(11) << std::setprecision(8) << step.K_star
+              << std::right << " " << s.n_stick << " stick, " << s.n_slip << " slip, " << s.n_open
+              << " open" << std::endl;
         else
-          log << ": no static solution (" << s.result << ")" << std::endl;
+          log << " no static solution" << (s.mechanism ? ": a mechanism" : " (" + s.result + ")")
+              << std::endl;
       }
     } // namespace
 

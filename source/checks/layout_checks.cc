@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/checks/layout_checks.h>
+#include <fdem/postprocess/run_log.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/grid/reference_cell.h>
@@ -286,10 +287,11 @@ namespace fdem
                                  "sides of the face group are the same surface, or "
                                  "raise 'Search distance' if they are apart."));
           if (paired < 0.9 * shorter)
-            warnings.push_back("Interfaces/" + interface.name +
-                               ": its node pairs cover only " +
-                               number_text(100 * paired / shorter) +
-                               " % of its shorter side (" + measures + ").");
+            warnings.push_back(postprocess::warning_text("partial-contact",
+                                                         "Interfaces/" + interface.name +
+                                                           ": its node pairs cover only " +
+                                                           number_text(100 * paired / shorter) +
+                                                           " % of its shorter side (" + measures + ")."));
         }
       return warnings;
     }

@@ -190,6 +190,8 @@ namespace fdem
         summary["stiffness_sensitivity"] = {{"computed", check.computed},
                                             {"not_computed", check.not_computed},
                                             {"factor", check.factor},
+                                            {"warning_above",
+                                             model.parameters.safety_factor.stiffness_check_warning},
                                             {"wall_seconds", check.wall_seconds},
                                             {"K_stiffer", number_or_null(check.K_stiffer)},
                                             {"K_softer", number_or_null(check.K_softer)},
@@ -229,6 +231,9 @@ namespace fdem
                            model.mixed_system ? model.mixed_system->n_flexibility_products : 0},
                           {"iterations", iterations}};
     summary["warnings"] = model.warnings;
+    // For the log file and here, not the screen (postprocess/result_block.h).
+    summary["conditioning"] = {{"notes", model.conditioning_notes},
+                               {"max_digits_lost", model.max_digits_lost}};
     summary["status"]   = status(model, safety_factor);
     return summary;
     }

@@ -15,6 +15,9 @@ CASES = [
     ([], "no parameter file given; see --help"),
     (["a.prm", "b.prm"], "give one parameter file, not 'a.prm' and 'b.prm'; see --help"),
     (["--frobnicate"], "unknown option '--frobnicate'; see --help"),
+    (["--quiet", "--verbose", "a.prm"], "give --quiet or --verbose, not both; see --help"),
+    # --quiet keeps errors: one line on stderr.
+    (["--quiet", "{dir}"], "'{dir}': is a directory"),
     (["{dir}"], "'{dir}': is a directory"),
     (["/dev/null"], "'/dev/null': is not a regular file"),
     (["/dev/zero"], "'/dev/zero': is not a regular file"),

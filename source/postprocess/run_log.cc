@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/postprocess/run_log.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <iostream>
+
+namespace fdem
+{
+  namespace postprocess
+  {
+    void
+    TeeBuffer::add(std::streambuf *target)
+    {
+      targets.push_back(target);
+    }
+
+    TeeBuffer::int_type
+    TeeBuffer::overflow(const int_type c)
+    {
+      if (traits_type::eq_int_type(c, traits_type::eof()))
+        return traits_type::not_eof(c);
+      for (std::streambuf *target : targets)
+        target->sputc(traits_type::to_char_type(c));
+      return c;
+    }
+
+    std::streamsize
+    TeeBuffer::xsputn(const char *text, const std::streamsize n)
+    {
+      for (std::streambuf *target : targets)
+        target->sputn(text, n);
+      return n;
+    }
+
+    int
+    TeeBuffer::sync()
+    {
+      int result = 0;
+      for (std::streambuf *target : targets)
+        if (target->pubsync() != 0)
+          result = -1;
+      return result;
+    }
+
+    RunLog::RunLog(const Verbosity verbosity, const bool prints)
+      : screen_verbosity(verbosity)
+      , prints(prints)
+      , brief_stream(&brief_buffer)
+      , detail_stream(&detail_buffer)
+    {
+      if (!prints)
+        return;
+      if (verbosity != Verbosity::quiet)
+        brief_buffer.add(std::cout.rdbuf());
+      if (verbosity == Verbosity::verbose)
+        detail_buffer.add(std::cout.rdbuf());
+    }
+
+    void
+    RunLog::open_file(const std::string &path)
+    {
+      if (!prints)
+        return;
+      file.open(path);
+      AssertThrow(file,
+                  dealii::ExcMessage(
+                    "Output/Directory: cannot write the log file " + path +
+                    "."));
+      brief_buffer.add(file.rdbuf());
+      detail_buffer.add(file.rdbuf());
+    }
+
+    std::string
+    warning_text(const std::string &id, const std::string &text)
+    {
+      return "[" + id + "] " + text;
+    }
+
+    std::string
+    note_text(const std::string &id, const std::string &text)
+    {
+      return "[" + id + "] " + text;
+    }
+
+    std::string
+    message_id(const std::string &message)
+    {
+      const auto end = message.find("] ");
+      if (message.empty() || message[0] != '[' || end == std::string::npos)
+        return "";
+      return message.substr(1, end - 1);
+    }
+  } // namespace postprocess
+} // namespace fdem
