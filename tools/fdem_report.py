@@ -252,7 +252,7 @@ def model_picture(folder, summary, prm, interfaces, path):
             notes.append("the material regions could not be read from mesh.msh")
         for b, (name, edges) in enumerate(outlines):
             ax.add_collection(LineCollection(edges, colors="k", linewidths=0.9, zorder=2))
-            centre = np.mean([e[0] for e in edges], axis=0)
+            centre = np.mean(blocks[b][1][:, :2], axis=0)
             ax.annotate(f"block {name}", centre, fontsize=8, ha="center", zorder=4,
                         bbox=dict(boxstyle="round", fc="white", alpha=0.7, lw=0))
         water = polyline(prm.get("Water/Piezometric line", ""))
@@ -294,7 +294,8 @@ def model_picture(folder, summary, prm, interfaces, path):
         s, label = along(rows)
         local = np.array([r["local_safety_factor"] for r in rows])
         closed = np.array([r["status"] != "open" for r in rows])
-        ax2.plot(s[closed], np.minimum(local[closed], 10), lw=1, label=name)
+        if label == "arc length":
+            ax2.plot(s[closed], np.minimum(local[closed], 10), lw=1, label=name)
         ax2.scatter(s, np.minimum(local, 10), s=10, c=[STATUS_COLOURS.get(r["status"], "k") for r in rows],
                     zorder=3)
         ax2.set_xlabel(f"{label} along the surface (length unit)")
@@ -327,10 +328,15 @@ def stress_picture(summary, interfaces, path):
         c = np.array([r["cohesion"] for r in rows])
         phi = np.radians([r["friction_angle"] for r in rows])
         limit = c + np.maximum(sigma, 0) * np.tan(phi)
-        ax.plot(s, sigma, color="#377eb8", lw=1.4, label="normal stress σn (compression > 0)")
-        ax.plot(s, tau, color="#e41a1c", lw=1.4, label="shear stress τ")
-        ax.plot(s, limit, color="k", lw=1, ls="--", label="Mohr–Coulomb strength c + σn tan φ")
-        ax.plot(s, limit / K, color="#4daf4a", lw=1, ls=":", label=f"strength / K (K = {K:.3f})")
+        # A surface (3D) has no order along which lines mean anything: points.
+        line = {"lw": 1.4} if label == "arc length" else {"ls": "none", "marker": ".", "ms": 4}
+        limit_line = {"lw": 1} if label == "arc length" else {"ls": "none", "marker": "_", "ms": 5}
+        ax.plot(s, sigma, color="#377eb8", label="normal stress σn (compression > 0)", **line)
+        ax.plot(s, tau, color="#e41a1c", label="shear stress τ", **line)
+        ax.plot(s, limit, color="k", ls="--" if label == "arc length" else "none",
+                label="Mohr–Coulomb strength c + σn tan φ", **{k: v for k, v in limit_line.items() if k != "ls"})
+        ax.plot(s, limit / K, color="#4daf4a", ls=":" if label == "arc length" else "none",
+                label=f"strength / K (K = {K:.3f})", **{k: v for k, v in limit_line.items() if k != "ls"})
         ax.set_title(f"interface {name}", fontsize=10)
         ax.set_xlabel(f"{label} along the surface (length unit)")
         ax.set_ylabel("stress (force / length²)")
