@@ -13,6 +13,8 @@
                        the surface from its upper end, with an arc length
                        that adds up the distances between them
   my_first_slope EXE PRM  the guide's case (doc/build_your_own_model.md)
+  installed BUILD_DIR CASE  the program installed by `cmake --install`
+                       into a fresh prefix makes the report of CASE
 
 Runs under /usr/bin/python3 (matplotlib, numpy).
 """
@@ -194,11 +196,29 @@ def check_my_first_slope(exe, prm):
         assert {b["name"] for b in s["blocks"]} == {"sliding mass", "foundation"}
 
 
+def check_installed(build_dir, case):
+    """`cmake --install` into a fresh prefix: the installed program finds
+    its report script (share/fdem-slope/fdem_report.py) and makes the report
+    of an installed case, run from an unrelated folder."""
+    import tempfile
+    with tempfile.TemporaryDirectory(prefix="fdem-install-") as prefix:
+        subprocess.run(["cmake", "--install", build_dir, "--prefix", prefix], check=True,
+                       capture_output=True, text=True)
+        exe = os.path.join(prefix, "bin", "fdem-slope")
+        prm = os.path.join(prefix, "share", "fdem-slope", "prm", case)
+        assert os.path.exists(os.path.join(prefix, "share", "fdem-slope", "fdem_report.py"))
+        with fdem_run.temporary_run(exe, prm) as run:
+            assert run.ok, run.failure()
+            print("report:", run.summary["report"])
+            assert run.summary["report"]["made"] is True, run.summary["report"]
+            check_pictures(run.output)
+
+
 if __name__ == "__main__":
     checks = {"report": check_report, "no_python": check_no_python, "csv_order": check_csv_order,
-              "my_first_slope": check_my_first_slope}
+              "my_first_slope": check_my_first_slope, "installed": check_installed}
     if len(sys.argv) != 4 or sys.argv[1] not in checks:
-        print(f"usage: report_checks.py {{{'|'.join(checks)}}} EXE PRM")
+        print(f"usage: report_checks.py {{{'|'.join(checks)}}} EXE PRM (installed: BUILD_DIR CASE)")
         sys.exit(2)
     checks[sys.argv[1]](sys.argv[2], sys.argv[3])
     print("ok")
