@@ -7,9 +7,11 @@
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/report.h>
 
+#include <pthread.h>
 #include <sys/wait.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -96,6 +98,15 @@ namespace fdem
           // says which); 127 no Python (from the shell).
           const std::string command = quoted(python) + " " + quoted(script) +
                                       " " + quoted(folder) + " 2>&1";
+          // SIGINT, SIGTERM and SIGHUP wait until the script is done: their
+          // handler removes the partial folder, which the script would
+          // otherwise go on writing into (the folder must end whole or
+          // absent). The script inherits the mask; it takes about a second.
+          sigset_t stopping, previous;
+          sigemptyset(&stopping);
+          for (const int s : {SIGINT, SIGTERM, SIGHUP})
+            sigaddset(&stopping, s);
+          pthread_sigmask(SIG_BLOCK, &stopping, &previous);
           std::string output;
           if (FILE *pipe = popen(command.c_str(), "r"))
             {
@@ -115,6 +126,7 @@ namespace fdem
             }
           else
             reason = "cannot start " + python;
+          pthread_sigmask(SIG_SETMASK, &previous, nullptr);
         }
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
