@@ -18,11 +18,13 @@ cd "$(dirname "$0")"
 # mixed system; Debian's alternatives put it in place of the reference one.
 # libsuitesparse-dev: CHOLMOD (Direct solver = CHOLMOD); deal.II depends on it.
 # clang-format (Debian 12: version 14): the ctest format.check.
+# chromium: the headless browser in which the ctest report.paper_slope loads
+# a run's report.html (the test is skipped only where it is missing).
 # openmpi-bin: mpirun for the MPI runs and the mpi.* tests (libdeal.ii-dev
 # pulls in OpenMPI's libraries; named here so that mpirun is there for sure).
 packages=(cmake make g++ libdeal.ii-dev gmsh libgmsh-dev nlohmann-json3-dev
           libmumps-dev libsuitesparse-dev libgtest-dev numdiff python3-vtk9 python3-numpy python3-matplotlib
-          libopenblas0-serial openmpi-bin clang-format)
+          libopenblas0-serial openmpi-bin clang-format chromium)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -7,6 +7,7 @@
 #include <fdem/model.h>
 #include <fdem/postprocess/block_output.h>
 #include <fdem/postprocess/hertz_reference.h>
+#include <fdem/postprocess/interface_csv.h>
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_cost.h>
@@ -108,9 +109,16 @@ namespace fdem
     // Without equilibrium there is no field to show: only the summary says why.
     const bool converged = contact_outcome.converged();
     if (converged && writes_files)
-      postprocess::write_interface_csv(directory + "/interfaces.csv",
-                                       interfaces,
-                                       results);
+      {
+        // Each interface from its upper end: against gravity.
+        Tensor<1, dim> up;
+        for (unsigned int d = 0; d < dim; ++d)
+          up[d] = -parameters.loads.gravity_direction[d];
+        postprocess::write_interface_csv(directory + "/interfaces.csv",
+                                         interfaces,
+                                         results,
+                                         up);
+      }
     if (converged && parameters.output.write_vtu)
       {
         std::vector<postprocess::PvdEntry> entries;

@@ -4,6 +4,7 @@
 // The two ways main() runs a case: validate it (up to its node pairs, with
 // the layout checks) or run it into its results folder.
 #include <fdem/model.h>
+#include <fdem/postprocess/report.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>
 
@@ -56,6 +57,11 @@ namespace fdem
         model.run();
         summary = model.summary;
       }
+    // The report reads the finished files and goes into the folder before
+    // it is committed (a folder with a report is whole).
+    if (parameters.output.report && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 &&
+        summary.contains("status"))
+      postprocess::make_report(folder.staging(), summary, log.brief());
     folder.commit();
     std::string folder_name = results;
     while (folder_name.size() > 1 && folder_name.back() == '/')

@@ -211,4 +211,6 @@ def result_part(summary):
         summary.pop(key, None)
     if isinstance(summary.get("stiffness_sensitivity"), dict):
         summary["stiffness_sensitivity"].pop("wall_seconds", None)
+    if isinstance(summary.get("report"), dict):
+        summary["report"].pop("wall_seconds", None)
     return summary

@@ -556,6 +556,16 @@ namespace fdem
                         Patterns::Bool(),
                         "Write VTU/PVD files for ParaView. The CSV tables and "
                         "summary.json are always written.");
+      prm.declare_entry("Report",
+                        "true",
+                        Patterns::Bool(),
+                        "At the end of the run, make report.html (with its "
+                        "PNG pictures beside it) in the results folder by the "
+                        "Python script fdem_report.py installed with the "
+                        "program (needs python3 with matplotlib and numpy, "
+                        "and python3-vtk9 for the blocks in the model "
+                        "picture). Without them the run warns and "
+                        "summary.json says that no report was made.");
       prm.leave_subsection();
     }
 
@@ -565,6 +575,7 @@ namespace fdem
       prm.enter_subsection("Output");
       directory = prm.get("Directory");
       write_vtu = prm.get_bool("Write VTU");
+      report    = prm.get_bool("Report");
       prm.leave_subsection();
     }
   } // namespace parameters

@@ -229,38 +229,6 @@ namespace fdem
       return extent;
     }
 
-    template <int dim>
-    void
-    write_interface_csv(const std::string &                              filename,
-                        const std::vector<contact::Interface<dim>> &      interfaces,
-                        const std::vector<std::vector<PairResult<dim>>> &results)
-    {
-      std::ofstream out(filename);
-      AssertThrow(out.good(), ExcMessage("Cannot write '" + filename + "'."));
-      out << "interface,pair,x,y" << (dim == 3 ? ",z" : "") << ",normal_force,"
-          << (dim == 2 ? "tangential_force" : "tangential_force_1,tangential_force_2")
-          << ",normal_pressure,shear_stress,gap,slip,status,local_safety_factor,area,"
-             "initial_gap,reference_normal_pressure,cohesion,friction_angle\n";
-      out << std::setprecision(12);
-      for (unsigned int i = 0; i < interfaces.size(); ++i)
-        for (unsigned int k = 0; k < results[i].size(); ++k)
-          {
-            const PairResult<dim> &r = results[i][k];
-            out << '"' << interfaces[i].name << "\"," << k;
-            for (unsigned int d = 0; d < dim; ++d)
-              out << ',' << r.position[d];
-            out << ',' << r.normal_force;
-            for (const double f : r.tangential_force)
-              out << ',' << f;
-            out << ',' << r.normal_pressure << ',' << r.shear_stress << ','
-                << r.gap << ',' << r.slip << ',' << contact::status_name(r.status) << ','
-                << r.local_safety_factor << ',' << r.area << ',' << r.initial_gap << ',';
-            if (std::isfinite(r.reference_pressure))
-              out << r.reference_pressure;
-            out << ',' << r.cohesion << ',' << r.friction_angle << '\n';
-          }
-    }
-
     namespace
     {
       /**
@@ -386,9 +354,6 @@ namespace fdem
     const contact::Interface<dim> &, const unsigned int,                        \
     const contact::ContactSolution &, const std::vector<contact::PairState<dim>> &, \
     const std::vector<contact::PairStrength> &);                                \
-  template void write_interface_csv(const std::string &,                        \
-                                    const std::vector<contact::Interface<dim>> &, \
-                                    const std::vector<std::vector<PairResult<dim>>> &); \
   template std::string write_interface_vtu(const blocks::ElasticBlock<dim> &,   \
                                            const contact::Interface<dim> &,     \
                                            const std::vector<PairResult<dim>> &, \

@@ -233,6 +233,8 @@ namespace fdem
       std::string directory;
       /** Write VTU/PVD files for ParaView (the CSV and JSON files are always written). */
       bool write_vtu = true;
+      /** Make report.html at the end of the run (postprocess/report.h). */
+      bool report = true;
     };
 
     /** True if @p expression is a valid function of x, y (, z) with @p n_components components (separated by ';'). */

@@ -74,13 +74,6 @@ namespace fdem
     double
     contact_extent(const std::vector<PairResult<dim>> &results);
 
-    /** Writes all interfaces' pairs into one CSV table. */
-    template <int dim>
-    void
-    write_interface_csv(const std::string &                              filename,
-                        const std::vector<contact::Interface<dim>> &      interfaces,
-                        const std::vector<std::vector<PairResult<dim>>> &results);
-
     /**
      * Writes the interface as a surface (a line in 2D) on block J's faces,
      * with the pair results as nodal fields. Returns the file name. Only
