@@ -26,6 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
+import output_cost  # noqa: E402
 import scaling  # noqa: E402
 
 # Hoek & Bray's plane-failure formula with Priest's (1993) data
@@ -526,6 +527,10 @@ def main():
     scaling_csv = os.path.join(figures, "scaling.csv")
     if os.path.exists(scaling_csv):
         lines += scaling.benchmarks_section(scaling_csv)
+    # So is the Output cost section (benchmarks/output_cost.py).
+    output_cost_csv = os.path.join(figures, "output_cost.csv")
+    if os.path.exists(output_cost_csv):
+        lines += [""] + output_cost.benchmarks_section(output_cost_csv)
     with open(os.path.join(doc_dir, "benchmarks.md"), "w") as f:
         f.write("\n".join(lines))
     print(f"Wrote {os.path.join(doc_dir, 'benchmarks.md')} and {figures}/")

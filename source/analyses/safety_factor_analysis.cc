@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace fdem
@@ -14,8 +15,9 @@ namespace fdem
   namespace analyses
   {
     template <int dim>
-    SafetyFactorAnalysis<dim>::SafetyFactorAnalysis(Model<dim> &          model,
-                                                    std::function<void()> on_solved_step)
+    SafetyFactorAnalysis<dim>::SafetyFactorAnalysis(
+      Model<dim> &                                 model,
+      std::function<void(double K, double K_star)> on_solved_step)
       : model(model)
       , on_solved_step(std::move(on_solved_step))
       , on_sliding_surface(model.pairs_on_sliding_surface())
@@ -43,7 +45,9 @@ namespace fdem
                                                 strengths, on_sliding_surface); // eq. (11)
       }
       if (solution.converged && on_solved_step)
-        on_solved_step();
+        on_solved_step(K, solution.has_factor() ?
+                            K * solution.resisting_force / solution.sliding_force : // eq. (12)
+                            std::numeric_limits<double>::quiet_NaN());
       return solution;
     }
 

@@ -556,6 +556,14 @@ namespace fdem
                         Patterns::Bool(),
                         "Write VTU/PVD files for ParaView. The CSV tables and "
                         "summary.json are always written.");
+      prm.declare_entry("Write steps",
+                        "false",
+                        Patterns::Bool(),
+                        "With Write VTU: also write the VTU files of every "
+                        "safety-factor step with a static solution "
+                        "(safety_factor_steps.pvd lists them, the time being "
+                        "the step's K). False: only the final state's files, "
+                        "which safety_factor_steps.pvd then lists alone.");
       prm.leave_subsection();
     }
 
@@ -565,6 +573,7 @@ namespace fdem
       prm.enter_subsection("Output");
       directory = prm.get("Directory");
       write_vtu = prm.get_bool("Write VTU");
+      write_steps = prm.get_bool("Write steps");
       prm.leave_subsection();
     }
   } // namespace parameters

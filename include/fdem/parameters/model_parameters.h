@@ -233,6 +233,11 @@ namespace fdem
       std::string directory;
       /** Write VTU/PVD files for ParaView (the CSV and JSON files are always written). */
       bool write_vtu = true;
+      /**
+       * Also write the VTU files of every safety-factor step with a static
+       * solution, not only those of the final state.
+       */
+      bool write_steps = false;
     };
 
     /** True if @p expression is a valid function of x, y (, z) with @p n_components components (separated by ';'). */
