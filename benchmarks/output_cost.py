@@ -27,12 +27,13 @@ import common  # noqa: E402
 import fdem_run  # noqa: E402
 
 FIELDS = ["case", "label", "program", "total_s", "output_s", "recovery_s", "output_share",
-          "output_and_recovery_share", "files", "MB", "vtu_files"]
+          "output_and_recovery_share", "files", "MB", "vtu_files", "load"]
 
 
 def measure(exe, prm, repeat):
     """The run of @p prm with the median total of @p repeat runs: its row."""
     runs = []
+    load = os.getloadavg()[0]
     for _ in range(repeat):
         with fdem_run.temporary_run(exe, prm) as run:
             if not run.ok:
@@ -46,6 +47,7 @@ def measure(exe, prm, repeat):
                      "vtu_files": sum(1 for f in files if f.endswith(".vtu"))})
     median = statistics.median(r["total_s"] for r in runs)
     row = min(runs, key=lambda r: abs(r["total_s"] - median))
+    row["load"] = load
     row["output_share"] = row["output_s"] / row["total_s"]
     row["output_and_recovery_share"] = (row["output_s"] + row["recovery_s"]) / row["total_s"]
     return row
@@ -101,6 +103,12 @@ def benchmarks_section(csv_path):
             lines += ["", f"{label}: output and recovery take {100 * min(shares):.0f} % to "
                       f"{100 * max(shares):.0f} % of the run (median "
                       f"{100 * statistics.median(shares):.0f} %) over {len(shares)} cases."]
+        loads = [float(by[(c, label)]["load"]) for c in cases
+                 if (c, label) in by and by[(c, label)].get("load")]
+        if loads:
+            lines += [f"The machine's load average (1 minute) before each case of '{label}': "
+                      f"{min(loads):.1f} to {max(loads):.1f} on {os.cpu_count()} cores, "
+                      "shared with other work; the totals vary with it, the shares less."]
     lines += ["<!-- /output cost -->", ""]
     return lines
 
