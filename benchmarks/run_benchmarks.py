@@ -509,8 +509,8 @@ def main():
                 "factorisation as one phase. "
                 if "assembly and factorisation" in phases else "")
              + "The safety-factor iteration costs its contact solves, its own "
-             "'safety factor' phase, and with VTU output (off here) recovery and "
-             "output per step.", "",
+             "'safety factor' phase, and with VTU output of every step (off here; "
+             "Output/Write steps) recovery and output per step.", "",
              "The *cost ratio* is total / (geometry + setup + assembly + "
              "factorisation + one solve): what the run costs in units of one "
              "linear FE solve of the same model, measured in the same run.", "",
