@@ -26,6 +26,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
+import output_cost  # noqa: E402
 import scaling  # noqa: E402
 
 # Hoek & Bray's plane-failure formula with Priest's (1993) data
@@ -508,8 +509,8 @@ def main():
                 "factorisation as one phase. "
                 if "assembly and factorisation" in phases else "")
              + "The safety-factor iteration costs its contact solves, its own "
-             "'safety factor' phase, and with VTU output (off here) recovery and "
-             "output per step.", "",
+             "'safety factor' phase, and with VTU output of every step (off here; "
+             "Output/Write steps) recovery and output per step.", "",
              "The *cost ratio* is total / (geometry + setup + assembly + "
              "factorisation + one solve): what the run costs in units of one "
              "linear FE solve of the same model, measured in the same run.", "",
@@ -526,6 +527,10 @@ def main():
     scaling_csv = os.path.join(figures, "scaling.csv")
     if os.path.exists(scaling_csv):
         lines += scaling.benchmarks_section(scaling_csv)
+    # So is the Output cost section (benchmarks/output_cost.py).
+    output_cost_csv = os.path.join(figures, "output_cost.csv")
+    if os.path.exists(output_cost_csv):
+        lines += [""] + output_cost.benchmarks_section(output_cost_csv)
     with open(os.path.join(doc_dir, "benchmarks.md"), "w") as f:
         f.write("\n".join(lines))
     print(f"Wrote {os.path.join(doc_dir, 'benchmarks.md')} and {figures}/")

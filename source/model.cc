@@ -19,6 +19,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace fdem
@@ -77,17 +78,28 @@ namespace fdem
     compute_flexibility();
     if (parameters.safety_factor.compute)
       {
-        // Each step with a static solution can be looked at in ParaView.
-        const auto write_step = [this]() {
-          if (!parameters.output.write_vtu)
-            return;
-          // Both collective: every rank comes here, rank 0 writes.
+        // With Output/Write steps, each step with a static solution can be
+        // looked at in ParaView, K as its time.
+        const std::function<void(double, double)> write_step = [this](const double K,
+                                                                        const double K_star) {
+          // The recovery is collective (the block solves): every rank comes here.
           recover_block_displacements();
           TimerOutput::Scope scope(timer, "output");
-          const unsigned int step = step_files.empty() ? 0 : step_files.back().time + 1;
-          write_vtu("-step" + Utilities::int_to_string(step, 3), step, step_files);
+          const unsigned int step = step_files.size() / (blocks.size() + interfaces.size());
+          std::ostringstream description;
+          description << "safety-factor step " << step << " with a static solution, K = "
+                      << std::setprecision(9) << K;
+          write_vtu("-step" + Utilities::int_to_string(step, 3),
+                    {K, K_star, description.str()},
+                    step_files);
         };
-        safety_factor_result = analyses::SafetyFactorAnalysis<dim>(*this, write_step).run();
+        safety_factor_result =
+          analyses::SafetyFactorAnalysis<dim>(*this,
+                                              parameters.output.write_vtu &&
+                                                  parameters.output.write_steps ?
+                                                write_step :
+                                                std::function<void(double, double)>())
+            .run();
         // Beside K, the factor that stress-based programs report: one more
         // solve on the same factorisations (after K, so as not to change
         // the factors the iteration starts from).

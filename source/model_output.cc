@@ -9,6 +9,7 @@
 #include <fdem/postprocess/hertz_reference.h>
 #include <fdem/postprocess/interface_csv.h>
 #include <fdem/postprocess/interface_output.h>
+#include <fdem/postprocess/interface_vtu.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_cost.h>
 #include <fdem/postprocess/summary.h>
@@ -20,22 +21,31 @@
 namespace fdem
 {
   template <int dim>
+  std::vector<Vector<double>>
+  Model<dim>::block_displacements(
+    const contact::ContactSolution &solution) const
+  {
+    std::vector<Vector<double>> u_all;
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        Vector<double> u =
+          blocks[b]->solve(mixed_system->block_nodal_forces(b, solution));
+        Vector<double> gamma(blocks[b]->n_free_rigid_modes());
+        for (unsigned int m = 0; m < gamma.size(); ++m)
+          gamma[m] =
+            solution.rigid_motions[mixed_system->first_rigid_unknown[b] + m];
+        blocks[b]->add_rigid_motion(gamma, u);
+        u_all.push_back(u);
+      }
+    return u_all;
+  }
+
+  template <int dim>
   void
   Model<dim>::recover_block_displacements()
   {
     TimerOutput::Scope scope(timer, "recovery");
-    displacements.clear();
-    for (unsigned int b = 0; b < blocks.size(); ++b)
-      {
-        Vector<double> u = blocks[b]->solve(
-          mixed_system->block_nodal_forces(b, contact_outcome.solution));
-        Vector<double> gamma(blocks[b]->n_free_rigid_modes());
-        for (unsigned int m = 0; m < gamma.size(); ++m)
-          gamma[m] = contact_outcome.solution
-                       .rigid_motions[mixed_system->first_rigid_unknown[b] + m];
-        blocks[b]->add_rigid_motion(gamma, u);
-        displacements.push_back(u);
-      }
+    displacements = block_displacements(contact_outcome.solution);
   }
 
   template <int dim>
@@ -60,8 +70,9 @@ namespace fdem
   template <int dim>
   void
   Model<dim>::write_vtu(const std::string                  &suffix,
-                        const double                        time,
-                        std::vector<postprocess::PvdEntry> &entries)
+                        const postprocess::OutputState     &state,
+                        std::vector<postprocess::PvdEntry> &entries,
+                        const std::vector<Vector<double>>  *mechanism)
   {
     const std::string directory = parameters.output_directory();
     const auto        results   = interface_results();
@@ -76,24 +87,42 @@ namespace fdem
                           suffix :
                           "-" + std::to_string(i) + suffix;
     };
+    // Only rank 0 writes (every rank holds every block); not collective.
     for (unsigned int b = 0; b < blocks.size(); ++b)
       entries.push_back(
-        {time,
+        {state.K,
          part++,
+         blocks[b]->name,
          postprocess::write_block_vtu(*blocks[b],
                                       b,
                                       displacements[b],
+                                      mechanism ? &(*mechanism)[b] : nullptr,
+                                      state,
                                       directory,
                                       unique("block-", blocks[b]->name, b))});
     for (unsigned int i = 0; i < interfaces.size(); ++i)
-      entries.push_back({time,
-                         part++,
-                         postprocess::write_interface_vtu(
-                           *blocks[interfaces[i].block_J],
-                           interfaces[i],
-                           results[i],
-                           directory,
-                           unique("interface-", interfaces[i].name, i))});
+      {
+        // Nodes paired on an interface listed before (a wedge's line of
+        // intersection): no pair of this one.
+        std::vector<Point<dim>> shared;
+        for (const auto &node : interfaces[i].shared_nodes)
+          shared.push_back(
+            interfaces[node.interface].pairs[node.pair].position_J);
+        const unsigned int J = interfaces[i].block_J;
+        entries.push_back({state.K,
+                           part++,
+                           interfaces[i].name,
+                           postprocess::write_interface_vtu(
+                             *blocks[J],
+                             interfaces[i],
+                             results[i],
+                             shared,
+                             displacements[J],
+                             mechanism ? &(*mechanism)[J] : nullptr,
+                             state,
+                             directory,
+                             unique("interface-", interfaces[i].name, i))});
+      }
   }
 
   template <int dim>
@@ -121,13 +150,40 @@ namespace fdem
       }
     if (converged && parameters.output.write_vtu)
       {
+        postprocess::OutputState state;
+        state.K = strength_reduction;
+        // The mechanism: from the elastic state with every pair stuck (the
+        // FE-stress factor's, same loads) to this one: one more solve per
+        // block (collective), where the safety factor was computed.
+        std::vector<Vector<double>> mechanism;
+        const auto                 &all_stick = fe_stress.all_stick;
+        if (parameters.safety_factor.compute && all_stick.solved &&
+            all_stick.forces.size() == dim * mixed_system->n_pairs())
+          {
+            mechanism = block_displacements(all_stick);
+            for (unsigned int b = 0; b < blocks.size(); ++b)
+              mechanism[b].sadd(-1.0, 1.0, displacements[b]);
+          }
+        if (parameters.safety_factor.compute)
+          {
+            for (const auto &step : safety_factor_result.steps)
+              if (step.K == strength_reduction && step.solution.has_factor())
+                state.K_star = step.K_star;
+            state.description =
+              "final state: the last state of the safety-factor iteration "
+              "with a static solution";
+          }
+        else
+          state.description =
+            "final state: the contact problem at full strength";
         std::vector<postprocess::PvdEntry> entries;
-        write_vtu("", 0, entries); // collective, rank 0 writes
+        write_vtu("", state, entries, mechanism.empty() ? nullptr : &mechanism);
         if (writes_files)
           postprocess::write_pvd(directory + "/solution.pvd", entries);
-        if (!step_files.empty() && writes_files)
+        // The steps' files if they were written, else the final state's.
+        if (parameters.safety_factor.compute && writes_files)
           postprocess::write_pvd(directory + "/safety_factor_steps.pvd",
-                                 step_files);
+                                 step_files.empty() ? entries : step_files);
       }
     // Reactions at the minimal support, zero at equilibrium: a pass over all
     // cells, timed as output.
@@ -167,10 +223,16 @@ namespace fdem
   Model<3>::output_results();
   template void
   Model<2>::write_vtu(const std::string &,
-                      double,
-                      std::vector<postprocess::PvdEntry> &);
+                      const postprocess::OutputState &,
+                      std::vector<postprocess::PvdEntry> &,
+                      const std::vector<Vector<double>> *);
   template void
   Model<3>::write_vtu(const std::string &,
-                      double,
-                      std::vector<postprocess::PvdEntry> &);
+                      const postprocess::OutputState &,
+                      std::vector<postprocess::PvdEntry> &,
+                      const std::vector<Vector<double>> *);
+  template std::vector<Vector<double>>
+  Model<2>::block_displacements(const contact::ContactSolution &) const;
+  template std::vector<Vector<double>>
+  Model<3>::block_displacements(const contact::ContactSolution &) const;
 } // namespace fdem

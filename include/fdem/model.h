@@ -12,6 +12,7 @@
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/run_log.h>
+#include <fdem/postprocess/vtu_writer.h>
 #include <fdem/analyses/fe_stress_factor.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 
@@ -184,9 +185,20 @@ namespace fdem
     std::vector<std::vector<postprocess::PairResult<dim>>>
     interface_results() const;
 
-    /** Block and interface VTU files of the current state, listed in @p entries. */
+    /**
+     * Block and interface VTU files of the current state, described by
+     * @p state, listed in @p entries with K as their time; with the
+     * mechanism displacement of each block if @p mechanism is given.
+     */
     void
-    write_vtu(const std::string &suffix, const double time, std::vector<postprocess::PvdEntry> &entries);
+    write_vtu(const std::string &                 suffix,
+              const postprocess::OutputState &    state,
+              std::vector<postprocess::PvdEntry> &entries,
+              const std::vector<Vector<double>> * mechanism = nullptr);
+
+    /** Block displacements of the contact solution @p solution (see recover_block_displacements()). */
+    std::vector<Vector<double>>
+    block_displacements(const contact::ContactSolution &solution) const;
 
     std::string   expanded_parameters;
 

@@ -22,6 +22,7 @@ namespace fdem
           result.not_computed = "the all-stick state has no solution";
           return result;
         }
+      result.all_stick = stuck.solution;
       // The same sums as eq. (11), at full strength.
       const ReducedStrengthSolution sums = resisting_and_sliding_forces(
         system, stuck, strengths, on_sliding_surface);

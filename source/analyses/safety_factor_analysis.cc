@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace fdem
@@ -15,8 +16,9 @@ namespace fdem
   namespace analyses
   {
     template <int dim>
-    SafetyFactorAnalysis<dim>::SafetyFactorAnalysis(Model<dim> &          model,
-                                                    std::function<void()> on_solved_step)
+    SafetyFactorAnalysis<dim>::SafetyFactorAnalysis(
+      Model<dim> &                                 model,
+      std::function<void(double K, double K_star)> on_solved_step)
       : model(model)
       , on_solved_step(std::move(on_solved_step))
       , on_sliding_surface(model.pairs_on_sliding_surface())
@@ -47,7 +49,9 @@ namespace fdem
         model.log << "  F_R = " << std::setprecision(9) << solution.resisting_force
                   << ", F_tau = " << solution.sliding_force << std::endl;
       if (solution.converged && on_solved_step)
-        on_solved_step();
+        on_solved_step(K, solution.has_factor() ?
+                            K * solution.resisting_force / solution.sliding_force : // eq. (12)
+                            std::numeric_limits<double>::quiet_NaN());
       return solution;
     }
 

@@ -566,6 +566,14 @@ namespace fdem
                         "and python3-vtk9 for the blocks in the model "
                         "picture). Without them the run warns and "
                         "summary.json says that no report was made.");
+      prm.declare_entry("Write steps",
+                        "false",
+                        Patterns::Bool(),
+                        "With Write VTU: also write the VTU files of every "
+                        "safety-factor step with a static solution "
+                        "(safety_factor_steps.pvd lists them, the time being "
+                        "the step's K). False: only the final state's files, "
+                        "which safety_factor_steps.pvd then lists alone.");
       prm.leave_subsection();
     }
 
@@ -576,6 +584,7 @@ namespace fdem
       directory = prm.get("Directory");
       write_vtu = prm.get_bool("Write VTU");
       report    = prm.get_bool("Report");
+      write_steps = prm.get_bool("Write steps");
       prm.leave_subsection();
     }
   } // namespace parameters

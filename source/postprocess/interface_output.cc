@@ -3,21 +3,12 @@
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/output_files.h>
 
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_simplex_p.h>
-#include <deal.II/fe/mapping_fe.h>
-#include <deal.II/fe/mapping_q.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/numerics/data_out.h>
 
 #include <fstream>
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <map>
-#include <memory>
 #include <numeric>
 
 namespace fdem
@@ -229,123 +220,6 @@ namespace fdem
       return extent;
     }
 
-    namespace
-    {
-      /**
-       * The faces of @p volume on boundary part @p id as a mesh of
-       * dimension dim-1: GridGenerator::extract_boundary_mesh() of deal.II
-       * 9.4 takes hypercubes only (it crashes on tetrahedra).
-       */
-      template <int dim>
-      void
-      extract_simplex_faces(const Triangulation<dim> &    volume,
-                            const types::boundary_id      id,
-                            Triangulation<dim - 1, dim> &surface)
-      {
-        std::vector<Point<dim>>         vertices;
-        std::map<unsigned int, unsigned int> surface_vertex;
-        std::vector<CellData<dim - 1>>  cells;
-        for (const auto &cell : volume.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() && face->boundary_id() == id)
-              {
-                CellData<dim - 1> surface_cell(face->n_vertices());
-                for (const unsigned int v : face->vertex_indices())
-                  {
-                    const auto [it, is_new] =
-                      surface_vertex.emplace(face->vertex_index(v), vertices.size());
-                    if (is_new)
-                      vertices.push_back(face->vertex(v));
-                    surface_cell.vertices[v] = it->second;
-                  }
-                cells.push_back(surface_cell);
-              }
-        surface.create_triangulation(vertices, cells, SubCellData());
-      }
-    } // namespace
-
-    template <int dim>
-    std::string
-    write_interface_vtu(const blocks::ElasticBlock<dim> &   block_J,
-                        const contact::Interface<dim> &     interface,
-                        const std::vector<PairResult<dim>> &results,
-                        const std::string &                 directory,
-                        const std::string &                 suffix)
-    {
-      // The interface as a mesh of dimension dim-1 cut from block J.
-      Triangulation<dim - 1, dim> surface;
-      if (block_J.element_family.simplex)
-        extract_simplex_faces(block_J.triangulation, interface.face_group, surface);
-      else
-        GridGenerator::extract_boundary_mesh(static_cast<const Triangulation<dim> &>(
-                                               block_J.triangulation),
-                                             surface,
-                                             {interface.face_group});
-      // Triangles in 3D on a mesh of tetrahedra; quadrilaterals or lines
-      // otherwise (the faces of triangles are lines too).
-      const unsigned int degree = block_J.fe.degree;
-      std::unique_ptr<FiniteElement<dim - 1, dim>> fe;
-      std::unique_ptr<Mapping<dim - 1, dim>>       mapping;
-      if (dim == 3 && block_J.element_family.simplex)
-        {
-          fe      = std::make_unique<FE_SimplexP<dim - 1, dim>>(degree);
-          mapping = std::make_unique<MappingFE<dim - 1, dim>>(
-            FE_SimplexP<dim - 1, dim>(1));
-        }
-      else
-        {
-          fe      = std::make_unique<FE_Q<dim - 1, dim>>(degree);
-          mapping = std::make_unique<MappingQ<dim - 1, dim>>(1);
-        }
-      DoFHandler<dim - 1, dim> dof_handler(surface);
-      dof_handler.distribute_dofs(*fe);
-      std::vector<Point<dim>> support_points(dof_handler.n_dofs());
-      DoFTools::map_dofs_to_support_points(*mapping, dof_handler, support_points);
-
-      const std::vector<std::string> names = {"normal_force",
-                                              "tangential_force",
-                                              "normal_pressure",
-                                              "shear_stress",
-                                              "gap",
-                                              "slip",
-                                              "status",
-                                              "local_safety_factor",
-                                              "paired"};
-      std::vector<Vector<double>> fields(names.size(),
-                                         Vector<double>(dof_handler.n_dofs()));
-      for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
-        for (const PairResult<dim> &r : results)
-          if (r.position.distance(support_points[i]) <=
-              1e-9 * (r.area + r.position.norm()))
-            {
-              double shear = 0;
-              for (const double f : r.tangential_force)
-                shear += f * f;
-              fields[0][i] = r.normal_force;
-              fields[1][i] = dim == 2 ? r.tangential_force[0] : std::sqrt(shear);
-              fields[2][i] = r.normal_pressure;
-              fields[3][i] = r.shear_stress;
-              fields[4][i] = r.gap;
-              fields[5][i] = r.slip;
-              // 0 stick, 1 slip, 2 open.
-              fields[6][i] = static_cast<double>(r.status);
-              fields[7][i] = r.local_safety_factor;
-              fields[8][i] = 1;
-              break;
-            }
-
-      DataOut<dim - 1, dim> data_out;
-      data_out.attach_dof_handler(dof_handler);
-      for (unsigned int f = 0; f < names.size(); ++f)
-        data_out.add_data_vector(fields[f], names[f]);
-      data_out.build_patches(*mapping, degree);
-      const std::string name = "interface-" + file_stem(interface.name) + suffix + ".vtu";
-      if (Utilities::MPI::this_mpi_process(block_J.triangulation.get_communicator()) != 0)
-        return name;
-      std::ofstream     out(directory + "/" + name);
-      AssertThrow(out.good(), ExcMessage("Cannot write '" + directory + "/" + name + "'."));
-      data_out.write_vtu(out);
-      return name;
     }
 
 #define FDEM_INSTANTIATE(dim)                                                   \
@@ -354,11 +228,6 @@ namespace fdem
     const contact::Interface<dim> &, const unsigned int,                        \
     const contact::ContactSolution &, const std::vector<contact::PairState<dim>> &, \
     const std::vector<contact::PairStrength> &);                                \
-  template std::string write_interface_vtu(const blocks::ElasticBlock<dim> &,   \
-                                           const contact::Interface<dim> &,     \
-                                           const std::vector<PairResult<dim>> &, \
-                                           const std::string &,                 \
-                                           const std::string &);
     FDEM_INSTANTIATE(2)
     FDEM_INSTANTIATE(3)
 #undef FDEM_INSTANTIATE

@@ -12,6 +12,18 @@ namespace fdem
 {
   namespace postprocess
   {
+    namespace
+    {
+      std::string
+      xml_escaped(const std::string &text)
+      {
+        std::string out;
+        for (const char c : text)
+          out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
+        return out;
+      }
+    } // namespace
+
     void
     write_pvd(const std::string &filename, const std::vector<PvdEntry> &entries)
     {
@@ -21,9 +33,12 @@ namespace fdem
       out << "<?xml version=\"1.0\"?>\n"
           << "<VTKFile type=\"Collection\" version=\"0.1\" "
              "byte_order=\"LittleEndian\">\n  <Collection>\n";
+      // K to 12 digits: steps of the iteration closer than that are one time.
+      out << std::setprecision(12);
       for (const PvdEntry &entry : entries)
         out << "    <DataSet timestep=\"" << entry.time << "\" group=\"\" part=\""
-            << entry.part << "\" file=\"" << entry.file << "\"/>\n";
+            << entry.part << "\" name=\"" << xml_escaped(entry.name) << "\" file=\""
+            << entry.file << "\"/>\n";
       out << "  </Collection>\n</VTKFile>\n";
     }
 

@@ -31,6 +31,11 @@ namespace fdem
       double      sliding_force   = 0;
       /** Pairs of the sliding surface in tension in the all-stick state. */
       unsigned int n_pairs_in_tension = 0;
+      /**
+       * The all-stick state itself (if solved): the elastic state from
+       * which the output's mechanism displacement is measured.
+       */
+      contact::ContactSolution all_stick;
     };
 
     /**

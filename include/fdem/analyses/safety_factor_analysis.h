@@ -24,10 +24,12 @@ namespace fdem
     {
     public:
       /**
-       * @p on_solved_step is called after each step with a static solution,
-       * the model in that state (e.g. to write the step's VTU files).
+       * @p on_solved_step(K, K*) is called after each step with a static
+       * solution, the model in that state (e.g. to write the step's VTU
+       * files); K* is NaN where the step has no sliding force.
        */
-      SafetyFactorAnalysis(Model<dim> &model, std::function<void()> on_solved_step = {});
+      SafetyFactorAnalysis(Model<dim> &                              model,
+                           std::function<void(double K, double K_star)> on_solved_step = {});
 
       /**
        * The iteration with its certificate; leaves the model in the last
@@ -38,7 +40,7 @@ namespace fdem
 
     private:
       Model<dim> &          model;
-      std::function<void()> on_solved_step;
+      std::function<void(double K, double K_star)> on_solved_step;
       /** Per pair of all interfaces: on a sliding surface? */
       std::vector<bool> on_sliding_surface;
 

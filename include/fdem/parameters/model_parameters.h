@@ -235,6 +235,11 @@ namespace fdem
       bool write_vtu = true;
       /** Make report.html at the end of the run (postprocess/report.h). */
       bool report = true;
+      /**
+       * Also write the VTU files of every safety-factor step with a static
+       * solution, not only those of the final state.
+       */
+      bool write_steps = false;
     };
 
     /** True if @p expression is a valid function of x, y (, z) with @p n_components components (separated by ';'). */

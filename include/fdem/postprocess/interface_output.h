@@ -74,17 +74,5 @@ namespace fdem
     double
     contact_extent(const std::vector<PairResult<dim>> &results);
 
-    /**
-     * Writes the interface as a surface (a line in 2D) on block J's faces,
-     * with the pair results as nodal fields. Returns the file name. Only
-     * rank 0 of block J's communicator writes the file.
-     */
-    template <int dim>
-    std::string
-    write_interface_vtu(const blocks::ElasticBlock<dim> &    block_J,
-                        const contact::Interface<dim> &      interface,
-                        const std::vector<PairResult<dim>> &results,
-                        const std::string &                  directory,
-                        const std::string &                  suffix);
   } // namespace postprocess
 } // namespace fdem

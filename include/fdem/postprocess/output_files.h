@@ -14,12 +14,18 @@ namespace fdem
     /** One dataset of a ParaView .pvd collection. */
     struct PvdEntry
     {
+      /** The safety factor step's K (1 for a run at full strength). */
       double       time = 0;
       unsigned int part = 0;
+      /** The block's or interface's name: what ParaView shows for the dataset. */
+      std::string  name;
       std::string  file;
     };
 
-    /** Writes a .pvd collection; datasets with the same time are parts of one step. */
+    /**
+     * Writes a .pvd collection; datasets with the same time are parts of one
+     * step, each with its name.
+     */
     void
     write_pvd(const std::string &filename, const std::vector<PvdEntry> &entries);
 
