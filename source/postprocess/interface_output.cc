@@ -220,14 +220,12 @@ namespace fdem
       return extent;
     }
 
-    }
-
 #define FDEM_INSTANTIATE(dim)                                                   \
   template double contact_extent(const std::vector<PairResult<dim>> &);         \
   template std::vector<PairResult<dim>> pair_results(                           \
     const contact::Interface<dim> &, const unsigned int,                        \
     const contact::ContactSolution &, const std::vector<contact::PairState<dim>> &, \
-    const std::vector<contact::PairStrength> &);                                \
+    const std::vector<contact::PairStrength> &);
     FDEM_INSTANTIATE(2)
     FDEM_INSTANTIATE(3)
 #undef FDEM_INSTANTIATE
