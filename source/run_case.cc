@@ -61,7 +61,11 @@ namespace fdem
     // it is committed (a folder with a report is whole).
     if (parameters.output.report && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 &&
         summary.contains("status"))
-      postprocess::make_report(folder.staging(), summary, log.brief());
+      {
+        postprocess::make_report(folder.staging(), summary, log.detail());
+        if (!summary["report"]["made"].get<bool>())
+          log.brief() << "warning: " << summary["warnings"].back().get<std::string>() << std::endl;
+      }
     folder.commit();
     std::string folder_name = results;
     while (folder_name.size() > 1 && folder_name.back() == '/')

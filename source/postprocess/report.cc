@@ -6,6 +6,7 @@
 // only finds and runs it, and records what came of it.
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/report.h>
+#include <fdem/postprocess/run_log.h>
 
 #include <pthread.h>
 #include <sys/wait.h>
@@ -145,8 +146,8 @@ namespace fdem
           summary["report"] = {{"made", false},
                                {"reason", reason},
                                {"wall_seconds", seconds}};
-          summary["warnings"].push_back("no report: " + reason);
-          log << "warning: no report: " << reason << std::endl;
+          // The caller shows the warning: it belongs on the screen.
+          summary["warnings"].push_back(warning_text("no-report", reason));
         }
       write_json(folder + "/summary.json", summary);
     }

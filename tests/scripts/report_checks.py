@@ -127,10 +127,10 @@ def check_no_python(exe, prm):
         assert run.ok, run.failure()
         warnings = [l for l in run.stdout.splitlines() if "no report" in l]
         print(warnings)
-        assert len(warnings) == 1 and warnings[0].startswith("warning: no report: "), warnings
+        assert len(warnings) == 1 and warnings[0].startswith("warning: [no-report] "), warnings
         report = run.summary["report"]
         assert report["made"] is False and "/nonexistent/python3" in report["reason"], report
-        assert any(w.startswith("no report: ") for w in run.summary["warnings"])
+        assert any(w.startswith("[no-report] ") for w in run.summary["warnings"])
         files = set(os.listdir(run.output))
         assert "report.html" not in files and not files & set(PICTURES), files
         assert {"summary.json", "interfaces.csv", "parameters.prm"} <= files, files

@@ -26,8 +26,9 @@ namespace fdem
      * found when the program was configured, and records in @p summary and
      * in @p folder/summary.json whether it was made ("report": made, file
      * or reason, wall_seconds). Without Python, matplotlib or the script,
-     * or if the script fails, the run goes on: one warning line on
-     * @p log, the reason in summary.json's "report" and "warnings". The
+     * or if the script fails, the run goes on: the reason in
+     * summary.json's "report" and, as the warning [no-report], as the last of
+     * its "warnings" (the caller shows it). The
      * report's wall time goes to @p log; it is not part of the run's
      * "timings".
      */
