@@ -63,6 +63,9 @@ namespace fdem
 
     // A progress line at the start of each phase: on a long run the screen
     // says what the program is doing and how long it has taken so far.
+    // Limit equilibrium first: it needs only the parameters, and a surface
+    // outside the model is reported before any mesh is made.
+    limit_equilibrium = analyses::model_limit_equilibrium(parameters);
     progress("mesh");
     make_geometry();
     progress("blocks: dofs, constraints, free rigid modes");
@@ -99,6 +102,7 @@ namespace fdem
         progress("contact problem");
         solve_contact();
       }
+    analyses::print_limit_equilibrium(limit_equilibrium, log);
     if (contact_outcome.converged())
       recover_block_displacements();
     progress("output");
