@@ -156,23 +156,34 @@ namespace fdem
                   gaps[i] = nan;
                 }
             }
+          double W = 0;
+          for (const Slice &s : mass.slices)
+            W += s.W;
+          const double scale = W * (mass.x.back() - mass.x.front());
+          // Every sign change is refined; one where the K of force
+          // equilibrium jumps (its largest root in [0.05, 50] passes from a
+          // spurious branch to the physical one, as at strongly negative
+          // lambda) leaves a gap that does not vanish and is no solution. Of
+          // the solutions, the one nearest lambda = 0.
           MethodResult result;
           for (unsigned int i = 0; i + 1 < n_lambdas; ++i)
             if (std::isfinite(gaps[i]) && std::isfinite(gaps[i + 1]) &&
                 gaps[i] * gaps[i + 1] <= 0)
               {
-                result.lambda =
+                const double lambda =
                   find_root(moment_gap, lambdas[i], lambdas[i + 1], 10 * tolerance);
-                result.K = force_K(result.lambda);
-                return result;
+                if (std::abs(moment_gap(lambda)) <= 1e-6 * scale &&
+                    !(std::abs(lambda) >= std::abs(result.lambda)))
+                  result.lambda = lambda;
               }
+          if (std::isfinite(result.lambda))
+            {
+              result.K = force_K(result.lambda);
+              return result;
+            }
           // A plane without cohesion: every slice's forces are proportional
           // to its weight whatever lambda, so moment equilibrium does not fix
           // lambda (the gap left is the midpoint rule's).
-          double W = 0;
-          for (const Slice &s : mass.slices)
-            W += s.W;
-          const double scale = W * (mass.x.back() - mass.x.front());
           double smallest = nan, best_lambda = nan, low = nan, high = nan;
           for (unsigned int i = 0; i < n_lambdas; ++i)
             if (std::isfinite(gaps[i]))
