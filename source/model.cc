@@ -63,11 +63,12 @@ namespace fdem
 
     // A progress line at the start of each phase: on a long run the screen
     // says what the program is doing and how long it has taken so far.
-    // Limit equilibrium first: it needs only the parameters, and a surface
-    // outside the model is reported before any mesh is made.
-    limit_equilibrium = analyses::model_limit_equilibrium(parameters);
     progress("mesh");
     make_geometry();
+    // Limit equilibrium on the generator's section: after the mesh, so that
+    // the generator's own checks of the surface come first; it needs only
+    // the parameters and takes a fraction of a second.
+    limit_equilibrium = analyses::model_limit_equilibrium(parameters);
     progress("blocks: dofs, constraints, free rigid modes");
     setup_blocks();
     progress("assembly and factorisation");

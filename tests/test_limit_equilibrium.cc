@@ -24,12 +24,13 @@ namespace
 {
   using Line = std::vector<Point<2>>;
 
-  const std::vector<le::Method> all_methods = {le::Method::ordinary,
-                                               le::Method::janbu,
-                                               le::Method::janbu_corrected,
-                                               le::Method::spencer,
-                                               le::Method::morgenstern_price_constant,
-                                               le::Method::morgenstern_price_half_sine};
+  const std::vector<le::Method> all_methods = {
+    le::Method::ordinary,
+    le::Method::janbu,
+    le::Method::janbu_corrected,
+    le::Method::spencer,
+    le::Method::morgenstern_price_constant,
+    le::Method::morgenstern_price_half_sine};
 
   /** Area of a polygon (shoelace, signed). */
   double
@@ -52,12 +53,19 @@ namespace
    * water force in a crack of depth @p crack at the upper end.
    */
   double
-  planar_K(const double c, const double phi, const double gamma, const Point<2> &p0,
-           const Point<2> &p1, const Line &ground, const double wa = NAN,
-           const double wb = NAN, const double crack = 0)
+  planar_K(const double    c,
+           const double    phi,
+           const double    gamma,
+           const Point<2> &p0,
+           const Point<2> &p1,
+           const Line     &ground,
+           const double    wa    = NAN,
+           const double    wb    = NAN,
+           const double    crack = 0)
   {
-    const double beta = std::atan2(p1[1] - p0[1], p1[0] - p0[0]), length = p0.distance(p1);
-    Line         outline = {p0, p1, Point<2>(p1[0], le::elevation(ground, p1[0]))};
+    const double beta   = std::atan2(p1[1] - p0[1], p1[0] - p0[0]),
+                 length = p0.distance(p1);
+    Line outline = {p0, p1, Point<2>(p1[0], le::elevation(ground, p1[0]))};
     for (auto p = ground.rbegin(); p != ground.rend(); ++p)
       if (p0[0] < (*p)[0] && (*p)[0] < p1[0])
         outline.push_back(*p);
@@ -65,11 +73,13 @@ namespace
     double       U = 0;
     if (!std::isnan(wb))
       {
-        const double ua = 9.81 * (wa + wb * p0[0] - p0[1]), ub = 9.81 * (wa + wb * p1[0] - p1[1]);
+        const double ua = 9.81 * (wa + wb * p0[0] - p0[1]),
+                     ub = 9.81 * (wa + wb * p1[0] - p1[1]);
         if (ua >= 0 && ub >= 0)
           U = 0.5 * (ua + ub) * length;
         else if (ua > 0 || ub > 0)
-          U = 0.5 * std::max(ua, ub) * length * std::max(ua, ub) / std::abs(ua - ub);
+          U = 0.5 * std::max(ua, ub) * length * std::max(ua, ub) /
+              std::abs(ua - ub);
       }
     const double P = 0.5 * 9.81 * crack * crack, t = std::tan(phi * M_PI / 180);
     return (c * length + (W * std::cos(beta) - U - P * std::sin(beta)) * t) /
@@ -77,7 +87,10 @@ namespace
   }
 
   le::Section
-  homogeneous(const Line &ground, const double gamma, const double c, const double phi)
+  homogeneous(const Line  &ground,
+              const double gamma,
+              const double c,
+              const double phi)
   {
     le::Section section;
     section.ground = ground;
@@ -110,7 +123,9 @@ namespace
 
   /** Every method of all_methods on one surface equals @p K to 1e-12. */
   void
-  expect_planar(const le::Section &section, const le::Surface &surface, const double K,
+  expect_planar(const le::Section &section,
+                const le::Surface &surface,
+                const double       K,
                 const std::string &what)
   {
     // On one plane every slice's forces are fixed by force equilibrium
@@ -128,28 +143,40 @@ TEST(LimitEquilibrium, PlaneGivesTheClosedFormForEveryMethod)
 {
   // A 1:2 slope, 10 high; planes through the toe.
   const Line ground = {{-10, 0}, {0, 0}, {20, 10}, {40, 10}};
-  for (const auto &[c, phi, end] : {std::tuple{5., 25., 30.}, {0., 35., 36.}, {12., 10., 25.}})
+  for (const auto &[c, phi, end] :
+       {std::tuple{5., 25., 30.}, {0., 35., 36.}, {12., 10., 25.}})
     {
       const Point<2> p0(0, 0), p1(end, 10);
       const double   K = planar_K(c, phi, 20, p0, p1, ground);
-      expect_planar(homogeneous(ground, 20, c, phi), polyline({p0, p1}), K,
+      expect_planar(homogeneous(ground, 20, c, phi),
+                    polyline({p0, p1}),
+                    K,
                     "plane to x = " + std::to_string(end));
       // The same mass moving to the right.
       expect_planar(homogeneous(mirrored(ground), 20, c, phi),
-                    polyline(mirrored({p0, p1})), K, "mirrored");
+                    polyline(mirrored({p0, p1})),
+                    K,
+                    "mirrored");
     }
   // Pore pressure below a piezometric line crossing the plane.
-  le::Section wet  = homogeneous(ground, 20, 5, 25);
-  wet.piezometric  = {{-10, 0}, {40, 6}};
-  expect_planar(wet, polyline({{0, 0}, {30, 10}}),
-                planar_K(5, 25, 20, {0, 0}, {30, 10}, ground, 1.2, 0.12), "pore pressure");
+  le::Section wet = homogeneous(ground, 20, 5, 25);
+  wet.piezometric = {{-10, 0}, {40, 6}};
+  expect_planar(wet,
+                polyline({{0, 0}, {30, 10}}),
+                planar_K(5, 25, 20, {0, 0}, {30, 10}, ground, 1.2, 0.12),
+                "pore pressure");
   // A tension crack 3 deep full of water: the plane to (30, 10) ends where
   // it lies 3 below the ground, at (21, 7).
-  expect_planar(homogeneous(ground, 20, 5, 25), polyline({{0, 0}, {30, 10}}, 3, 3),
-                planar_K(5, 25, 20, {0, 0}, {21, 7}, ground, NAN, NAN, 3), "crack");
+  expect_planar(homogeneous(ground, 20, 5, 25),
+                polyline({{0, 0}, {30, 10}}, 3, 3),
+                planar_K(5, 25, 20, {0, 0}, {21, 7}, ground, NAN, NAN, 3),
+                "crack");
   // Bishop takes moments about a centre: not for a polyline.
-  const le::SlicedMass mass(homogeneous(ground, 20, 5, 25), polyline({{0, 0}, {30, 10}}), 50);
-  EXPECT_THROW(le::solve(mass, le::Method::bishop, 1e-14), dealii::ExceptionBase);
+  const le::SlicedMass mass(homogeneous(ground, 20, 5, 25),
+                            polyline({{0, 0}, {30, 10}}),
+                            50);
+  EXPECT_THROW(le::solve(mass, le::Method::bishop, 1e-14),
+               dealii::ExceptionBase);
 }
 
 namespace
@@ -179,8 +206,10 @@ namespace
 
 TEST(LimitEquilibrium, FredlundKrahnCircleAgainstThePublishedValues)
 {
-  const le::SlicedMass mass(homogeneous(fk_ground, 120, 600, 20), fk_circle(), 400);
-  const auto           K = [&](const le::Method m) { return le::solve(mass, m, 1e-14); };
+  const le::SlicedMass mass(homogeneous(fk_ground, 120, 600, 20),
+                            fk_circle(),
+                            400);
+  const auto K = [&](const le::Method m) { return le::solve(mass, m, 1e-14); };
   // Tolerances: the paper gives three decimals from a hand-sized number of
   // slices; programs that reproduce it differ in the third decimal
   // (MacSlope: Bishop 2.078, Spencer 2.076, M-P 2.076), and the Slide
@@ -190,7 +219,9 @@ TEST(LimitEquilibrium, FredlundKrahnCircleAgainstThePublishedValues)
   EXPECT_NEAR(K(le::Method::ordinary).K, 1.928, 0.005 * 1.928);
   EXPECT_NEAR(K(le::Method::bishop).K, 2.080, 0.005 * 2.080);
   EXPECT_NEAR(K(le::Method::spencer).K, 2.073, 0.005 * 2.073);
-  EXPECT_NEAR(K(le::Method::morgenstern_price_constant).K, 2.076, 0.005 * 2.076);
+  EXPECT_NEAR(K(le::Method::morgenstern_price_constant).K,
+              2.076,
+              0.005 * 2.076);
   // Lambda: 0.237 and 0.254 published, MacSlope 0.261 and 0.259: it is
   // poorly fixed (K changes by 0.1 % over this range), so 0.03 absolute.
   EXPECT_NEAR(K(le::Method::spencer).lambda, 0.25, 0.03);
@@ -199,10 +230,14 @@ TEST(LimitEquilibrium, FredlundKrahnCircleAgainstThePublishedValues)
   // Measured -0.95 %.
   EXPECT_NEAR(K(le::Method::janbu_corrected).K, 2.041, 0.015 * 2.041);
   // Spencer is Morgenstern-Price with f = 1: the same equations.
-  EXPECT_NEAR(K(le::Method::spencer).K, K(le::Method::morgenstern_price_constant).K, 1e-12);
+  EXPECT_NEAR(K(le::Method::spencer).K,
+              K(le::Method::morgenstern_price_constant).K,
+              1e-12);
   // The half-sine function is not published for this case; on a circle the
   // interslice function moves K little (Fredlund & Krahn: 0.1 %).
-  EXPECT_NEAR(K(le::Method::morgenstern_price_half_sine).K, 2.073, 0.005 * 2.073);
+  EXPECT_NEAR(K(le::Method::morgenstern_price_half_sine).K,
+              2.073,
+              0.005 * 2.073);
 }
 
 TEST(LimitEquilibrium, ConvergesWithTheNumberOfSlices)
@@ -212,14 +247,18 @@ TEST(LimitEquilibrium, ConvergesWithTheNumberOfSlices)
   // first-order error would halve it), and at 400 -> 800 slices the change
   // is below 1e-5 relative.
   const le::Section section = homogeneous(fk_ground, 120, 600, 20);
-  for (const le::Method method : {le::Method::ordinary, le::Method::bishop,
-                                  le::Method::spencer, le::Method::morgenstern_price_half_sine})
+  for (const le::Method method : {le::Method::ordinary,
+                                  le::Method::bishop,
+                                  le::Method::spencer,
+                                  le::Method::morgenstern_price_half_sine})
     {
       std::vector<double> K;
       for (const unsigned int n : {50, 100, 200, 400, 800})
-        K.push_back(le::solve(le::SlicedMass(section, fk_circle(), n), method, 1e-14).K);
+        K.push_back(
+          le::solve(le::SlicedMass(section, fk_circle(), n), method, 1e-14).K);
       for (unsigned int i = 2; i < K.size(); ++i)
-        EXPECT_LT(std::abs(K[i] - K[i - 1]), std::abs(K[i - 1] - K[i - 2]) / 2.5)
+        EXPECT_LT(std::abs(K[i] - K[i - 1]),
+                  std::abs(K[i - 1] - K[i - 2]) / 2.5)
           << le::method_key(method) << " at " << 50 * (1 << i) << " slices";
       EXPECT_LT(std::abs(K[4] - K[3]) / K[4], 1e-5) << le::method_key(method);
     }
@@ -230,7 +269,8 @@ namespace
   fdem::parameters::Parameters
   case_parameters(const std::string &name)
   {
-    return fdem::parameters::read_parameters(std::string(FDEM_SOURCE_DIR) + "/prm/" + name);
+    return fdem::parameters::read_parameters(std::string(FDEM_SOURCE_DIR) +
+                                             "/prm/" + name);
   }
 } // namespace
 
@@ -239,10 +279,12 @@ TEST(LimitEquilibrium, ModelSectionOfThePaperSlope)
   // The paper's slope: the section is the generator's, and the run's
   // answer is the one on that section (1.3135 Bishop, 1.3125 Spencer with
   // 400 slices, doc/limit_equilibrium.md).
-  const auto results = model_limit_equilibrium(case_parameters("paper_slope.prm"));
+  const auto results =
+    model_limit_equilibrium(case_parameters("paper_slope.prm"));
   ASSERT_TRUE(results.computed) << results.not_computed;
   EXPECT_TRUE(results.notes.empty());
-  le::Section section = homogeneous({{0, 25}, {10, 25}, {30, 35}, {50, 35}}, 20, 3, 19.6);
+  le::Section section =
+    homogeneous({{0, 25}, {10, 25}, {30, 35}, {50, 35}}, 20, 3, 19.6);
   le::Surface circle;
   circle.circular = true;
   circle.centre   = Point<2>(19.61, 46.32);
@@ -258,14 +300,16 @@ TEST(LimitEquilibrium, ModelSectionOfThePaperSlope)
 
 TEST(LimitEquilibrium, OtherGeometriesAreNotAvailable)
 {
-  for (const std::string name : {"hertz.prm", "inclined_block.prm", "rock_wedge.prm"})
+  for (const std::string name :
+       {"hertz.prm", "inclined_block.prm", "rock_wedge.prm"})
     {
       const auto results = model_limit_equilibrium(case_parameters(name));
       EXPECT_FALSE(results.computed) << name;
-      EXPECT_EQ(results.not_computed.rfind("limit equilibrium: not available for this "
-                                           "geometry because ",
-                                           0),
-                0u)
+      EXPECT_EQ(
+        results.not_computed.rfind("limit equilibrium: not available for this "
+                                   "geometry because ",
+                                   0),
+        0u)
         << results.not_computed;
       EXPECT_NE(to_json(results)["not_computed"].get<std::string>(), "");
     }
@@ -275,7 +319,7 @@ TEST(LimitEquilibrium, SurfaceOutsideTheModelIsAnError)
 {
   // A circle reaching beyond the model's left end (x < 0), and one that
   // does not reach the ground: one sentence naming the entry.
-  auto p = case_parameters("paper_slope.prm");
+  auto p                         = case_parameters("paper_slope.prm");
   p.geometry.slope.circle_centre = Point<2>(15, 40);
   p.geometry.slope.circle_radius = 30;
   try
@@ -285,8 +329,9 @@ TEST(LimitEquilibrium, SurfaceOutsideTheModelIsAnError)
     }
   catch (const dealii::ExceptionBase &error)
     {
-      EXPECT_NE(std::string(error.what()).find("Geometry/Slope: the sliding surface leaves "
-                                               "the model"),
+      EXPECT_NE(std::string(error.what())
+                  .find("Geometry/Slope: the sliding surface leaves "
+                        "the model"),
                 std::string::npos)
         << error.what();
     }
@@ -302,7 +347,7 @@ TEST(LimitEquilibrium, TimePerSurface)
   // repeats it with 2n). Printed, and bounded only loosely (1 s for a few
   // milliseconds' work) so that the test does not hang on the machine's
   // speed but still catches a slicing or root search gone quadratic.
-  const le::Section section = homogeneous(fk_ground, 120, 600, 20);
+  const le::Section       section = homogeneous(fk_ground, 120, 600, 20);
   std::vector<le::Method> methods = all_methods;
   methods.push_back(le::Method::bishop);
   for (const unsigned int n : {50u, 400u})
@@ -317,8 +362,9 @@ TEST(LimitEquilibrium, TimePerSurface)
         }
       timer.stop();
       const double per_surface = timer.wall_time() / repeats;
-      std::cout << "limit equilibrium, " << n << " slices, all 7 methods: "
-                << per_surface * 1e3 << " ms per surface" << std::endl;
+      std::cout << "limit equilibrium, " << n
+                << " slices, all 7 methods: " << per_surface * 1e3
+                << " ms per surface" << std::endl;
       EXPECT_LT(per_surface, 1.0);
     }
 }

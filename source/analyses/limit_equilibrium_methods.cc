@@ -54,23 +54,30 @@ namespace fdem
          * physical root is the one above them.
          */
         double
-        root_in_K(const std::function<double(double)> &f, const double tolerance)
+        root_in_K(const std::function<double(double)> &f,
+                  const double                         tolerance)
         {
+          // numpy.geomspace(0.05, 50, 200), scanned from the top down: the
+          // first sign change met is the largest root's bracket, as the
+          // Python yardstick finds it after evaluating them all.
           constexpr unsigned int n = 200;
-          std::vector<double>    Ks(n), values(n);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              // numpy.geomspace(0.05, 50, 200)
-              const double start = std::log10(0.05), stop = std::log10(50.);
-              Ks[i] = i == 0     ? 0.05 :
-                      i == n - 1 ? 50. :
-                                   std::pow(10., start + i * ((stop - start) / (n - 1)));
-              values[i] = f(Ks[i]);
-            }
+          const double start = std::log10(0.05), stop = std::log10(50.);
+          const auto   K_at = [&](const unsigned int i) {
+            return i == 0 ?
+                       0.05 :
+                     i == n - 1 ?
+                       50. :
+                       std::pow(10., start + i * ((stop - start) / (n - 1)));
+          };
+          double upper = f(K_at(n - 1));
           for (int i = n - 2; i >= 0; --i)
-            if (std::isfinite(values[i]) && std::isfinite(values[i + 1]) &&
-                values[i] * values[i + 1] <= 0)
-              return find_root(f, Ks[i], Ks[i + 1], tolerance, tolerance);
+            {
+              const double lower = f(K_at(i));
+              if (std::isfinite(lower) && std::isfinite(upper) &&
+                  lower * upper <= 0)
+                return find_root(f, K_at(i), K_at(i + 1), tolerance, tolerance);
+              upper = lower;
+            }
           AssertThrow(false,
                       ExcMessage("Limit equilibrium: no factor of safety in "
                                  "[0.05, 50]."));
@@ -97,16 +104,16 @@ namespace fdem
               const std::vector<double> &f)
         {
           double             E_left = 0, moment = 0;
-          const unsigned int n      = mass.slices.size();
+          const unsigned int n = mass.slices.size();
           for (unsigned int i = 0; i < n; ++i)
             {
               const Slice &s  = mass.slices[i];
-              const double sa = std::sin(s.alpha), ca = std::cos(s.alpha);
+              const double sa = s.sin_alpha, ca = s.cos_alpha;
               const double a = s.c * s.l / K, b = s.tan_phi / K;
               // The crack's water force acts on the last slice, to the left.
-              const double Px = i + 1 == n ? -mass.crack_force : 0.;
-              const double g  = a * ca - s.U * sa + Px;
-              const double h  = b * ca - sa;
+              const double Px  = i + 1 == n ? -mass.crack_force : 0.;
+              const double g   = a * ca - s.U * sa + Px;
+              const double h   = b * ca - sa;
               const double num = (s.U * ca + a * sa - s.W) +
                                  lambda * (f[i] - f[i + 1]) * E_left -
                                  lambda * f[i + 1] * g;
@@ -134,8 +141,9 @@ namespace fdem
                           const double               tolerance)
         {
           const auto force_K = [&](const double lambda) {
-            return root_in_K([&](const double K) { return march(mass, K, lambda, f).thrust; },
-                             tolerance);
+            return root_in_K(
+              [&](const double K) { return march(mass, K, lambda, f).thrust; },
+              tolerance);
           };
           const auto moment_gap = [&](const double lambda) {
             return march(mass, force_K(lambda), lambda, f).moment;
@@ -146,7 +154,8 @@ namespace fdem
               // numpy.linspace(lambda_min, lambda_max, n_lambdas)
               lambdas[i] = i + 1 == n_lambdas ?
                              lambda_max :
-                             lambda_min + i * ((lambda_max - lambda_min) / (n_lambdas - 1));
+                             lambda_min + i * ((lambda_max - lambda_min) /
+                                               (n_lambdas - 1));
               try
                 {
                   gaps[i] = moment_gap(lambdas[i]);
@@ -170,8 +179,10 @@ namespace fdem
             if (std::isfinite(gaps[i]) && std::isfinite(gaps[i + 1]) &&
                 gaps[i] * gaps[i + 1] <= 0)
               {
-                const double lambda =
-                  find_root(moment_gap, lambdas[i], lambdas[i + 1], 10 * tolerance);
+                const double lambda = find_root(moment_gap,
+                                                lambdas[i],
+                                                lambdas[i + 1],
+                                                10 * tolerance);
                 if (std::abs(moment_gap(lambda)) <= 1e-6 * scale &&
                     !(std::abs(lambda) >= std::abs(result.lambda)))
                   result.lambda = lambda;
@@ -224,8 +235,8 @@ namespace fdem
           for (unsigned int i = 0; i < mass.slices.size(); ++i)
             {
               const Slice &s  = mass.slices[i];
-              const double sa = std::sin(s.alpha), ca = std::cos(s.alpha);
-              const double P  = crack_on(mass, i);
+              const double sa = s.sin_alpha, ca = s.cos_alpha;
+              const double P = crack_on(mass, i);
               resisting += s.c * s.l + (s.W * ca - s.U - P * sa) * s.tan_phi;
               driving += s.W * sa + P * ca;
             }
@@ -238,22 +249,24 @@ namespace fdem
         bishop(const SlicedMass &mass, const double tolerance)
         {
           AssertThrow(mass.circular,
-                      ExcMessage("Limit equilibrium: Bishop's simplified "
-                                 "method takes moments about a circle's centre; "
-                                 "it is not defined for a polyline surface."));
+                      ExcMessage(
+                        "Limit equilibrium: Bishop's simplified "
+                        "method takes moments about a circle's centre; "
+                        "it is not defined for a polyline surface."));
           const auto g = [&](const double K) {
             double resisting = 0, driving = 0;
             for (unsigned int i = 0; i < mass.slices.size(); ++i)
               {
                 const Slice &s  = mass.slices[i];
-                const double sa = std::sin(s.alpha), ca = std::cos(s.alpha);
-                const double m  = ca + sa * s.tan_phi / K;
+                const double sa = s.sin_alpha, ca = s.cos_alpha;
+                const double m     = ca + sa * s.tan_phi / K;
                 const double width = s.l * ca;
                 resisting += (s.c * width + (s.W - s.U * ca) * s.tan_phi) / m;
                 // The weight's moment about the centre, for a mass moving left.
                 driving += s.W * (s.xg - mass.centre[0]);
               }
-            driving += mass.crack_force * (mass.centre[1] - mass.crack_point[1]);
+            driving +=
+              mass.crack_force * (mass.centre[1] - mass.crack_point[1]);
             return K - mass.radius * resisting / driving;
           };
           MethodResult result;
@@ -270,14 +283,18 @@ namespace fdem
           double          d = 0;
           for (const Point<2> &v : mass.surface)
             d = std::max(d,
-                         ((q[0] - p[0]) * (p[1] - v[1]) - (q[1] - p[1]) * (p[0] - v[0])) / L);
+                         ((q[0] - p[0]) * (p[1] - v[1]) -
+                          (q[1] - p[1]) * (p[0] - v[0])) /
+                           L);
           bool cohesion = false, friction = false;
           for (const Slice &s : mass.slices)
             {
               cohesion = cohesion || s.c > 0;
               friction = friction || s.tan_phi > 0;
             }
-          const double b1 = cohesion && friction ? 0.50 : cohesion ? 0.69 : 0.31;
+          const double b1 = cohesion && friction ? 0.50 :
+                            cohesion             ? 0.69 :
+                                                   0.31;
           return 1 + b1 * (d / L - 1.4 * (d / L) * (d / L));
         }
       } // namespace

@@ -35,11 +35,13 @@ namespace fdem
       unsupported(const parameters::Parameters &p)
       {
         const auto &g = p.geometry;
-        if (g.source != parameters::GeometryParameters::Source::slope || p.dimension != 2)
+        if (g.source != parameters::GeometryParameters::Source::slope ||
+            p.dimension != 2)
           return "it needs the slope generator's section (Geometry/Source = "
                  "slope, 2D): ground, layers and sliding surface as lines";
         if (g.scale_factor != 1 || g.rotation_angle != 0 ||
-            std::any_of(g.translation.begin(), g.translation.end(),
+            std::any_of(g.translation.begin(),
+                        g.translation.end(),
                         [](const double t) { return t != 0; }))
           return "the model is transformed (Geometry's scale, rotation or "
                  "translation) and the section is not";
@@ -79,16 +81,20 @@ namespace fdem
           const auto &i = p.interfaces.at(name);
           if (i.strength_from_material != first.strength_from_material ||
               (!i.strength_from_material &&
-               (i.cohesion != first.cohesion || i.friction_angle != first.friction_angle ||
+               (i.cohesion != first.cohesion ||
+                i.friction_angle != first.friction_angle ||
                 i.frictionless != first.frictionless)))
             {
               why_not = "the sliding surface's interfaces have different "
-                        "strengths ('" + surfaces.front() + "', '" + name + "')";
+                        "strengths ('" +
+                        surfaces.front() + "', '" + name + "')";
               return false;
             }
-          if (Utilities::trim(i.pore_pressure) != Utilities::trim(first.pore_pressure))
+          if (Utilities::trim(i.pore_pressure) !=
+              Utilities::trim(first.pore_pressure))
             {
-              why_not = "the sliding surface's interfaces have different pore pressures";
+              why_not =
+                "the sliding surface's interfaces have different pore pressures";
               return false;
             }
         }
@@ -104,11 +110,13 @@ namespace fdem
       section.piezometric       = points(p.water.piezometric_line);
       section.ground            = slope.ground_surface;
 
-      const auto strength = [&](le::SoilLayer &layer, const parameters::MaterialParameters &m) {
-        layer.cohesion       = first.strength_from_material ? m.cohesion : first.cohesion;
+      const auto strength = [&](le::SoilLayer                        &layer,
+                                const parameters::MaterialParameters &m) {
+        layer.cohesion =
+          first.strength_from_material ? m.cohesion : first.cohesion;
         layer.friction_angle = first.strength_from_material ? m.friction_angle :
-                               first.frictionless         ? 0. :
-                                                            first.friction_angle;
+                               first.frictionless           ? 0. :
+                                                    first.friction_angle;
       };
       section.layers.clear();
       if (!slope.layers.empty())
@@ -132,10 +140,12 @@ namespace fdem
             if (name.rfind("sliding mass", 0) == 0 && p.materials.count(name))
               {
                 const auto &m = p.materials.at(name);
-                if (mass != nullptr && (m.weight(g) != mass->weight(g) ||
-                                        m.saturated_weight(g) != mass->saturated_weight(g)))
+                if (mass != nullptr &&
+                    (m.weight(g) != mass->weight(g) ||
+                     m.saturated_weight(g) != mass->saturated_weight(g)))
                   {
-                    why_not = "the blocks of the sliding mass have different unit weights";
+                    why_not =
+                      "the blocks of the sliding mass have different unit weights";
                     return false;
                   }
                 mass = &m;
@@ -152,7 +162,8 @@ namespace fdem
           section.layers.push_back(layer);
         }
 
-      surface.circular = slope.sliding_surface == geometry::Slope::SlidingSurface::circular;
+      surface.circular =
+        slope.sliding_surface == geometry::Slope::SlidingSurface::circular;
       surface.centre   = slope.circle_centre;
       surface.radius   = slope.circle_radius;
       surface.polyline = slope.sliding_surface_polyline;
@@ -168,22 +179,30 @@ namespace fdem
 
       // The surface must lie inside the model: its ends within the ground's
       // x range, and above the base.
-      const auto line = surface.circular ?
-                          le::circle_surface(section.ground, surface.centre, surface.radius, 2001) :
-                          le::polyline_in_ground(section.ground, surface.polyline);
+      const auto line =
+        surface.circular ?
+          le::circle_surface(section.ground,
+                             surface.centre,
+                             surface.radius,
+                             2001) :
+          le::polyline_in_ground(section.ground, surface.polyline);
       double lowest = line.front()[1];
       for (const Point<2> &q : line)
         lowest = std::min(lowest, q[1]);
-      const double x_left = section.ground.front()[0], x_right = section.ground.back()[0];
-      const double slack = 1e-9 * (x_right - x_left);
+      const double x_left      = section.ground.front()[0],
+                   x_right     = section.ground.back()[0];
+      const double       slack = 1e-9 * (x_right - x_left);
       std::ostringstream where;
       where << "from x = " << line.front()[0] << " to " << line.back()[0]
             << ", down to y = " << lowest << "; the model spans x = " << x_left
             << " to " << x_right << " above y = " << slope.base_elevation;
-      AssertThrow(line.front()[0] > x_left - slack && line.back()[0] < x_right + slack &&
+      AssertThrow(line.front()[0] > x_left - slack &&
+                    line.back()[0] < x_right + slack &&
                     lowest > slope.base_elevation,
-                  ExcMessage("Geometry/Slope: the sliding surface leaves the model "
-                             "for limit equilibrium (" + where.str() + ")."));
+                  ExcMessage(
+                    "Geometry/Slope: the sliding surface leaves the model "
+                    "for limit equilibrium (" +
+                    where.str() + ")."));
 
       // Loads of the FE model that the section does not carry.
       bool crack_pressure = false;
@@ -203,8 +222,9 @@ namespace fdem
                         "Tension crack water depth, not the boundary pressure "
                         "of 'tension crack'");
       else if (surface.crack_water_depth > 0)
-        notes.push_back("limit equilibrium includes the water in the tension "
-                        "crack, which no boundary pressure puts on the FE model");
+        notes.push_back(
+          "limit equilibrium includes the water in the tension "
+          "crack, which no boundary pressure puts on the FE model");
       return true;
     }
 
@@ -230,12 +250,14 @@ namespace fdem
             }
           catch (const ExceptionBase &error)
             {
-              entry.not_computed = error.get_exc_name();
-              const std::string text = error.what();
+              entry.not_computed      = error.get_exc_name();
+              const std::string text  = error.what();
               const auto        start = text.find("Limit equilibrium: ");
+              entry.not_computed      = start == std::string::npos ?
+                                          "no answer" :
+                                          text.substr(start + 19);
               entry.not_computed =
-                start == std::string::npos ? "no answer" : text.substr(start + 19);
-              entry.not_computed = entry.not_computed.substr(0, entry.not_computed.find('\n'));
+                entry.not_computed.substr(0, entry.not_computed.find('\n'));
             }
           results.methods.push_back(entry);
         }
@@ -251,17 +273,35 @@ namespace fdem
           results.not_computed = "Limit equilibrium/Enabled is false";
           return results;
         }
-      le::Section section;
-      le::Surface surface;
-      std::string why_not;
+      le::Section              section;
+      le::Surface              surface;
+      std::string              why_not;
       std::vector<std::string> notes;
       if (!model_section(parameters, section, surface, why_not, notes))
         {
-          results.not_computed = "limit equilibrium: not available for this geometry because " +
-                                 why_not + ".";
+          results.not_computed =
+            "limit equilibrium: not available for this geometry because " +
+            why_not + ".";
           return results;
         }
-      results       = evaluate_limit_equilibrium(section, surface, parameters.limit_equilibrium);
+      try
+        {
+          results = evaluate_limit_equilibrium(section,
+                                               surface,
+                                               parameters.limit_equilibrium);
+        }
+      catch (const ExceptionBase &error)
+        {
+          // A section the slicing cannot take (e.g. a crack deeper than the
+          // surface at its upper end) leaves the FE run alone.
+          const std::string text  = error.what();
+          const auto        start = text.find("Limit equilibrium: ");
+          results.not_computed =
+            "limit equilibrium: not available for this geometry because " +
+            (start == std::string::npos ?
+               std::string("the section cannot be sliced") :
+               text.substr(start + 19, text.find('\n', start) - start - 19));
+        }
       results.notes = notes;
       return results;
     }
@@ -271,7 +311,8 @@ namespace fdem
       nlohmann::json
       number_or_null(const double value)
       {
-        return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+        return std::isfinite(value) ? nlohmann::json(value) :
+                                      nlohmann::json(nullptr);
       }
 
       std::string
@@ -301,9 +342,9 @@ namespace fdem
     nlohmann::json
     to_json(const LimitEquilibriumResults &results)
     {
-      nlohmann::json out = {{"computed", results.computed},
-                            {"not_computed", results.not_computed},
-                            {"notes", results.notes}};
+      nlohmann::json out     = {{"computed", results.computed},
+                                {"not_computed", results.not_computed},
+                                {"notes", results.notes}};
       nlohmann::json methods = nlohmann::json::object();
       for (const auto &entry : results.methods)
         {
@@ -324,8 +365,8 @@ namespace fdem
                 {
                   m["lambda"] = number_or_null(entry.result.lambda);
                   if (entry.method != le::Method::morgenstern_price_half_sine)
-                    m["theta_degrees"] =
-                      number_or_null(std::atan(entry.result.lambda) * 180 / M_PI);
+                    m["theta_degrees"] = number_or_null(
+                      std::atan(entry.result.lambda) * 180 / M_PI);
                 }
               if (entry.method == le::Method::janbu_corrected)
                 m["f0"] = entry.result.f0;
@@ -337,7 +378,8 @@ namespace fdem
     }
 
     void
-    print_limit_equilibrium(const LimitEquilibriumResults &results, std::ostream &out)
+    print_limit_equilibrium(const LimitEquilibriumResults &results,
+                            std::ostream                  &out)
     {
       std::ostringstream text; // not to leave the log's format changed
       if (!results.computed)
@@ -350,7 +392,8 @@ namespace fdem
       text << "Limit equilibrium on the same surface:\n";
       for (const auto &entry : results.methods)
         {
-          text << "  " << std::left << std::setw(30) << label(entry.method) + ":";
+          text << "  " << std::left << std::setw(30)
+               << label(entry.method) + ":";
           if (!entry.not_computed.empty())
             {
               text << "not computed: " << entry.not_computed << "\n";
@@ -359,10 +402,12 @@ namespace fdem
           const double K = entry.result.K;
           text << "K = " << std::fixed << std::setprecision(4) << K;
           if (std::isfinite(entry.result.lambda))
-            text << ", lambda = " << std::setprecision(4) << entry.result.lambda;
+            text << ", lambda = " << std::setprecision(4)
+                 << entry.result.lambda;
           text << std::defaultfloat << " (" << entry.result.n_slices
-               << " slices; twice as many: " << std::showpos << std::setprecision(1)
-               << std::scientific << (entry.doubled.K - K) / K << std::noshowpos
+               << " slices; twice as many: " << std::showpos
+               << std::setprecision(1) << std::scientific
+               << (entry.doubled.K - K) / K << std::noshowpos
                << std::defaultfloat << " relative)\n";
         }
       for (const std::string &note : results.notes)

@@ -18,7 +18,7 @@ namespace fdem
       const std::map<std::string, limit_equilibrium::Method> &
       method_names()
       {
-        using M = limit_equilibrium::Method;
+        using M                                     = limit_equilibrium::Method;
         static const std::map<std::string, M> names = {
           {"ordinary", M::ordinary},
           {"Bishop", M::bishop},
@@ -35,28 +35,30 @@ namespace fdem
     LimitEquilibriumParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Limit equilibrium");
-      prm.declare_entry("Enabled",
-                        "true",
-                        Patterns::Bool(),
-                        "Compute the limit-equilibrium factors of safety of the "
-                        "model's own sliding surface beside K (slope generator "
-                        "only: Geometry/Source = slope; other geometries say in "
-                        "summary.json why not). They use the same ground, "
-                        "layers, unit weights, piezometric line, pore pressure "
-                        "and tension crack as the FE model.");
+      prm.declare_entry(
+        "Enabled",
+        "true",
+        Patterns::Bool(),
+        "Compute the limit-equilibrium factors of safety of the "
+        "model's own sliding surface beside K (slope generator "
+        "only: Geometry/Source = slope; other geometries say in "
+        "summary.json why not). They use the same ground, "
+        "layers, unit weights, piezometric line, pore pressure "
+        "and tension crack as the FE model.");
       std::string all;
       for (const auto &name : method_names())
         all += (all.empty() ? "" : "|") + name.first;
-      prm.declare_entry("Methods",
-                        "ordinary, Bishop, Janbu, Janbu corrected, Spencer, "
-                        "Morgenstern-Price constant, Morgenstern-Price half-sine",
-                        Patterns::MultipleSelection(all),
-                        "Methods of slices, in this order: ordinary (Fellenius); "
-                        "Bishop (simplified, circles only); Janbu (simplified, "
-                        "force equilibrium without interslice shear, no "
-                        "correction); Janbu corrected (times Janbu's f0); "
-                        "Spencer; Morgenstern-Price with a constant or a "
-                        "half-sine interslice function.");
+      prm.declare_entry(
+        "Methods",
+        "ordinary, Bishop, Janbu, Janbu corrected, Spencer, "
+        "Morgenstern-Price constant, Morgenstern-Price half-sine",
+        Patterns::MultipleSelection(all),
+        "Methods of slices, in this order: ordinary (Fellenius); "
+        "Bishop (simplified, circles only); Janbu (simplified, "
+        "force equilibrium without interslice shear, no "
+        "correction); Janbu corrected (times Janbu's f0); "
+        "Spencer; Morgenstern-Price with a constant or a "
+        "half-sine interslice function.");
       prm.declare_entry("Number of slices",
                         "400",
                         Patterns::Integer(1, 1000000),
@@ -81,8 +83,9 @@ namespace fdem
       n_slices = prm.get_integer("Number of slices");
       AssertThrow(n_slices >= min_n_slices,
                   ExcMessage("Limit equilibrium/Number of slices: at least " +
-                             std::to_string(min_n_slices) + " are needed, not " +
-                             std::to_string(n_slices) + "."));
+                             std::to_string(min_n_slices) +
+                             " are needed, not " + std::to_string(n_slices) +
+                             "."));
       tolerance = prm.get_double("Tolerance");
       methods.clear();
       for (const std::string &name :

@@ -170,12 +170,14 @@ namespace fdem
       {
         const double xc = centre[0], yc = centre[1];
         const auto   lower = [&](const double x) {
-          return yc - std::sqrt(std::max(radius * radius - (x - xc) * (x - xc), 0.));
+          return yc -
+                 std::sqrt(std::max(radius * radius - (x - xc) * (x - xc), 0.));
         };
         const auto depth = [&](const double x) {
           return elevation(ground, x) - lower(x);
         };
-        const std::vector<double> xs = linspace(xc - radius, xc + radius, 20001);
+        const std::vector<double> xs =
+          linspace(xc - radius, xc + radius, 20001);
         int first = -1, last = -1;
         for (unsigned int i = 0; i < xs.size(); ++i)
           if (depth(xs[i]) > 0)
@@ -187,13 +189,12 @@ namespace fdem
         AssertThrow(first >= 0,
                     ExcMessage("Limit equilibrium: the circular sliding "
                                "surface does not pass below the ground."));
-        const int    n  = xs.size();
-        const double x0 = first > 0 ?
-                            find_root(depth, xs[first - 1], xs[first], 1e-13) :
-                            xs[0];
-        const double x1 = last < n - 1 ?
-                            find_root(depth, xs[last], xs[last + 1], 1e-13) :
-                            xs[n - 1];
+        const int    n = xs.size();
+        const double x0 =
+          first > 0 ? find_root(depth, xs[first - 1], xs[first], 1e-13) : xs[0];
+        const double          x1 = last < n - 1 ?
+                                     find_root(depth, xs[last], xs[last + 1], 1e-13) :
+                                     xs[n - 1];
         std::vector<Point<2>> arc;
         for (const double x : linspace(x0, x1, n_points))
           arc.emplace_back(x, lower(x));
@@ -257,11 +258,10 @@ namespace fdem
         column(const SlicedMass &mass, const double x)
         {
           Column c;
-          c.y_base           = elevation(mass.surface, x);
-          const double yg    = elevation(mass.ground, x);
-          c.y_water          = mass.piezometric.empty() ?
-                                 -infinity :
-                                 elevation(mass.piezometric, x);
+          c.y_base                    = elevation(mass.surface, x);
+          const double yg             = elevation(mass.ground, x);
+          c.y_water                   = mass.piezometric.empty() ? -infinity :
+                                                                   elevation(mass.piezometric, x);
           const unsigned int n_layers = mass.layers.size();
           for (unsigned int k = 0; k < n_layers; ++k)
             {
@@ -292,18 +292,22 @@ namespace fdem
         }
 
         void
-        cut_at_crack(SlicedMass &mass, const double depth, const double water_depth)
+        cut_at_crack(SlicedMass  &mass,
+                     const double depth,
+                     const double water_depth)
         {
           // The crack is at the upper (right) end: the surface ends where it
           // lies depth below the ground.
           const double x0  = mass.surface.front()[0];
           const double x1  = mass.surface.back()[0];
           const auto   gap = [&](const double x) {
-            return elevation(mass.ground, x) - elevation(mass.surface, x) - depth;
+            return elevation(mass.ground, x) - elevation(mass.surface, x) -
+                   depth;
           };
           AssertThrow(!(gap(x1 - 1e-12 * (x1 - x0)) > 0),
-                      ExcMessage("Limit equilibrium: the sliding surface is not "
-                                 "Tension crack depth deep at its upper end."));
+                      ExcMessage(
+                        "Limit equilibrium: the sliding surface is not "
+                        "Tension crack depth deep at its upper end."));
           const std::vector<double> xs = linspace(x0, x1, 4001);
           int                       k  = -1;
           for (unsigned int i = 0; i + 1 < xs.size(); ++i)
@@ -312,14 +316,15 @@ namespace fdem
           AssertThrow(k >= 0,
                       ExcMessage("Limit equilibrium: the sliding surface is "
                                  "nowhere as deep as Tension crack depth."));
-          const double xc = find_root(gap, xs[k], xs[k + 1], 1e-14);
+          const double          xc = find_root(gap, xs[k], xs[k + 1], 1e-14);
           std::vector<Point<2>> cut;
           for (const Point<2> &p : mass.surface)
             if (p[0] < xc)
               cut.push_back(p);
           cut.emplace_back(xc, elevation(mass.surface, xc));
-          mass.surface     = cut;
-          mass.crack_force = 0.5 * mass.water_unit_weight * water_depth * water_depth;
+          mass.surface = cut;
+          mass.crack_force =
+            0.5 * mass.water_unit_weight * water_depth * water_depth;
           // Pushes to the left, a third of the water depth above the bottom.
           mass.crack_point = Point<2>(xc, cut.back()[1] + water_depth / 3.0);
         }
@@ -327,7 +332,8 @@ namespace fdem
         void
         make_slices(SlicedMass &mass, const unsigned int n_slices)
         {
-          const double x0 = mass.surface.front()[0], x1 = mass.surface.back()[0];
+          const double x0 = mass.surface.front()[0],
+                       x1 = mass.surface.back()[0];
           std::vector<const std::vector<Point<2>> *> lines = {&mass.ground,
                                                               &mass.surface};
           for (unsigned int k = 1; k < mass.layers.size(); ++k)
@@ -349,8 +355,8 @@ namespace fdem
           for (unsigned int i = 0; i + 1 < sorted.size(); ++i)
             {
               const double a = sorted[i], b = sorted[i + 1];
-              const int    m = std::max(1, int(std::ceil((b - a) / width - 1e-9)));
-              const auto   points = linspace(a, b, m + 1);
+              const int m = std::max(1, int(std::ceil((b - a) / width - 1e-9)));
+              const auto points = linspace(a, b, m + 1);
               mass.x.insert(mass.x.end(), points.begin(), points.end() - 1);
             }
           mass.x.push_back(x1);
@@ -377,6 +383,8 @@ namespace fdem
           const double ya = ca.y_base, yb = cb.y_base;
           s.l             = std::hypot(b - a, yb - ya);
           s.alpha         = std::atan2(yb - ya, b - a);
+          s.sin_alpha     = std::sin(s.alpha);
+          s.cos_alpha     = std::cos(s.alpha);
           const double gw = mass.pore_pressure ? mass.water_unit_weight : 0.;
           const double ua = gw * std::max(ca.y_water - ya, 0.);
           const double ub = gw * std::max(cb.y_water - yb, 0.);
@@ -404,11 +412,16 @@ namespace fdem
                     ExcMessage("Limit equilibrium: the section has no soil."));
         std::vector<Point<2>> line =
           sliding.circular ?
-            circle_surface(section.ground, sliding.centre, sliding.radius, n_slices + 1) :
+            circle_surface(section.ground,
+                           sliding.centre,
+                           sliding.radius,
+                           n_slices + 1) :
             polyline_in_ground(section.ground, sliding.polyline);
-        std::sort(line.begin(), line.end(), [](const Point<2> &p, const Point<2> &q) {
-          return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]);
-        });
+        std::sort(line.begin(),
+                  line.end(),
+                  [](const Point<2> &p, const Point<2> &q) {
+                    return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]);
+                  });
         mirrored = elevation(section.ground, line.front()[0]) >
                    elevation(section.ground, line.back()[0]);
         const auto flip = [&](const std::vector<Point<2>> &l) {

@@ -77,7 +77,8 @@ namespace fdem
         ordinary,
         /** Bishop's simplified method (circles): no interslice shear. */
         bishop,
-        /** Janbu's simplified method, force equilibrium, no interslice shear. */
+        /** Janbu's simplified method, force equilibrium, no interslice shear.
+         */
         janbu,
         /** Janbu's simplified method times the correction factor f0. */
         janbu_corrected,
@@ -85,7 +86,8 @@ namespace fdem
         spencer,
         /** Morgenstern-Price with f(x) = 1 (Spencer's assumption). */
         morgenstern_price_constant,
-        /** Morgenstern-Price with f(x) = sin(pi (x - x_toe) / (x_crest - x_toe)). */
+        /** Morgenstern-Price with f(x) = sin(pi (x - x_toe) / (x_crest -
+           x_toe)). */
         morgenstern_price_half_sine
       };
 
@@ -115,11 +117,12 @@ namespace fdem
        * One slice: weight W, x of its line of action, base angle alpha
        * (positive where the base rises to the right, in the frame where the
        * mass moves left), base length l, base midpoint, pore force U on the
-       * base, its strength.
+       * base, its strength; sin and cos of alpha, computed once (the root
+       * searches evaluate every slice thousands of times).
        */
       struct Slice
       {
-        double W, xg, alpha, l, xm, ym, U, c, tan_phi;
+        double W, xg, alpha, l, xm, ym, U, c, tan_phi, sin_alpha, cos_alpha;
       };
 
       /**
@@ -134,19 +137,19 @@ namespace fdem
                    const Surface     &surface,
                    const unsigned int n_slices);
 
-        bool                  mirrored = false;
-        std::vector<Point<2>> ground, surface, piezometric;
+        bool                   mirrored = false;
+        std::vector<Point<2>>  ground, surface, piezometric;
         std::vector<SoilLayer> layers;
         double                 water_unit_weight;
         bool                   pore_pressure;
         /** The crack's water force (pushing left) and its point of action. */
-        double             crack_force = 0;
-        Point<2>           crack_point;
+        double              crack_force = 0;
+        Point<2>            crack_point;
         std::vector<double> x;
         std::vector<Slice>  slices;
         /** Circle centre in this frame (for circles). */
         Point<2> centre;
-        double   radius = 0;
+        double   radius   = 0;
         bool     circular = false;
       };
 
@@ -175,9 +178,12 @@ namespace fdem
        * answer (e.g. Bishop on a polyline, no root in [0.05, 50]).
        */
       MethodResult
-      solve(const SlicedMass &mass, const Method method, const double tolerance);
+      solve(const SlicedMass &mass,
+            const Method      method,
+            const double      tolerance);
 
-      /** The elevation of a polyline at x, constant beyond its ends (np.interp). */
+      /** The elevation of a polyline at x, constant beyond its ends
+       * (np.interp). */
       double
       elevation(const std::vector<Point<2>> &line, const double x);
 
@@ -192,7 +198,7 @@ namespace fdem
                 double                               a,
                 double                               b,
                 const double                         xtol,
-                const double                         rtol = 8.881784197001252e-16);
+                const double rtol = 8.881784197001252e-16);
     } // namespace limit_equilibrium
   }   // namespace analyses
 } // namespace fdem
