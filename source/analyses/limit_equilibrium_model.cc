@@ -119,6 +119,14 @@ namespace fdem
                                                     first.friction_angle;
       };
       section.layers.clear();
+      // A layer without a material is the model's error, reported when the
+      // blocks are set up; no section here.
+      for (const std::string &name : slope.layers)
+        if (p.materials.count(name) == 0)
+          {
+            why_not = "the layer material '" + name + "' is not declared";
+            return false;
+          }
       if (!slope.layers.empty())
         for (unsigned int k = 0; k < slope.layers.size(); ++k)
           {
