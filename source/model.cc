@@ -68,6 +68,10 @@ namespace fdem
     // says what the program is doing and how long it has taken so far.
     progress("mesh");
     make_geometry();
+    // Limit equilibrium on the generator's section: after the mesh, so that
+    // the generator's own checks of the surface come first; it needs only
+    // the parameters and takes a fraction of a second.
+    limit_equilibrium = analyses::model_limit_equilibrium(parameters);
     progress("blocks: dofs, constraints, free rigid modes");
     setup_blocks();
     progress("assembly and factorisation");
@@ -113,6 +117,7 @@ namespace fdem
         progress("contact problem");
         solve_contact();
       }
+    analyses::print_limit_equilibrium(limit_equilibrium, log);
     if (contact_outcome.converged())
       recover_block_displacements();
     progress("output");

@@ -271,26 +271,8 @@ def spencer(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0
         F = force_F(lam)
         return _spencer_residuals(slices, F, lam, mass.crack_force, mass.crack_point)[1]
 
-    lams = np.linspace(-0.6, 1.2, 37)
-    gaps = []
-    for lam in lams:
-        try:
-            gaps.append(moment_gap(lam))
-        except ValueError:
-            gaps.append(math.nan)
-    for i in range(len(lams) - 1):
-        if np.isfinite(gaps[i]) and np.isfinite(gaps[i + 1]) and gaps[i] * gaps[i + 1] <= 0:
-            lam = brentq(moment_gap, lams[i], lams[i + 1], xtol=1e-13)
-            return force_F(lam), lam
-    # A plane without cohesion: every slice's forces are proportional to its
-    # weight whatever lambda, so moment equilibrium does not fix lambda (the
-    # gap left is the midpoint rule's, relative to the weights' moments).
-    scale = np.sum(slices["W"]) * (mass.x[-1] - mass.x[0])
-    finite = [(abs(g), lam) for g, lam in zip(gaps, lams) if np.isfinite(g)]
-    if finite and max(g for g, _ in finite) - min(g for g, _ in finite) < 1e-9 * scale \
-            and min(finite)[0] < 1e-4 * scale:
-        return force_F(min(finite)[1]), math.nan
-    raise ValueError("Spencer: no interslice inclination satisfies both equilibria")
+    return _root_in_lambda(moment_gap, np.linspace(-0.6, 1.2, 37), force_F,
+                           np.sum(slices["W"]) * (mass.x[-1] - mass.x[0]))
 
 
 def _root_in_F(f):
@@ -429,3 +411,123 @@ def spencer_interslice_use(section, surface, xs, n_slices=800, crack_depth=0.0,
         C, T, _, _ = _section_strength(mass, x)
         uses.append(abs(lam * E[k]) / ((C + E[k] * T) / F))
     return uses
+
+
+def _root_in_lambda(gap, lams, F_of, scale):
+    """(F, lambda) where moment equilibrium also holds: a sign change of
+    @p gap over @p lams, refined; on one plane without cohesion (the gap the
+    same for every lambda) F from force equilibrium alone and NaN. @p scale:
+    the size of the moments (the weight times the mass's width)."""
+    gaps = []
+    for lam in lams:
+        try:
+            gaps.append(gap(lam))
+        except ValueError:
+            gaps.append(math.nan)
+    # Every sign change is refined; one where the F of force equilibrium
+    # jumps (its largest root in [0.05, 50] passes from a spurious branch to
+    # the physical one, as at strongly negative lambda) leaves a gap that
+    # does not vanish and is no solution. Of the solutions, the one nearest
+    # lambda = 0.
+    roots = []
+    for i in range(len(lams) - 1):
+        if np.isfinite(gaps[i]) and np.isfinite(gaps[i + 1]) and gaps[i] * gaps[i + 1] <= 0:
+            lam = brentq(gap, lams[i], lams[i + 1], xtol=1e-13)
+            if abs(gap(lam)) <= 1e-6 * scale:
+                roots.append((abs(lam), lam))
+    if roots:
+        lam = min(roots)[1]
+        return F_of(lam), lam
+    # A plane without cohesion: every slice's forces are proportional to its
+    # weight whatever lambda, so moment equilibrium does not fix lambda (the
+    # gap left is the midpoint rule's, relative to the weights' moments).
+    finite = [(abs(g), lam) for g, lam in zip(gaps, lams) if np.isfinite(g)]
+    if finite and max(g for g, _ in finite) - min(g for g, _ in finite) < 1e-9 * scale \
+            and min(finite)[0] < 1e-4 * scale:
+        return F_of(min(finite)[1]), math.nan
+    raise ValueError("no interslice force scale satisfies both equilibria")
+
+
+def _interslice_residuals(s, F, lam, f, crack_force, crack_point):
+    """Morgenstern-Price's march: X = lam f E on each vertical boundary
+    (f at the boundaries, E = 0 at the toe), each slice's effective normal
+    force from its vertical equilibrium and the thrust on its right from its
+    horizontal one. Returns the thrust left at the crest end and the moment
+    about the origin of the weights, base forces and the crack's water (the
+    interslice forces cancel in it). With f = 1 it is Spencer's."""
+    n = len(s["W"])
+    E, moment = 0.0, 0.0
+    for i in range(n):
+        sa, ca = s["sin"][i], s["cos"][i]
+        a, b = s["c"][i] * s["l"][i] / F, s["tan_phi"][i] / F
+        Px = -crack_force if i == n - 1 else 0.0
+        g = a * ca - s["U"][i] * sa + Px
+        h = b * ca - sa
+        # y: N (ca + b sa) + U ca + a sa - W + lam f_L E_L - lam f_R E_R = 0,
+        # with E_R = E_L + N h + g.
+        N = ((s["U"][i] * ca + a * sa - s["W"][i]) + lam * (f[i] - f[i + 1]) * E
+             - lam * f[i + 1] * g) / (lam * f[i + 1] * h - (ca + b * sa))
+        E += N * h + g
+        S = a + b * N
+        fx = -(N + s["U"][i]) * sa + S * ca
+        fy = (N + s["U"][i]) * ca + S * sa
+        moment += s["xm"][i] * fy - s["ym"][i] * fx - s["xg"][i] * s["W"][i]
+    if crack_force:
+        moment += crack_point[1] * crack_force
+    return E, moment
+
+
+def morgenstern_price(section, surface, n_slices=400, function="half-sine", crack_depth=0.0,
+                      crack_water_depth=0.0):
+    """Morgenstern and Price's factor of safety with the interslice function
+    f = 1 ('constant', Spencer's assumption) or f = sin(pi (x - x_toe) /
+    (x_crest - x_toe)) ('half-sine'): (F, lambda)."""
+    mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
+    s = slice_arrays(mass.slices())
+    x = mass.x
+    if function == "constant":
+        f, lams = np.ones(len(x)), np.linspace(-0.6, 1.2, 37)
+    else:
+        f, lams = np.sin(math.pi * (x - x[0]) / (x[-1] - x[0])), np.linspace(-1.2, 2.4, 73)
+
+    def force_F(lam):
+        return _root_in_F(lambda F: _interslice_residuals(
+            s, F, lam, f, mass.crack_force, mass.crack_point)[0])
+
+    def gap(lam):
+        return _interslice_residuals(s, force_F(lam), lam, f, mass.crack_force,
+                                     mass.crack_point)[1]
+
+    return _root_in_lambda(gap, lams, force_F, np.sum(s["W"]) * (x[-1] - x[0]))
+
+
+def ordinary(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0):
+    """The ordinary method of slices (Fellenius): interslice forces
+    neglected, N' = W cos(alpha) - U - P sin(alpha), F = sum(c l + N'
+    tan(phi)) / sum(W sin(alpha) + P cos(alpha)), P the crack's water force
+    on the upper slice."""
+    mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
+    s = slice_arrays(mass.slices())
+    P = np.zeros_like(s["W"])
+    P[-1] = mass.crack_force
+    resisting = s["c"] * s["l"] + (s["W"] * s["cos"] - s["U"] - P * s["sin"]) * s["tan_phi"]
+    return np.sum(resisting) / np.sum(s["W"] * s["sin"] + P * s["cos"])
+
+
+def janbu(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0):
+    """Janbu's simplified method: force equilibrium without interslice
+    shear, F0; and the corrected F0 f0 with f0 = 1 + b1 (d/L - 1.4 (d/L)^2),
+    d the largest depth of the surface below the chord of length L between
+    its ends, b1 = 0.69 (c only), 0.31 (phi only), 0.50 (both). Returns
+    (F0, f0)."""
+    mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
+    s = slice_arrays(mass.slices())
+    f = np.ones(len(mass.x))
+    F0 = _root_in_F(lambda F: _interslice_residuals(
+        s, F, 0.0, f, mass.crack_force, mass.crack_point)[0])
+    (x0, y0), (x1, y1) = mass.surface[0], mass.surface[-1]
+    L = math.hypot(x1 - x0, y1 - y0)
+    d = max(max(((x1 - x0) * (y0 - y) - (y1 - y0) * (x0 - x)) / L for x, y in mass.surface), 0.0)
+    cohesion, friction = np.any(s["c"] > 0), np.any(s["tan_phi"] > 0)
+    b1 = 0.50 if cohesion and friction else 0.69 if cohesion else 0.31
+    return F0, 1 + b1 * (d / L - 1.4 * (d / L) ** 2)

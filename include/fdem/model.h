@@ -14,6 +14,7 @@
 #include <fdem/postprocess/run_log.h>
 #include <fdem/postprocess/vtu_writer.h>
 #include <fdem/analyses/fe_stress_factor.h>
+#include <fdem/analyses/limit_equilibrium_model.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -169,6 +170,8 @@ namespace fdem
     analyses::Result                                    safety_factor_result;
     /** The FE-stress factor of the sliding surface (computed with the safety factor). */
     analyses::FeStressFactor                            fe_stress;
+    /** Limit equilibrium on the same sliding surface (slope generator only). */
+    analyses::LimitEquilibriumResults                   limit_equilibrium;
     std::vector<Vector<double>>                         displacements;
     nlohmann::json                                      summary;
 

@@ -148,6 +148,7 @@ namespace fdem
       WaterParameters::declare_parameters(prm);
       SolverParameters::declare_parameters(prm);
       OutputParameters::declare_parameters(prm);
+      analyses::LimitEquilibriumParameters::declare_parameters(prm);
     }
 
     void
@@ -162,6 +163,7 @@ namespace fdem
       water.parse_parameters(prm);
       solver.parse_parameters(prm);
       output.parse_parameters(prm);
+      limit_equilibrium.parse_parameters(prm);
 
       block_names     = names_in(prm, "Blocks");
       boundary_names  = names_in(prm, "Boundaries");

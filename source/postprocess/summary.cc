@@ -200,6 +200,7 @@ namespace fdem
                                                nlohmann::json("not certified") :
                                                number_or_null(check.relative_change)}};
       }
+    summary["limit_equilibrium"] = analyses::to_json(model.limit_equilibrium);
     summary["rigid_motions"] = std::vector<double>(model.contact_outcome.solution.rigid_motions.begin(),
                                                    model.contact_outcome.solution.rigid_motions.end());
     nlohmann::json iterations = nlohmann::json::array();

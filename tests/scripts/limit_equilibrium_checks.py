@@ -71,6 +71,17 @@ def planar_checks():
         F, _ = le.spencer(section, surface, 50)
         check(f"Spencer, plane to x = {end}, c = {c}, phi = {phi}", F,
               planar_block(c, phi, 20, surface, ground), 1e-12)
+        # The other methods: on one plane force equilibrium alone fixes F
+        # too, and Janbu's f0 is 1 (no depth below the chord).
+        F0, f0 = le.janbu(section, surface, 50)
+        for name, value in (("ordinary", le.ordinary(section, surface, 50)),
+                            ("Janbu", F0), ("Janbu corrected", F0 * f0),
+                            ("Morgenstern-Price f = 1",
+                             le.morgenstern_price(section, surface, 50, "constant")[0]),
+                            ("Morgenstern-Price half-sine",
+                             le.morgenstern_price(section, surface, 50, "half-sine")[0])):
+            check(f"  {name}, the same plane", value, planar_block(c, phi, 20, surface, ground),
+                  1e-12)
         mirrored = le.Section([(-x, y) for x, y in ground][::-1],
                               [le.Layer(None, 20, None, c, phi)])
         F, _ = le.spencer(mirrored, [(-x, y) for x, y in surface], 50)

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <fdem/analyses/limit_equilibrium_parameters.h>
 #include <fdem/parameters/geometry_parameters.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -41,6 +42,8 @@ namespace fdem
       SafetyFactorParameters safety_factor;
       WaterParameters    water;
       OutputParameters   output;
+      /** Limit equilibrium on the model's own sliding surface. */
+      analyses::LimitEquilibriumParameters limit_equilibrium;
 
       std::vector<std::string>                   block_names;
       /** Names of the material regions (Materials/Names). */

@@ -1,0 +1,449 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+//
+// The sliding mass cut into slices: a line-by-line port of SlicedMass and
+// circle_surface() of tools/limit_equilibrium.py (doc/limit_equilibrium.md),
+// so that the C++ and the Python yardstick slice a surface the same way.
+#include <fdem/analyses/limit_equilibrium.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    namespace limit_equilibrium
+    {
+      using namespace dealii;
+
+      namespace
+      {
+        constexpr double infinity = std::numeric_limits<double>::infinity();
+
+        /** numpy.linspace(a, b, n): a + i (b - a) / (n - 1), the last one b. */
+        std::vector<double>
+        linspace(const double a, const double b, const unsigned int n)
+        {
+          std::vector<double> values(n);
+          const double        step = (b - a) / (n - 1);
+          for (unsigned int i = 0; i < n; ++i)
+            values[i] = a + i * step;
+          values.back() = b;
+          return values;
+        }
+
+        /** The x where two polylines cross inside (x0, x1). */
+        std::vector<double>
+        crossings(const std::vector<Point<2>> &line_a,
+                  const std::vector<Point<2>> &line_b,
+                  const double                 x0,
+                  const double                 x1)
+        {
+          std::set<double> all = {x0, x1};
+          for (const auto *line : {&line_a, &line_b})
+            for (const Point<2> &p : *line)
+              all.insert(p[0]);
+          std::vector<double> xs;
+          for (const double x : all)
+            if (x0 <= x && x <= x1)
+              xs.push_back(x);
+          std::vector<double> found;
+          for (unsigned int i = 0; i + 1 < xs.size(); ++i)
+            {
+              const double a = xs[i], b = xs[i + 1];
+              const double da = elevation(line_a, a) - elevation(line_b, a);
+              const double db = elevation(line_a, b) - elevation(line_b, b);
+              if (da * db < 0)
+                found.push_back(a + (b - a) * da / (da - db));
+            }
+          return found;
+        }
+
+        std::vector<Point<2>>
+        mirror(const std::vector<Point<2>> &line)
+        {
+          std::vector<Point<2>> out;
+          for (auto p = line.rbegin(); p != line.rend(); ++p)
+            out.emplace_back(-(*p)[0], (*p)[1]);
+          return out;
+        }
+      } // namespace
+
+
+
+      double
+      elevation(const std::vector<Point<2>> &line, const double x)
+      {
+        if (x <= line.front()[0])
+          return line.front()[1];
+        if (x >= line.back()[0])
+          return line.back()[1];
+        const auto upper = std::upper_bound(
+          line.begin(), line.end(), x, [](const double v, const Point<2> &p) {
+            return v < p[0];
+          });
+        const Point<2> &p = *(upper - 1), &q = *upper;
+        return (q[1] - p[1]) / (q[0] - p[0]) * (x - p[0]) + p[1];
+      }
+
+
+
+      double
+      find_root(const std::function<double(double)> &f,
+                double                               a,
+                double                               b,
+                const double                         xtol,
+                const double                         rtol)
+      {
+        double xpre = a, xcur = b, xblk = 0, fblk = 0, spre = 0, scur = 0;
+        double fpre = f(xpre), fcur = f(xcur);
+        AssertThrow(!(fpre * fcur > 0),
+                    ExcMessage("Limit equilibrium: a root is not bracketed."));
+        if (fpre == 0)
+          return xpre;
+        if (fcur == 0)
+          return xcur;
+        for (unsigned int i = 0; i < 100; ++i)
+          {
+            if (fpre != 0 && fcur != 0 &&
+                std::signbit(fpre) != std::signbit(fcur))
+              {
+                xblk = xpre;
+                fblk = fpre;
+                spre = scur = xcur - xpre;
+              }
+            if (std::abs(fblk) < std::abs(fcur))
+              {
+                xpre = xcur;
+                xcur = xblk;
+                xblk = xpre;
+                fpre = fcur;
+                fcur = fblk;
+                fblk = fpre;
+              }
+            const double delta = (xtol + rtol * std::abs(xcur)) / 2;
+            const double sbis  = (xblk - xcur) / 2;
+            if (fcur == 0 || std::abs(sbis) < delta)
+              return xcur;
+            if (std::abs(spre) > delta && std::abs(fcur) < std::abs(fpre))
+              {
+                double stry;
+                if (xpre == xblk)
+                  stry = -fcur * (xcur - xpre) / (fcur - fpre);
+                else
+                  {
+                    const double dpre = (fpre - fcur) / (xpre - xcur);
+                    const double dblk = (fblk - fcur) / (xblk - xcur);
+                    stry              = -fcur * (fblk * dblk - fpre * dpre) /
+                           (dblk * dpre * (fblk - fpre));
+                  }
+                if (2 * std::abs(stry) <
+                    std::min(std::abs(spre), 3 * std::abs(sbis) - delta))
+                  {
+                    spre = scur;
+                    scur = stry;
+                  }
+                else
+                  spre = scur = sbis;
+              }
+            else
+              spre = scur = sbis;
+            xpre = xcur;
+            fpre = fcur;
+            xcur += std::abs(scur) > delta ? scur : (sbis > 0 ? delta : -delta);
+            fcur = f(xcur);
+          }
+        return xcur;
+      }
+
+
+
+      std::vector<Point<2>>
+      circle_surface(const std::vector<Point<2>> &ground,
+                     const Point<2>              &centre,
+                     const double                 radius,
+                     const unsigned int           n_points)
+      {
+        const double xc = centre[0], yc = centre[1];
+        const auto   lower = [&](const double x) {
+          return yc -
+                 std::sqrt(std::max(radius * radius - (x - xc) * (x - xc), 0.));
+        };
+        const auto depth = [&](const double x) {
+          return elevation(ground, x) - lower(x);
+        };
+        const std::vector<double> xs =
+          linspace(xc - radius, xc + radius, 20001);
+        int first = -1, last = -1;
+        for (unsigned int i = 0; i < xs.size(); ++i)
+          if (depth(xs[i]) > 0)
+            {
+              if (first < 0)
+                first = i;
+              last = i;
+            }
+        AssertThrow(first >= 0,
+                    ExcMessage("Limit equilibrium: the circular sliding "
+                               "surface does not pass below the ground."));
+        const int    n = xs.size();
+        const double x0 =
+          first > 0 ? find_root(depth, xs[first - 1], xs[first], 1e-13) : xs[0];
+        const double          x1 = last < n - 1 ?
+                                     find_root(depth, xs[last], xs[last + 1], 1e-13) :
+                                     xs[n - 1];
+        std::vector<Point<2>> arc;
+        for (const double x : linspace(x0, x1, n_points))
+          arc.emplace_back(x, lower(x));
+        return arc;
+      }
+
+
+
+      std::vector<Point<2>>
+      polyline_in_ground(const std::vector<Point<2>> &ground,
+                         const std::vector<Point<2>> &polyline)
+      {
+        // As surface_in_ground() of benchmarks/le_comparison.py.
+        const auto depth = [&](const double x) {
+          return elevation(ground, x) - elevation(polyline, x);
+        };
+        const std::vector<double> grid =
+          linspace(polyline.front()[0], polyline.back()[0], 4001);
+        int first = -1, last = -1;
+        for (unsigned int i = 0; i < grid.size(); ++i)
+          if (depth(grid[i]) > 0)
+            {
+              if (first < 0)
+                first = i;
+              last = i;
+            }
+        AssertThrow(first > 0 && last + 1 < static_cast<int>(grid.size()),
+                    ExcMessage("Limit equilibrium: the polyline sliding "
+                               "surface must start and end on or above the "
+                               "ground and pass below it."));
+        const double x0 = find_root(depth, grid[first - 1], grid[first], 1e-13);
+        const double x1 = find_root(depth, grid[last], grid[last + 1], 1e-13);
+        std::vector<Point<2>> out = {Point<2>(x0, elevation(polyline, x0))};
+        for (const Point<2> &p : polyline)
+          if (x0 < p[0] && p[0] < x1)
+            out.push_back(p);
+        out.emplace_back(x1, elevation(polyline, x1));
+        return out;
+      }
+
+
+
+      namespace
+      {
+        /** The top line of layer k (the ground for the first one). */
+        const std::vector<Point<2>> &
+        top(const SlicedMass &mass, const unsigned int k)
+        {
+          return k == 0 || mass.layers[k].top.empty() ? mass.ground :
+                                                        mass.layers[k].top;
+        }
+
+        struct Column
+        {
+          /** Per layer: dry and wet thickness above the surface. */
+          std::vector<std::pair<double, double>> parts;
+          double                                 y_base, y_water;
+        };
+
+        Column
+        column(const SlicedMass &mass, const double x)
+        {
+          Column c;
+          c.y_base                    = elevation(mass.surface, x);
+          const double yg             = elevation(mass.ground, x);
+          c.y_water                   = mass.piezometric.empty() ? -infinity :
+                                                                   elevation(mass.piezometric, x);
+          const unsigned int n_layers = mass.layers.size();
+          for (unsigned int k = 0; k < n_layers; ++k)
+            {
+              const double t = std::min(elevation(top(mass, k), x), yg);
+              double       bottom =
+                k + 1 < n_layers ? elevation(top(mass, k + 1), x) : -infinity;
+              bottom         = std::max(bottom, c.y_base);
+              const double h = std::max(t - bottom, 0.);
+              const double wet =
+                h > 0 ? std::max(std::min(t, c.y_water) - bottom, 0.) : 0.;
+              c.parts.emplace_back(h - wet, wet);
+            }
+          return c;
+        }
+
+        const SoilLayer &
+        layer_at(const SlicedMass &mass, const double x, const double y)
+        {
+          const unsigned int n_layers = mass.layers.size();
+          for (unsigned int k = 0; k < n_layers; ++k)
+            {
+              const double below =
+                k + 1 < n_layers ? elevation(top(mass, k + 1), x) : -infinity;
+              if (y >= below)
+                return mass.layers[k];
+            }
+          return mass.layers.back();
+        }
+
+        void
+        cut_at_crack(SlicedMass  &mass,
+                     const double depth,
+                     const double water_depth)
+        {
+          // The crack is at the upper (right) end: the surface ends where it
+          // lies depth below the ground.
+          const double x0  = mass.surface.front()[0];
+          const double x1  = mass.surface.back()[0];
+          const auto   gap = [&](const double x) {
+            return elevation(mass.ground, x) - elevation(mass.surface, x) -
+                   depth;
+          };
+          AssertThrow(!(gap(x1 - 1e-12 * (x1 - x0)) > 0),
+                      ExcMessage(
+                        "Limit equilibrium: the sliding surface is not "
+                        "Tension crack depth deep at its upper end."));
+          const std::vector<double> xs = linspace(x0, x1, 4001);
+          int                       k  = -1;
+          for (unsigned int i = 0; i + 1 < xs.size(); ++i)
+            if (gap(xs[i]) >= 0)
+              k = i;
+          AssertThrow(k >= 0,
+                      ExcMessage("Limit equilibrium: the sliding surface is "
+                                 "nowhere as deep as Tension crack depth."));
+          const double          xc = find_root(gap, xs[k], xs[k + 1], 1e-14);
+          std::vector<Point<2>> cut;
+          for (const Point<2> &p : mass.surface)
+            if (p[0] < xc)
+              cut.push_back(p);
+          cut.emplace_back(xc, elevation(mass.surface, xc));
+          mass.surface = cut;
+          mass.crack_force =
+            0.5 * mass.water_unit_weight * water_depth * water_depth;
+          // Pushes to the left, a third of the water depth above the bottom.
+          mass.crack_point = Point<2>(xc, cut.back()[1] + water_depth / 3.0);
+        }
+
+        void
+        make_slices(SlicedMass &mass, const unsigned int n_slices)
+        {
+          const double x0 = mass.surface.front()[0],
+                       x1 = mass.surface.back()[0];
+          std::vector<const std::vector<Point<2>> *> lines = {&mass.ground,
+                                                              &mass.surface};
+          for (unsigned int k = 1; k < mass.layers.size(); ++k)
+            lines.push_back(&top(mass, k));
+          if (!mass.piezometric.empty())
+            lines.push_back(&mass.piezometric);
+          std::set<double> breaks = {x0, x1};
+          for (const auto *line : lines)
+            for (const Point<2> &p : *line)
+              if (x0 < p[0] && p[0] < x1)
+                breaks.insert(p[0]);
+          for (unsigned int i = 0; i < lines.size(); ++i)
+            for (unsigned int j = i + 1; j < lines.size(); ++j)
+              for (const double x : crossings(*lines[i], *lines[j], x0, x1))
+                breaks.insert(x);
+          const std::vector<double> sorted(breaks.begin(), breaks.end());
+          const double              width = (x1 - x0) / n_slices;
+          mass.x.clear();
+          for (unsigned int i = 0; i + 1 < sorted.size(); ++i)
+            {
+              const double a = sorted[i], b = sorted[i + 1];
+              const int m = std::max(1, int(std::ceil((b - a) / width - 1e-9)));
+              const auto points = linspace(a, b, m + 1);
+              mass.x.insert(mass.x.end(), points.begin(), points.end() - 1);
+            }
+          mass.x.push_back(x1);
+        }
+
+        Slice
+        make_slice(const SlicedMass &mass, const double a, const double b)
+        {
+          const Column ca = column(mass, a), cb = column(mass, b);
+          double       wa = 0, wb = 0; // weight per unit width at a and b
+          for (unsigned int k = 0; k < mass.layers.size(); ++k)
+            {
+              const SoilLayer &layer = mass.layers[k];
+              wa += layer.unit_weight * ca.parts[k].first +
+                    layer.saturated_unit_weight * ca.parts[k].second;
+              wb += layer.unit_weight * cb.parts[k].first +
+                    layer.saturated_unit_weight * cb.parts[k].second;
+            }
+          Slice s;
+          // A linear load w(x) on [a, b]: its resultant and centroid.
+          s.W  = 0.5 * (wa + wb) * (b - a);
+          s.xg = wa + wb > 0 ? a + (b - a) * (wa + 2 * wb) / (3 * (wa + wb)) :
+                               0.5 * (a + b);
+          const double ya = ca.y_base, yb = cb.y_base;
+          s.l             = std::hypot(b - a, yb - ya);
+          s.alpha         = std::atan2(yb - ya, b - a);
+          s.sin_alpha     = std::sin(s.alpha);
+          s.cos_alpha     = std::cos(s.alpha);
+          const double gw = mass.pore_pressure ? mass.water_unit_weight : 0.;
+          const double ua = gw * std::max(ca.y_water - ya, 0.);
+          const double ub = gw * std::max(cb.y_water - yb, 0.);
+          s.U             = 0.5 * (ua + ub) * s.l;
+          s.xm            = 0.5 * (a + b);
+          s.ym            = 0.5 * (ya + yb);
+          const SoilLayer &layer =
+            layer_at(mass, s.xm, s.ym + 1e-9 * (1 + std::abs(s.ym)));
+          s.c       = layer.cohesion;
+          s.tan_phi = std::tan(layer.friction_angle * M_PI / 180);
+          return s;
+        }
+      } // namespace
+
+
+
+      SlicedMass::SlicedMass(const Section     &section,
+                             const Surface     &sliding,
+                             const unsigned int n_slices)
+        : water_unit_weight(section.water_unit_weight)
+        , pore_pressure(section.pore_pressure)
+        , circular(sliding.circular)
+      {
+        AssertThrow(!section.layers.empty(),
+                    ExcMessage("Limit equilibrium: the section has no soil."));
+        std::vector<Point<2>> line =
+          sliding.circular ?
+            circle_surface(section.ground,
+                           sliding.centre,
+                           sliding.radius,
+                           n_slices + 1) :
+            polyline_in_ground(section.ground, sliding.polyline);
+        std::sort(line.begin(),
+                  line.end(),
+                  [](const Point<2> &p, const Point<2> &q) {
+                    return p[0] < q[0] || (p[0] == q[0] && p[1] < q[1]);
+                  });
+        mirrored = elevation(section.ground, line.front()[0]) >
+                   elevation(section.ground, line.back()[0]);
+        const auto flip = [&](const std::vector<Point<2>> &l) {
+          return mirrored ? mirror(l) : l;
+        };
+        ground  = flip(section.ground);
+        surface = flip(line);
+        layers  = section.layers;
+        for (SoilLayer &layer : layers)
+          if (!layer.top.empty())
+            layer.top = flip(layer.top);
+        if (!section.piezometric.empty())
+          piezometric = flip(section.piezometric);
+        centre = Point<2>(mirrored ? -sliding.centre[0] : sliding.centre[0],
+                          sliding.centre[1]);
+        radius = sliding.radius;
+        if (sliding.crack_depth > 0)
+          cut_at_crack(*this, sliding.crack_depth, sliding.crack_water_depth);
+        make_slices(*this, n_slices);
+        for (unsigned int i = 0; i + 1 < x.size(); ++i)
+          slices.push_back(make_slice(*this, x[i], x[i + 1]));
+      }
+    } // namespace limit_equilibrium
+  }   // namespace analyses
+} // namespace fdem
