@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -109,16 +110,34 @@ namespace fdem
           if (std::isfinite(factor))
             values.push_back({"FE-stress factor", factor});
         }
-      if (summary.contains("limit_equilibrium") &&
-          summary["limit_equilibrium"].is_object())
-        for (const auto &[method, value] : summary["limit_equilibrium"].items())
+      // limit_equilibrium: {"methods": {method: {"K": ...}}, ...}, or a
+      // plain map method -> K.
+      const nlohmann::json &le = summary.contains("limit_equilibrium") ?
+                                   summary["limit_equilibrium"] :
+                                   nlohmann::json();
+      const nlohmann::json &methods =
+        le.is_object() && le.contains("methods") ? le["methods"] : le;
+      if (methods.is_object())
+        for (const auto &[method, value] : methods.items())
           {
             double factor = value.is_number() ? value.get<double>() : nan;
             for (const char *key : {"K", "safety_factor", "factor"})
               if (std::isnan(factor))
                 factor = number(value, key);
+            // The names engineers know; an unknown key is shown as it is.
+            static const std::map<std::string, std::string> names = {
+              {"bishop_simplified", "Bishop simplified"},
+              {"janbu_corrected", "Janbu corrected"},
+              {"janbu_simplified", "Janbu simplified"},
+              {"morgenstern_price_constant", "Morgenstern-Price, constant"},
+              {"morgenstern_price_half_sine", "Morgenstern-Price, half-sine"},
+              {"ordinary", "ordinary (Fellenius)"},
+              {"spencer", "Spencer"}};
+            const auto name = names.find(method);
             if (std::isfinite(factor))
-              values.push_back({"limit equilibrium, " + method, factor});
+              values.push_back({"limit equilibrium, " +
+                                  (name == names.end() ? method : name->second),
+                                factor});
           }
       return values;
     }

@@ -125,7 +125,7 @@ def check_no_python(exe, prm):
     env = dict(os.environ, FDEM_PYTHON="/nonexistent/python3")
     with fdem_run.temporary_run(exe, prm, env=env) as run:
         assert run.ok, run.failure()
-        warnings = [l for l in run.stdout.splitlines() if "no report" in l]
+        warnings = [l for l in run.stdout.splitlines() if "no-report" in l]
         print(warnings)
         assert len(warnings) == 1 and warnings[0].startswith("warning: [no-report] "), warnings
         report = run.summary["report"]
