@@ -110,7 +110,7 @@ def check_report(exe, prm):
         print("report:", report)
         assert report["made"] is True and report["file"] == "report.html", report
         assert os.path.exists(run.file("report.html"))
-        assert "Report: report.html" in run.stdout
+        assert "Report: report.html" in open(run.file("log.txt")).read()
         check_pictures(run.output)
         # The page states the run's safety factor.
         page = open(run.file("report.html")).read()
