@@ -86,3 +86,18 @@ def read_typed_csv(path):
                     row[key] = value
             rows.append(row)
     return rows
+
+
+def put_benchmarks_section(md_path, lines, marker):
+    """Replaces the section of @p md_path between "<!-- marker:" and
+    "<!-- /marker -->" by @p lines (which carry both), or appends them."""
+    text = open(md_path).read() if os.path.exists(md_path) else ""
+    start, end = f"<!-- {marker}:", f"<!-- /{marker} -->"
+    if start in text and end in text:
+        a = text.index(start)
+        b = text.index(end) + len(end)
+        text = text[:a].rstrip("\n") + "\n\n" + "\n".join(lines).strip("\n") + text[b:]
+    else:
+        text = text.rstrip("\n") + "\n\n" + "\n".join(lines)
+    with open(md_path, "w") as f:
+        f.write(text)

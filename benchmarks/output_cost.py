@@ -114,20 +114,6 @@ def benchmarks_section(csv_path):
     return lines
 
 
-def put_benchmarks_section(md_path, lines):
-    """Replaces the Output cost section of @p md_path (or appends it)."""
-    text = open(md_path).read() if os.path.exists(md_path) else ""
-    start, end = "<!-- output cost:", "<!-- /output cost -->"
-    if start in text and end in text:
-        a = text.index(start)
-        b = text.index(end) + len(end)
-        text = text[:a].rstrip("\n") + "\n\n" + "\n".join(lines).strip("\n") + text[b:]
-    else:
-        text = text.rstrip("\n") + "\n\n" + "\n".join(lines)
-    with open(md_path, "w") as f:
-        f.write(text)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--exe", default=common.DEFAULT_EXE)
@@ -157,8 +143,8 @@ def main():
             writer = csv.DictWriter(f, fieldnames=FIELDS, restval="")
             writer.writeheader()
             writer.writerows(sorted(rows, key=lambda r: (r["label"], r["case"])))
-    put_benchmarks_section(os.path.join(args.output_dir, "benchmarks.md"),
-                           benchmarks_section(csv_path))
+    common.put_benchmarks_section(os.path.join(args.output_dir, "benchmarks.md"),
+                                  benchmarks_section(csv_path), "output cost")
     print(f"wrote {csv_path} and the Output cost section of benchmarks.md")
     return 0
 

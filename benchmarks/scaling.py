@@ -253,20 +253,6 @@ def benchmarks_section(csv_path):
     return lines + ["<!-- /scale -->", ""]
 
 
-def put_benchmarks_section(md_path, lines):
-    """Replaces the Scale section of @p md_path (or appends it)."""
-    text = open(md_path).read() if os.path.exists(md_path) else ""
-    start, end = "<!-- scale:", "<!-- /scale -->"
-    if start in text and end in text:
-        a = text.index(start)
-        b = text.index(end) + len(end)
-        text = text[:a].rstrip("\n") + "\n\n" + "\n".join(lines).strip("\n") + text[b:]
-    else:
-        text = text.rstrip("\n") + "\n\n" + "\n".join(lines)
-    with open(md_path, "w") as f:
-        f.write(text)
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--exe", default=common.DEFAULT_EXE)
@@ -327,7 +313,8 @@ def main():
     with open(os.path.join(doc_dir, "scaling.md"), "w") as f:
         f.write("\n".join(lines))
     csv_path = os.path.join(doc_dir, "benchmarks", "scaling.csv")
-    put_benchmarks_section(os.path.join(doc_dir, "benchmarks.md"), benchmarks_section(csv_path))
+    common.put_benchmarks_section(os.path.join(doc_dir, "benchmarks.md"), benchmarks_section(csv_path),
+                                  "scale")
     print(f"wrote {os.path.join(doc_dir, 'scaling.md')} and the Scale section of benchmarks.md")
     return 0 if rows_2d and rows_3d and rows_it else 1
 
