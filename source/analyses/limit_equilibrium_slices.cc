@@ -5,6 +5,7 @@
 // circle_surface() of tools/limit_equilibrium.py (doc/limit_equilibrium.md),
 // so that the C++ and the Python yardstick slice a surface the same way.
 #include <fdem/analyses/limit_equilibrium.h>
+#include <fdem/geometry/cases/case_input.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -78,16 +79,9 @@ namespace fdem
       double
       elevation(const std::vector<Point<2>> &line, const double x)
       {
-        if (x <= line.front()[0])
-          return line.front()[1];
-        if (x >= line.back()[0])
-          return line.back()[1];
-        const auto upper = std::upper_bound(
-          line.begin(), line.end(), x, [](const double v, const Point<2> &p) {
-            return v < p[0];
-          });
-        const Point<2> &p = *(upper - 1), &q = *upper;
-        return (q[1] - p[1]) / (q[0] - p[0]) * (x - p[0]) + p[1];
+        // The slope generator's own: the sections see the ground and the
+        // layers where the mesh has them.
+        return geometry::case_input::polyline_elevation(line, x);
       }
 
 

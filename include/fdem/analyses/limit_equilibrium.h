@@ -183,7 +183,7 @@ namespace fdem
             const double      tolerance);
 
       /** The elevation of a polyline at x, constant beyond its ends
-       * (np.interp). */
+       * (np.interp): geometry::case_input::polyline_elevation(). */
       double
       elevation(const std::vector<Point<2>> &line, const double x);
 
