@@ -44,14 +44,8 @@ namespace fdem
                   const double                 x0,
                   const double                 x1)
         {
-          std::set<double> all = {x0, x1};
-          for (const auto *line : {&line_a, &line_b})
-            for (const Point<2> &p : *line)
-              all.insert(p[0]);
-          std::vector<double> xs;
-          for (const double x : all)
-            if (x0 <= x && x <= x1)
-              xs.push_back(x);
+          const std::vector<double> xs =
+            geometry::case_input::polyline_breakpoints(line_a, line_b, x0, x1);
           std::vector<double> found;
           for (unsigned int i = 0; i + 1 < xs.size(); ++i)
             {

@@ -4,16 +4,10 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
 #include <cmath>
-
-extern "C"
-{
-  void
-  dgeqrf_(const int *m, const int *n, double *a, const int *lda, double *tau, double *work,
-          const int *lwork, int *info);
-}
 
 namespace fdem
 {
@@ -37,14 +31,16 @@ namespace fdem
         std::vector<double> sigma(n, 0.0);
         if (n == 0)
           return sigma;
-        const int           rows = m, columns = n;
-        int                 info = 0, lwork = -1;
-        std::vector<double> tau(n);
-        double              size = 0;
-        dgeqrf_(&rows, &columns, a.data(), &rows, tau.data(), &size, &lwork, &info);
-        lwork = std::max(1, static_cast<int>(size));
+        // LAPACK through deal.II's wrappers (lapack_templates.h), which
+        // know the BLAS integer type of the library deal.II was built with.
+        const types::blas_int rows = m, columns = n;
+        types::blas_int       info = 0, lwork = -1;
+        std::vector<double>   tau(n);
+        double                size = 0;
+        geqrf(&rows, &columns, a.data(), &rows, tau.data(), &size, &lwork, &info);
+        lwork = std::max<types::blas_int>(1, static_cast<types::blas_int>(size));
         std::vector<double> work(lwork);
-        dgeqrf_(&rows, &columns, a.data(), &rows, tau.data(), work.data(), &lwork, &info);
+        geqrf(&rows, &columns, a.data(), &rows, tau.data(), work.data(), &lwork, &info);
         AssertThrow(info == 0, ExcInternalError());
         LAPACKFullMatrix<double> R(n, n);
         for (unsigned int j = 0; j < n; ++j)

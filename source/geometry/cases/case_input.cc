@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
+#include <set>
 
 namespace fdem
 {
@@ -165,6 +166,20 @@ namespace fdem
               return (1 - t) * line[i - 1][1] + t * line[i][1];
             }
         return line.back()[1];
+      }
+
+      std::vector<double>
+      polyline_breakpoints(const std::vector<Point<2>> &a,
+                           const std::vector<Point<2>> &b,
+                           const double                 x_min,
+                           const double                 x_max)
+      {
+        std::set<double> x{x_min, x_max};
+        for (const auto *line : {&a, &b})
+          for (const Point<2> &p : *line)
+            if (p[0] > x_min && p[0] < x_max)
+              x.insert(p[0]);
+        return {x.begin(), x.end()};
       }
     } // namespace case_input
   }   // namespace geometry

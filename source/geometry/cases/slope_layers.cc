@@ -43,22 +43,6 @@ namespace fdem
         return clipped;
       }
 
-      /** The x of the points of @p a and @p b inside [x_min, x_max], and the
-       * ends. */
-      std::vector<double>
-      breakpoints(const std::vector<Point<2>> &a,
-                  const std::vector<Point<2>> &b,
-                  const double                 x_min,
-                  const double                 x_max)
-      {
-        std::set<double> x{x_min, x_max};
-        for (const auto *line : {&a, &b})
-          for (const Point<2> &p : *line)
-            if (p[0] > x_min && p[0] < x_max)
-              x.insert(p[0]);
-        return {x.begin(), x.end()};
-      }
-
       std::string
       number(const double x)
       {
@@ -151,7 +135,8 @@ namespace fdem
                               path + which + "must span the model from x = " +
                                 number(x_min) + " to x = " + number(x_max) +
                                 ".");
-          for (const double x : breakpoints(line, ground_surface, x_min, x_max))
+          for (const double x : case_input::polyline_breakpoints(
+                 line, ground_surface, x_min, x_max))
             case_input::require(
               case_input::polyline_elevation(line, x) <=
                   case_input::polyline_elevation(ground_surface, x) +
@@ -161,8 +146,8 @@ namespace fdem
               path + which + "leaves the model at x = " + number(x) +
                 " (above the ground surface or not above the base).");
           if (k > 0)
-            for (const double x :
-                 breakpoints(line, layer_boundaries[k - 1], x_min, x_max))
+            for (const double x : case_input::polyline_breakpoints(
+                   line, layer_boundaries[k - 1], x_min, x_max))
               case_input::require(
                 case_input::polyline_elevation(line, x) <
                   case_input::polyline_elevation(layer_boundaries[k - 1], x) -

@@ -111,6 +111,16 @@ namespace fdem
        * linear between its points and constant beyond its ends. */
       double
       polyline_elevation(const std::vector<Point<2>> &line, const double x);
+
+      /** The x of the points of @p a and @p b strictly inside
+       * (x_min, x_max), and the two ends, in increasing order: where two
+       * polylines may change slope, so that between two of these x they can
+       * cross at most once. */
+      std::vector<double>
+      polyline_breakpoints(const std::vector<Point<2>> &a,
+                           const std::vector<Point<2>> &b,
+                           const double                 x_min,
+                           const double                 x_max);
     } // namespace case_input
   }   // namespace geometry
 } // namespace fdem
