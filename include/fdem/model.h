@@ -15,6 +15,7 @@
 #include <fdem/postprocess/vtu_writer.h>
 #include <fdem/analyses/fe_stress_factor.h>
 #include <fdem/analyses/limit_equilibrium_model.h>
+#include <fdem/analyses/seismic_results.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -223,6 +224,8 @@ namespace fdem
     analyses::FeStressFactor                            fe_stress;
     /** Limit equilibrium on the same sliding surface (slope generator only). */
     analyses::LimitEquilibriumResults                   limit_equilibrium;
+    /** The seismic load, the yield acceleration and the Newmark displacement (analyses/seismic.h). */
+    analyses::SeismicResults                            seismic;
     std::vector<Vector<double>>                         displacements;
     nlohmann::json                                      summary;
 
