@@ -5,6 +5,7 @@
 // displacement (doc/theory.md, "Seismic load"; doc/verification.md).
 #include "test_helpers.h"
 
+#include <fdem/analyses/limit_equilibrium_model.h>
 #include <fdem/analyses/newmark.h>
 #include <fdem/analyses/safety_factor_analysis.h>
 #include <fdem/analyses/seismic.h>
@@ -195,12 +196,14 @@ TEST(Seismic, YieldAccelerationOfTheBlockOnPlane)
         // The curve is K(kh): each point against the closed form.
         for (const auto &point : r.curve)
           if (point.certified)
-            EXPECT_NEAR(
-              point.K,
-              pseudo_static_K(
-                c, phi, geometry.block_length, W, theta, point.kh, kv),
-              1e-9)
-              << "kh " << point.kh;
+            {
+              EXPECT_NEAR(
+                point.K,
+                pseudo_static_K(
+                  c, phi, geometry.block_length, W, theta, point.kh, kv),
+                1e-9)
+                << "kh " << point.kh;
+            }
         if (c == 0)
           EXPECT_NEAR(r.k_y,
                       (1 - kv) * std::tan((phi - 30) * PI / 180),
@@ -287,7 +290,9 @@ TEST(Newmark, RectangularPulseToFirstOrderInTheSampling)
       EXPECT_GT(error, 0); // the ramp adds sliding
       EXPECT_LT(error, A * T * dt * A / a_y);
       if (last_error > 0)
-        EXPECT_NEAR(last_error / error, 2, 0.1) << "dt " << dt;
+        {
+          EXPECT_NEAR(last_error / error, 2, 0.1) << "dt " << dt;
+        }
       last_error = error;
       // One-directional: never backwards.
       for (unsigned int i = 1; i < r.displacement.size(); ++i)
@@ -328,4 +333,64 @@ TEST(Newmark, TwoDirectionalSlidesBackwards)
                                    k_y,
                                    std::numeric_limits<double>::infinity());
   EXPECT_EQ(one.max_displacement, 0);
+}
+
+namespace
+{
+  /** Bishop's K of the paper's section and circle under kh (C++ limit
+   * equilibrium). */
+  double
+  bishop_K(const parameters::Parameters &p, const double kh)
+  {
+    namespace le = analyses::limit_equilibrium;
+    le::Section              section;
+    le::Surface              surface;
+    std::string              why_not;
+    std::vector<std::string> notes;
+    EXPECT_TRUE(analyses::model_section(p, section, surface, why_not, notes))
+      << why_not;
+    section.kh = kh;
+    return le::solve(le::SlicedMass(section, surface, 400),
+                     le::Method::bishop,
+                     1e-12)
+      .K;
+  }
+} // namespace
+
+TEST(PaperSlope, SeismicAgainstLimitEquilibriumAndYieldAcceleration)
+{
+  // prm/paper_slope.prm with kh = 0.1 against Bishop's method on the same
+  // circle and section with the same kh (slices' centroids): the methods
+  // differ by their own assumptions, so what is compared is the ratio
+  // K_contact / K_Bishop with and without kh, which should barely move
+  // (tolerance in the EXPECT below, from the measured values). And k_y:
+  // K(k_y) = 1 by construction; against Bishop's k_y (the root of
+  // K_Bishop(kh) = 1).
+  auto               p = test_support::case_parameters("paper_slope.prm");
+  std::ostringstream log;
+  auto               model  = factorised_model<2>(p, log);
+  const double       K0     = K_under(*model, 0, 0);
+  const double       K1     = K_under(*model, 0.1, 0);
+  const double       B0     = bishop_K(p, 0);
+  const double       B1     = bishop_K(p, 0.1);
+  const double       change = (K1 / B1) / (K0 / B0) - 1;
+  std::cout << "paper slope: K " << K0 << " -> " << K1 << " (kh = 0.1), Bishop "
+            << B0 << " -> " << B1 << "; ratio changes by " << change
+            << std::endl;
+  EXPECT_LT(K1, K0);
+  EXPECT_LT(std::abs(change), 5e-3);
+
+  analyses::SeismicLoad<2> load;
+  std::string              from;
+  load.direction = analyses::seismic_direction(*model, from);
+  analyses::YieldAccelerationParameters settings;
+  settings.tolerance = 1e-6; // K is known to Safety factor/Tolerance 1e-6
+  const auto r       = analyses::yield_acceleration(*model, load, settings);
+  ASSERT_TRUE(r.not_found.empty()) << r.not_found;
+  const double bishop_k_y = analyses::limit_equilibrium::find_root(
+    [&](const double kh) { return bishop_K(p, kh) - 1; }, 0, 0.5, 1e-12);
+  std::cout << "paper slope: k_y " << r.k_y << ", Bishop's " << bishop_k_y
+            << " (" << r.curve.size() << " K evaluations)" << std::endl;
+  EXPECT_NEAR(r.k_y, bishop_k_y, 0.03 * bishop_k_y);
+  EXPECT_NEAR(K_under(*model, r.k_y, 0), 1, 1e-5);
 }

@@ -160,8 +160,7 @@ namespace fdem
           [&](const double kh) { return K_of(kh) - 1; },
           a,
           b,
-          parameters.tolerance,
-          4e-16);
+          parameters.tolerance);
         low  = a;
         high = b;
         return root;
