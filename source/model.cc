@@ -8,6 +8,7 @@
 #include <fdem/postprocess/output_files.h>
 
 #include <fdem/analyses/safety_factor_analysis.h>
+#include <fdem/analyses/seismic.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_cost.h>
 
@@ -80,6 +81,9 @@ namespace fdem
     build_interfaces();
     progress("flexibility C of " + std::to_string(n_pairs_of(interfaces)) + " node pairs");
     compute_flexibility();
+    // The seismic load (and k_y, Newmark) before K: K is then that of the
+    // seismic load; without one the load stays the assembled one.
+    seismic = analyses::seismic_analyses(*this);
     if (parameters.safety_factor.compute)
       {
         // With Output/Write steps, each step with a static solution can be

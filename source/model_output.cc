@@ -191,8 +191,8 @@ namespace fdem
     if (converged)
       for (unsigned int b = 0; b < blocks.size(); ++b)
         {
-          const Vector<double> residual =
-            blocks[b]->nodal_residual(displacements[b]);
+          Vector<double> residual = blocks[b]->nodal_residual(displacements[b]);
+          residual += load_change(b); // the assembled cells have the assembled load
           for (const auto dof : blocks[b]->support_dofs)
             reactions[b] = std::max(reactions[b], std::abs(residual[dof]));
         }
@@ -205,6 +205,8 @@ namespace fdem
                                         parameters.safety_factor.compute ?
                                           &safety_factor_result :
                                           nullptr);
+    if (seismic.active)
+      summary["seismic"] = analyses::to_json(seismic);
     // The only entries that differ between two runs of the same input.
     summary["timings"] =
       postprocess::section_wall_times(timer, run_timer.wall_time());

@@ -380,6 +380,68 @@ def iteration_picture(summary, path):
     plt.close(fig)
 
 
+def seismic_section(folder, summary):
+    """The seismic load, the yield acceleration's K(kh) curve and the
+    Newmark displacement (summary.json's "seismic"): HTML, or "" without it."""
+    seismic = summary.get("seismic")
+    if not seismic:
+        return ""
+    out = ["<h2>Seismic load, yield acceleration, Newmark displacement</h2>"]
+    rows = [("kh (towards " + html.escape(str(seismic.get("direction_from", ""))) + ")",
+             number(seismic.get("kh"))),
+            ("kv (positive upwards)", number(seismic.get("kv"))),
+            ("direction of a positive kh", ", ".join(number(h, 4) for h in seismic.get("direction", []))),
+            ("seismic force on the pore water", number(seismic.get("on_pore_water")))]
+    y = seismic.get("yield_acceleration")
+    if y:
+        rows.append(("yield coefficient k_y (K = 1)",
+                     f"<b>{number(y.get('k_y'), 6)}</b>" if y.get("found")
+                     else html.escape("none: " + y.get("not_found", ""))))
+        if y.get("k_y_backward") is not None:
+            rows.append(("k_y backwards", number(y.get("k_y_backward"), 6)))
+    n = seismic.get("newmark")
+    if n and n.get("computed"):
+        rows.append((f"largest Newmark displacement ({html.escape(n.get('sliding', ''))})",
+                     f"<b>{number(n.get('max_displacement_m'), 4)} m</b> at {number(n.get('time_of_max_s'), 4)} s"))
+    out.append(table(rows))
+    curve = [p for p in (y or {}).get("curve", []) if p.get("K") is not None]
+    newmark_csv = os.path.join(folder, "newmark.csv")
+    has_newmark = bool(n and n.get("computed") and os.path.exists(newmark_csv))
+    if curve or has_newmark:
+        panels = (1 if curve else 0) + (2 if has_newmark else 0)
+        fig, axes = plt.subplots(panels, 1, figsize=(9, 3.2 * panels), squeeze=False)
+        axes = list(axes[:, 0])
+        if curve:
+            ax = axes.pop(0)
+            ax.plot([p["kh"] for p in curve], [p["K"] for p in curve], "o-", label="K(kh)")
+            ax.axhline(1, color="k", lw=0.8, ls=":")
+            if y.get("found"):
+                ax.axvline(y["k_y"], color="C3", lw=0.8, label=f"k_y = {y['k_y']:.4f}")
+            ax.set_xlabel("horizontal seismic coefficient kh")
+            ax.set_ylabel("safety factor K")
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=8)
+        if has_newmark:
+            data = np.genfromtxt(newmark_csv, delimiter=",", names=True)
+            ax, ax2 = axes
+            ax.plot(data["time_s"], data["acceleration_m_s2"], lw=0.8, label="record")
+            if y and y.get("found"):
+                ax.axhline(y["k_y"] * 9.80665, color="C3", lw=0.8, label="k_y g")
+            ax.set_ylabel("acceleration (m/s²)")
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=8)
+            ax2.plot(data["time_s"], data["displacement_m"], color="C2")
+            ax2.set_xlabel("time (s)")
+            ax2.set_ylabel("sliding displacement (m)")
+            ax2.grid(alpha=0.3)
+        fig.tight_layout()
+        path = os.path.join(folder, "seismic.png")
+        fig.savefig(path, dpi=DPI)
+        plt.close(fig)
+        out.append(f"<p>{image(path, 'K(kh) and the Newmark displacement')}</p>")
+    return "\n".join(out)
+
+
 # --------------------------------------------------------------------------
 # The page.
 
@@ -479,6 +541,9 @@ stresses in force per length squared.</p>
                        "max normal stress", "total normal force", "total tangential force"]))
     for name, alt in pictures:
         page.append(f"<h2>{html.escape(alt)}</h2>\n<p>{image(os.path.join(folder, name), alt)}</p>")
+    seismic = seismic_section(folder, summary)
+    if seismic:
+        page.append(seismic)
     if notes:
         page.append("<p>Notes: " + "; ".join(html.escape(n) for n in notes) + ".</p>")
     steps = summary.get("iterations", [])

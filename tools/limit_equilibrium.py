@@ -57,6 +57,14 @@ class Section:
     layers: list = field(default_factory=lambda: [Layer()])
     piezometric: list = None
     gamma_w: float = 9.81
+    # Pseudo-static seismic coefficients: kh W' horizontal at each slice's
+    # centroid towards the way the mass slides (kh_direction 0; +1 or -1:
+    # along +x or -x), kv W' upwards; W' with the unit weight below the
+    # piezometric line unless seismic_on_pore_water (then the saturated one).
+    kh: float = 0.0
+    kv: float = 0.0
+    seismic_on_pore_water: bool = False
+    kh_direction: int = 0
 
 
 def elevation(line, x):
@@ -116,6 +124,12 @@ class SlicedMass:
                              l.c, l.phi) for l in section.layers]
         self.piezometric = None if section.piezometric is None else flip(section.piezometric)
         self.gamma_w = section.gamma_w
+        self.kh, self.kv = getattr(section, "kh", 0.0), getattr(section, "kv", 0.0)
+        self.seismic_on_pore_water = getattr(section, "seismic_on_pore_water", False)
+        # The frame's mass moves to the left: a kh along +x or -x of the
+        # section pushes it forwards or back.
+        if getattr(section, "kh_direction", 0):
+            self.kh *= -section.kh_direction * (-1.0 if self.mirrored else 1.0)
         self.crack_force = 0.0
         self.crack_point = None
         if crack_depth > 0:
@@ -208,8 +222,27 @@ class SlicedMass:
             U = 0.5 * (ua + ub) * l
             xm, ym = 0.5 * (a + b), 0.5 * (ya + yb)
             layer = self._layer_at(xm, ym + 1e-9 * (1 + abs(ym)))
+            Q, V, y_g = 0.0, 0.0, 0.0
+            if self.kh != 0 or self.kv != 0:
+                # The seismic weight W' per unit width at a and b and its
+                # first moment about y = 0, the column stacked from its base.
+                def seismic_weight(column):
+                    parts, y, _ = column
+                    w = m = 0.0
+                    for (dry, wet), lay in reversed(list(zip(parts, self.layers))):
+                        wet_weight = lay.weight_below_water() if self.seismic_on_pore_water \
+                            else lay.gamma
+                        w += wet_weight * wet + lay.gamma * dry
+                        m += wet_weight * wet * (y + wet / 2) + lay.gamma * dry * (y + wet + dry / 2)
+                        y += wet + dry
+                    return w, m
+                (w_a, m_a), (w_b, m_b) = seismic_weight(ca), seismic_weight(cb)
+                W_seismic = 0.5 * (w_a + w_b) * (b - a)
+                y_g = (m_a + m_b) / (w_a + w_b) if w_a + w_b > 0 else 0.5 * (ya + yb)
+                Q, V = self.kh * W_seismic, self.kv * W_seismic
             out.append(dict(W=W, xg=xg, alpha=alpha, l=l, xm=xm, ym=ym, U=U,
-                            c=layer.c, tan_phi=math.tan(math.radians(layer.phi))))
+                            c=layer.c, tan_phi=math.tan(math.radians(layer.phi)),
+                            Q=Q, V=V, yg=y_g))
         return out
 
 
@@ -222,9 +255,10 @@ def _spencer_thrusts(slices, F, lam, crack_force):
     sa, ca = s["sin"], s["cos"]
     a, b = s["c"] * s["l"] / F, s["tan_phi"] / F
     # The crack's water force acts on the last (upper) slice, to the left.
-    Px = np.zeros_like(sa)
-    Px[-1] = -crack_force
-    num = (s["U"] * ca + a * sa - s["W"]) - lam * (a * ca - s["U"] * sa + Px)
+    # The seismic force Q on every slice, to the left, and V upwards.
+    Px = -s["Q"].copy()
+    Px[-1] -= crack_force
+    num = (s["U"] * ca + a * sa - (s["W"] - s["V"])) - lam * (a * ca - s["U"] * sa + Px)
     den = lam * (b * ca - sa) - (ca + b * sa)
     N = num / den
     return N, np.cumsum(N * (b * ca - sa) + (a * ca - s["U"] * sa + Px))
@@ -244,7 +278,7 @@ def _spencer_residuals(slices, F, lam, crack_force, crack_point):
     # crack's water force; interslice forces cancel in the sum.
     fx = -(N + s["U"]) * sa + S * ca
     fy = (N + s["U"]) * ca + S * sa
-    moment = np.sum(s["xm"] * fy - s["ym"] * fx - s["xg"] * s["W"])
+    moment = np.sum(s["xm"] * fy - s["ym"] * fx - s["xg"] * (s["W"] - s["V"]) + s["yg"] * s["Q"])
     if crack_force:
         moment += crack_point[1] * crack_force  # r x F with F = (-P, 0)
     return E, moment
@@ -301,9 +335,10 @@ def bishop(section, centre, radius, n_slices=400):
             sa, ca = math.sin(s["alpha"]), math.cos(s["alpha"])
             m = ca + sa * s["tan_phi"] / F
             width = s["l"] * ca
-            resisting += (s["c"] * width + (s["W"] - s["U"] * ca) * s["tan_phi"]) / m
-            # The weight's moment about the centre, for a mass moving left.
-            driving += s["W"] * (s["xg"] - xc)
+            resisting += (s["c"] * width + (s["W"] - s["V"] - s["U"] * ca) * s["tan_phi"]) / m
+            # The weight's moment about the centre, for a mass moving left,
+            # and the seismic force's (Q to the left at yg).
+            driving += (s["W"] - s["V"]) * (s["xg"] - xc) + s["Q"] * (centre[1] - s["yg"])
         return F - radius * resisting / driving
 
     return _root_in_F(g)
@@ -344,6 +379,8 @@ def vertical_wedges(section, surface, n_slices=400, crack_depth=0.0, crack_water
     base); along an interslice both are integrated over the layers it cuts.
     Returns (K, the interslice thrusts E)."""
     mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
+    if mass.kh != 0 or mass.kv != 0:
+        raise ValueError("the wedge method here takes no seismic coefficients")
     slices = mass.slices()
     vertices = mass.surface
     cuts = [p[0] for p in vertices[1:-1]]
@@ -460,18 +497,19 @@ def _interslice_residuals(s, F, lam, f, crack_force, crack_point):
     for i in range(n):
         sa, ca = s["sin"][i], s["cos"][i]
         a, b = s["c"][i] * s["l"][i] / F, s["tan_phi"][i] / F
-        Px = -crack_force if i == n - 1 else 0.0
+        Px = (-crack_force if i == n - 1 else 0.0) - s["Q"][i]
         g = a * ca - s["U"][i] * sa + Px
         h = b * ca - sa
         # y: N (ca + b sa) + U ca + a sa - W + lam f_L E_L - lam f_R E_R = 0,
         # with E_R = E_L + N h + g.
-        N = ((s["U"][i] * ca + a * sa - s["W"][i]) + lam * (f[i] - f[i + 1]) * E
+        N = ((s["U"][i] * ca + a * sa - (s["W"][i] - s["V"][i])) + lam * (f[i] - f[i + 1]) * E
              - lam * f[i + 1] * g) / (lam * f[i + 1] * h - (ca + b * sa))
         E += N * h + g
         S = a + b * N
         fx = -(N + s["U"][i]) * sa + S * ca
         fy = (N + s["U"][i]) * ca + S * sa
-        moment += s["xm"][i] * fy - s["ym"][i] * fx - s["xg"][i] * s["W"][i]
+        moment += (s["xm"][i] * fy - s["ym"][i] * fx - s["xg"][i] * (s["W"][i] - s["V"][i])
+                   + s["yg"][i] * s["Q"][i])
     if crack_force:
         moment += crack_point[1] * crack_force
     return E, moment
@@ -508,10 +546,12 @@ def ordinary(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=
     on the upper slice."""
     mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
     s = slice_arrays(mass.slices())
-    P = np.zeros_like(s["W"])
-    P[-1] = mass.crack_force
-    resisting = s["c"] * s["l"] + (s["W"] * s["cos"] - s["U"] - P * s["sin"]) * s["tan_phi"]
-    return np.sum(resisting) / np.sum(s["W"] * s["sin"] + P * s["cos"])
+    # The seismic force Q pushes left like the crack's water; V upwards.
+    P = s["Q"].copy()
+    P[-1] += mass.crack_force
+    W = s["W"] - s["V"]
+    resisting = s["c"] * s["l"] + (W * s["cos"] - s["U"] - P * s["sin"]) * s["tan_phi"]
+    return np.sum(resisting) / np.sum(W * s["sin"] + P * s["cos"])
 
 
 def janbu(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0):

@@ -15,6 +15,7 @@
 #include <fdem/postprocess/vtu_writer.h>
 #include <fdem/analyses/fe_stress_factor.h>
 #include <fdem/analyses/limit_equilibrium_model.h>
+#include <fdem/analyses/seismic_results.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -90,6 +91,57 @@ namespace fdem
     void
     solve_contact(const std::vector<contact::PairStrength> &strengths,
                   const double                              strength_reduction);
+
+    /**
+     * @name Load cases (doc/theory.md, "Load cases")
+     *
+     * The assembled load (gravity, surface loads, pore pressures: the
+     * "base") and further load cases, each solved once on the blocks'
+     * factorisations after compute_flexibility(). The load of the model is
+     * base_factor times the base plus a coefficient times each case;
+     * set_load_combination() changes it without a solve, a factorisation
+     * or a new C (MixedSystem::set_load_coefficients()), and the blocks'
+     * load vectors follow (for the recovery and the output). Gravity, the
+     * seismic coefficients and a factor on the unit weight are
+     * combinations of the body-force cases (body_force_cases()).
+     */
+    ///@{
+    /**
+     * Adds the load case of nodal forces @p loads (one vector per block):
+     * one solve per block on its factorisation; returns its index.
+     */
+    unsigned int
+    add_load_case(const std::vector<Vector<double>> &loads);
+
+    /**
+     * The dim load cases of the blocks' weight per unit coefficient in each
+     * coordinate direction (ElasticBlock::unit_body_force_loads()): with
+     * @p saturated the saturated weight below the water table (as gravity
+     * has it), without it the unit weight everywhere. Made on the first
+     * call, then the same indices.
+     */
+    std::vector<unsigned int>
+    body_force_cases(const bool saturated);
+
+    /**
+     * Sets the model's load: @p base_factor times the assembled load plus
+     * @p coefficients[k] times case k (missing ones zero). (1, {}) is the
+     * assembled load bit for bit. E.g. a factor lambda on the unit weight:
+     * base 1 and (lambda - 1) g_d on body_force_cases(true)[d]; a seismic
+     * coefficient kh in the horizontal direction h: kh h_d on
+     * body_force_cases(false)[d].
+     */
+    void
+    set_load_combination(const double base_factor, const std::vector<double> &coefficients);
+
+    /**
+     * The assembled load of block @p b minus its current load (zero
+     * without a load combination): what the assembled cells' residual
+     * (ElasticBlock::nodal_residual()) must be corrected by.
+     */
+    Vector<double>
+    load_change(const unsigned int b) const;
+    ///@}
 
     /**
      * Pair strengths of all interfaces; on the sliding surfaces c and
@@ -172,6 +224,8 @@ namespace fdem
     analyses::FeStressFactor                            fe_stress;
     /** Limit equilibrium on the same sliding surface (slope generator only). */
     analyses::LimitEquilibriumResults                   limit_equilibrium;
+    /** The seismic load, the yield acceleration and the Newmark displacement (analyses/seismic.h). */
+    analyses::SeismicResults                            seismic;
     std::vector<Vector<double>>                         displacements;
     nlohmann::json                                      summary;
 
@@ -181,6 +235,12 @@ namespace fdem
     /** The last contact solution that converged, and its K. */
     contact::ContactOutcome<dim> last_converged;
     double                       last_converged_K = 1;
+    /** The assembled load vectors and displacements of the blocks (the base of the load cases). */
+    std::vector<Vector<double>> base_load_vectors, base_external_displacements;
+    /** Per load case, per block: its nodal forces and displacements. */
+    std::vector<std::vector<Vector<double>>> case_loads, case_displacements;
+    /** Indices of the body-force cases: [0] without, [1] with the saturated weight. */
+    std::vector<unsigned int> body_force_case_indices[2];
     /** VTU/PVD files of the steps of the safety-factor iteration. */
     std::vector<postprocess::PvdEntry> step_files;
 

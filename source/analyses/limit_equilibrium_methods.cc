@@ -110,11 +110,12 @@ namespace fdem
               const Slice &s  = mass.slices[i];
               const double sa = s.sin_alpha, ca = s.cos_alpha;
               const double a = s.c * s.l / K, b = s.tan_phi / K;
-              // The crack's water force acts on the last slice, to the left.
-              const double Px  = i + 1 == n ? -mass.crack_force : 0.;
+              // The crack's water force acts on the last slice, to the left;
+              // the seismic force Q on every slice, to the left, and V up.
+              const double Px  = (i + 1 == n ? -mass.crack_force : 0.) - s.Q;
               const double g   = a * ca - s.U * sa + Px;
               const double h   = b * ca - sa;
-              const double num = (s.U * ca + a * sa - s.W) +
+              const double num = (s.U * ca + a * sa - (s.W - s.V)) +
                                  lambda * (f[i] - f[i + 1]) * E_left -
                                  lambda * f[i + 1] * g;
               const double den = lambda * f[i + 1] * h - (ca + b * sa);
@@ -123,7 +124,7 @@ namespace fdem
               const double S  = a + b * N;
               const double fx = -(N + s.U) * sa + S * ca;
               const double fy = (N + s.U) * ca + S * sa;
-              moment += s.xm * fy - s.ym * fx - s.xg * s.W;
+              moment += s.xm * fy - s.ym * fx - s.xg * (s.W - s.V) + s.yg * s.Q;
             }
           if (mass.crack_force != 0)
             moment += mass.crack_point[1] * mass.crack_force;
@@ -236,9 +237,10 @@ namespace fdem
             {
               const Slice &s  = mass.slices[i];
               const double sa = s.sin_alpha, ca = s.cos_alpha;
-              const double P = crack_on(mass, i);
-              resisting += s.c * s.l + (s.W * ca - s.U - P * sa) * s.tan_phi;
-              driving += s.W * sa + P * ca;
+              // The seismic force Q pushes left like the crack's water.
+              const double P = crack_on(mass, i) + s.Q, W = s.W - s.V;
+              resisting += s.c * s.l + (W * ca - s.U - P * sa) * s.tan_phi;
+              driving += W * sa + P * ca;
             }
           MethodResult result;
           result.K = resisting / driving;
@@ -261,9 +263,10 @@ namespace fdem
                 const double sa = s.sin_alpha, ca = s.cos_alpha;
                 const double m     = ca + sa * s.tan_phi / K;
                 const double width = s.l * ca;
-                resisting += (s.c * width + (s.W - s.U * ca) * s.tan_phi) / m;
-                // The weight's moment about the centre, for a mass moving left.
-                driving += s.W * (s.xg - mass.centre[0]);
+                resisting += (s.c * width + (s.W - s.V - s.U * ca) * s.tan_phi) / m;
+                // The weight's moment about the centre, for a mass moving
+                // left, and the seismic force's (Q to the left at yg).
+                driving += (s.W - s.V) * (s.xg - mass.centre[0]) + s.Q * (mass.centre[1] - s.yg);
               }
             driving +=
               mass.crack_force * (mass.centre[1] - mass.crack_point[1]);

@@ -107,6 +107,13 @@ namespace fdem
         }
       section.pore_pressure     = pore == "piezometric";
       section.water_unit_weight = p.water.unit_weight;
+      // The FE model's pseudo-static seismic load (Loads/...), the same on
+      // the slices.
+      section.kh                    = p.loads.horizontal_seismic_coefficient;
+      section.kv                    = p.loads.vertical_seismic_coefficient;
+      section.seismic_on_pore_water = p.loads.seismic_on_pore_water;
+      if (!p.loads.seismic_direction.empty())
+        section.kh_direction = p.loads.seismic_direction[0] > 0 ? 1 : -1;
       section.piezometric       = points(p.water.piezometric_line);
       section.ground            = slope.ground_surface;
 

@@ -364,6 +364,34 @@ namespace fdem
                     layer.saturated_unit_weight * cb.parts[k].second;
             }
           Slice s;
+          // The seismic weight W' per unit width at a and b and its first
+          // moment about y = 0: the column stacked from its base up, each
+          // layer wet below the piezometric line, dry above (column()).
+          const auto seismic_weight = [&mass](const Column &c, double &w, double &m) {
+            w = m = 0;
+            double y = c.y_base;
+            for (int k = int(mass.layers.size()) - 1; k >= 0; --k)
+              {
+                const SoilLayer &layer = mass.layers[k];
+                const double     dry = c.parts[k].first, wet = c.parts[k].second;
+                const double     wet_weight =
+                  mass.seismic_on_pore_water ? layer.saturated_unit_weight : layer.unit_weight;
+                w += wet_weight * wet + layer.unit_weight * dry;
+                m += wet_weight * wet * (y + wet / 2) + layer.unit_weight * dry * (y + wet + dry / 2);
+                y += wet + dry;
+              }
+          };
+          if (mass.kh != 0 || mass.kv != 0)
+            {
+              double w_a, m_a, w_b, m_b;
+              seismic_weight(ca, w_a, m_a);
+              seismic_weight(cb, w_b, m_b);
+              // The trapezoidal rule for int m dx / int w dx.
+              const double W_seismic = 0.5 * (w_a + w_b) * (b - a);
+              s.yg = w_a + w_b > 0 ? (m_a + m_b) / (w_a + w_b) : 0.5 * (ca.y_base + cb.y_base);
+              s.Q  = mass.kh * W_seismic;
+              s.V  = mass.kv * W_seismic;
+            }
           // A linear load w(x) on [a, b]: its resultant and centroid.
           s.W  = 0.5 * (wa + wb) * (b - a);
           s.xg = wa + wb > 0 ? a + (b - a) * (wa + 2 * wb) / (3 * (wa + wb)) :
@@ -394,6 +422,9 @@ namespace fdem
                              const unsigned int n_slices)
         : water_unit_weight(section.water_unit_weight)
         , pore_pressure(section.pore_pressure)
+        , kh(section.kh)
+        , kv(section.kv)
+        , seismic_on_pore_water(section.seismic_on_pore_water)
         , circular(sliding.circular)
       {
         AssertThrow(!section.layers.empty(),
@@ -428,6 +459,10 @@ namespace fdem
         radius = sliding.radius;
         if (sliding.crack_depth > 0)
           cut_at_crack(*this, sliding.crack_depth, sliding.crack_water_depth);
+        // The frame's mass moves to the left (-x): a kh given along +x or
+        // -x of the section pushes it forwards or back.
+        if (section.kh_direction != 0)
+          kh *= section.kh_direction * (mirrored ? -1.0 : 1.0) * -1.0;
         make_slices(*this, n_slices);
         for (unsigned int i = 0; i + 1 < x.size(); ++i)
           slices.push_back(make_slice(*this, x[i], x[i + 1]));

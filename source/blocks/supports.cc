@@ -198,9 +198,16 @@ namespace fdem
     double
     ElasticBlock<dim>::free_mode_load(const unsigned int k) const
     {
+      return free_mode_load(k, load_vector);
+    }
+
+    template <int dim>
+    double
+    ElasticBlock<dim>::free_mode_load(const unsigned int k, const Vector<double> &nodal_forces) const
+    {
       double work = 0;
       for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
-        work += load_vector[i] *
+        work += nodal_forces[i] *
                 free_mode_displacement(k, dof_support_points[i])[dof_components[i]];
       return work;
     }
@@ -210,10 +217,12 @@ namespace fdem
     template Tensor<1, 2> ElasticBlock<2>::free_mode_displacement(const unsigned int, const Point<2> &) const;
     template void ElasticBlock<2>::add_rigid_motion(const Vector<double> &, Vector<double> &) const;
     template double ElasticBlock<2>::free_mode_load(const unsigned int) const;
+    template double ElasticBlock<2>::free_mode_load(const unsigned int, const Vector<double> &) const;
     template void ElasticBlock<3>::setup_constraints(const std::map<types::boundary_id, parameters::BoundaryParameters> &, const std::vector<types::boundary_id> &);
     template void ElasticBlock<3>::find_free_rigid_modes();
     template Tensor<1, 3> ElasticBlock<3>::free_mode_displacement(const unsigned int, const Point<3> &) const;
     template void ElasticBlock<3>::add_rigid_motion(const Vector<double> &, Vector<double> &) const;
     template double ElasticBlock<3>::free_mode_load(const unsigned int) const;
+    template double ElasticBlock<3>::free_mode_load(const unsigned int, const Vector<double> &) const;
   } // namespace blocks
 } // namespace fdem

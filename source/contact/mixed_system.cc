@@ -149,8 +149,14 @@ namespace fdem
             }
           touches.push_back(std::move(touch));
         }
+      initial_gaps.reinit(n_forces);
       for (unsigned int p = 0; p < pairs.size(); ++p)
-        external_gap[dim * p] += pairs[p]->initial_gap;
+        {
+          external_gap[dim * p] += pairs[p]->initial_gap;
+          initial_gaps[dim * p] = pairs[p]->initial_gap;
+        }
+      base_external_gap = external_gap;
+      base_rigid_loads  = rigid_loads;
 
       set_diagonal_scales();
       if (solver_type == MixedSystemSolver::dense)
@@ -211,9 +217,16 @@ namespace fdem
       // prescribed displacements drive the model) the force that closes
       // the largest relative displacement elastically.
       scales.flexibility = mean_flexibility;
-      scales.force       = 0;
-      for (const auto &block : blocks)
-        scales.force = std::max(scales.force, block->load_vector.l1_norm());
+      // The assembled load's, computed once: a load combination
+      // (set_load_coefficients()) changes the blocks' load vectors, not the
+      // reference force.
+      if (base_force_scale < 0)
+        {
+          base_force_scale = 0;
+          for (const auto &block : blocks)
+            base_force_scale = std::max(base_force_scale, block->load_vector.l1_norm());
+        }
+      scales.force = base_force_scale;
       if (!(scales.force > 0))
         scales.force = external_gap.linfty_norm() / scales.flexibility;
       if (!(scales.force > 0) || !std::isfinite(scales.force))
@@ -239,10 +252,83 @@ namespace fdem
                              "mixed system that kept its moving part."));
       const double change = scale - moving_compliance_scale;
       flexibility.add(change, moving_flexibility);
-      external_gap.add(change, moving_external_gap);
+      base_external_gap.add(change, moving_external_gap);
       moving_compliance_scale = scale;
+      combine_loads();
       set_diagonal_scales();
       dense->lu.clear(); // the factors are of the old C
+    }
+
+    template <int dim>
+    unsigned int
+    MixedSystem<dim>::add_load_case(const std::vector<Vector<double>> &displacements,
+                                    const std::vector<Vector<double>> &loads)
+    {
+      AssertDimension(displacements.size(), blocks.size());
+      AssertDimension(loads.size(), blocks.size());
+      const bool     keep_moving = moving_external_gap.size() > 0;
+      Vector<double> gap(external_gap.size()), moving_gap(keep_moving ? external_gap.size() : 0);
+      Vector<double> loads_on_modes(rigid_loads.size());
+      // The same sums as the constructor's g_bar and omega^T F, for this load.
+      for (const BlockTouch &touch : touches)
+        {
+          const unsigned int b = touch.block;
+          for (unsigned int k = 0; k < touch.pairs.size(); ++k)
+            {
+              Tensor<1, dim> u;
+              for (unsigned int i = 0; i < dim; ++i)
+                u[i] = displacements[b][touch.dofs[dim * k + i]];
+              const Tensor<1, dim> local = -touch.signs[k] * (pairs[touch.pairs[k]]->frame * u);
+              for (unsigned int i = 0; i < dim; ++i)
+                {
+                  gap[dim * touch.pairs[k] + i] += local[i];
+                  if (keep_moving && blocks[b]->n_free_rigid_modes() > 0)
+                    moving_gap[dim * touch.pairs[k] + i] += local[i];
+                }
+            }
+          for (unsigned int m = 0; m < blocks[b]->n_free_rigid_modes(); ++m)
+            loads_on_modes[first_rigid_unknown[b] + m] = blocks[b]->free_mode_load(m, loads[b]);
+        }
+      case_gaps.push_back(std::move(gap));
+      case_moving_gaps.push_back(std::move(moving_gap));
+      case_rigid_loads.push_back(std::move(loads_on_modes));
+      return case_gaps.size() - 1;
+    }
+
+    template <int dim>
+    void
+    MixedSystem<dim>::set_load_coefficients(const double base_factor, const std::vector<double> &coefficients)
+    {
+      AssertThrow(coefficients.size() <= case_gaps.size(),
+                  ExcMessage("More load coefficients than load cases."));
+      base_load_factor  = base_factor;
+      load_coefficients = coefficients;
+      combine_loads();
+    }
+
+    template <int dim>
+    void
+    MixedSystem<dim>::combine_loads()
+    {
+      external_gap = base_external_gap;
+      rigid_loads  = base_rigid_loads;
+      if (base_load_factor != 1)
+        {
+          Vector<double> load_gap = base_external_gap;
+          load_gap -= initial_gaps;
+          external_gap.add(base_load_factor - 1, load_gap);
+          rigid_loads *= base_load_factor;
+        }
+      for (unsigned int k = 0; k < load_coefficients.size(); ++k)
+        if (load_coefficients[k] != 0)
+          {
+            const double c = load_coefficients[k];
+            external_gap.add(c, case_gaps[k]);
+            // A case's g_bar was computed at compliance scale 1.
+            if (case_moving_gaps[k].size() > 0 && moving_compliance_scale != 1)
+              external_gap.add(c * (moving_compliance_scale - 1), case_moving_gaps[k]);
+            rigid_loads.add(c, case_rigid_loads[k]);
+          }
     }
 
     template <int dim>

@@ -414,6 +414,41 @@ namespace fdem
                         Patterns::Double(0),
                         "Gravitational acceleration (length/time^2), used for "
                         "blocks given a density.");
+      prm.declare_entry("Horizontal seismic coefficient",
+                        "0",
+                        Patterns::Double(-1, 1),
+                        "Pseudo-static horizontal seismic coefficient kh "
+                        "(dimensionless, a fraction of g, -1 to 1): every block "
+                        "carries a horizontal body force kh times its weight, in "
+                        "the Seismic direction (by default towards the free face, "
+                        "the horizontal direction in which the sliding mass "
+                        "moves); a negative kh points the other way. Superposed "
+                        "on the gravity solution without a new factorisation.");
+      prm.declare_entry("Vertical seismic coefficient",
+                        "0",
+                        Patterns::Double(-1, 1),
+                        "Pseudo-static vertical seismic coefficient kv "
+                        "(dimensionless, -1 to 1, below 1): a body force kv times "
+                        "the weight, positive UPWARDS (against gravity: the "
+                        "weight becomes (1 - kv) W), negative downwards.");
+      prm.declare_entry("Seismic direction",
+                        "towards free face",
+                        Patterns::Anything(),
+                        "Direction of a positive kh: 'towards free face' (the "
+                        "horizontal part, perpendicular to gravity, of the "
+                        "downslope component of gravity along the sliding "
+                        "surfaces, summed over their node pairs with their areas: "
+                        "on a plane the dip direction, on a slip circle the way "
+                        "the mass slides), or 2 or 3 comma-separated numbers as "
+                        "the dimension (any length, normalised; its part along "
+                        "gravity is removed).");
+      prm.declare_entry("Seismic force on pore water",
+                        "false",
+                        Patterns::Bool(),
+                        "Whether kh and kv act on the saturated unit weight below "
+                        "the water table (the pore water moves with the soil), "
+                        "or on the unit weight everywhere (false: the pore "
+                        "water's extra weight carries no seismic force).");
       prm.leave_subsection();
     }
 
@@ -438,6 +473,31 @@ namespace fdem
       for (double &g : gravity_direction)
         g /= std::sqrt(norm);
       gravitational_acceleration = prm.get_double("Gravitational acceleration");
+      horizontal_seismic_coefficient = prm.get_double("Horizontal seismic coefficient");
+      vertical_seismic_coefficient   = prm.get_double("Vertical seismic coefficient");
+      AssertThrow(vertical_seismic_coefficient < 1,
+                  ExcMessage("Loads/Vertical seismic coefficient: must be below 1 (kv = 1 "
+                             "upwards cancels the weight)."));
+      const std::string seismic = Utilities::trim(prm.get("Seismic direction"));
+      seismic_direction.clear();
+      if (seismic != "towards free face")
+        {
+          seismic_direction = parse_vector(seismic, dim, "Loads/Seismic direction");
+          double along = 0, norm = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            along += seismic_direction[d] * gravity_direction[d];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              seismic_direction[d] -= along * gravity_direction[d];
+              norm += seismic_direction[d] * seismic_direction[d];
+            }
+          AssertThrow(norm > 1e-20,
+                      ExcMessage("Loads/Seismic direction: 'towards free face' or a "
+                                 "direction with a horizontal part (not along gravity)."));
+          for (double &h : seismic_direction)
+            h /= std::sqrt(norm);
+        }
+      seismic_on_pore_water = prm.get_bool("Seismic force on pore water");
       prm.leave_subsection();
     }
 

@@ -3,6 +3,7 @@
 //
 // The result block of the screen and the log file, made from summary.json
 // alone: what the screen says is what the results folder holds.
+#include <fdem/analyses/seismic_results.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/run_log.h>
 
@@ -231,6 +232,8 @@ namespace fdem
             stiffness_warned |= message_id(w) == "stiffness-dependent";
           add("Stiffness check", stiffness_words(summary, stiffness_warned));
         }
+      for (const auto &[label, text] : analyses::seismic_result_lines(summary))
+        add(label, text);
 
       unsigned int n_changing = 0;
       for (const std::string &w : listed)

@@ -3,13 +3,15 @@
 """The C++ limit equilibrium (summary.json's "limit_equilibrium") against
 the Python yardstick tools/limit_equilibrium.py on the same case:
 
-    le_oracle_compare.py EXE CASE.prm [TOLERANCE]
+    le_oracle_compare.py EXE CASE.prm [TOLERANCE] [Sub/Section/Entry=value ...]
 
 Runs the case, builds the section from the parameters the run used (its
 parameters.prm, read here independently of the C++ translation), and
 checks every method's K (and lambda), with 100 slices and twice as many, to TOLERANCE relative (default 1e-11: both find the
 roots to 1e-14 by the same Brent iteration on the same slices; what
-remains is the order of floating-point sums).
+remains is the order of floating-point sums). Entries given as
+Sub/Section/Entry=value are set in the run (e.g. the seismic coefficients
+of Loads, which the section then takes from the run's parameters too).
 """
 import math
 import os
@@ -59,6 +61,13 @@ def section_and_surface(prm):
         raise SystemExit("this script compares cases whose surface carries the piezometric "
                          "pore pressure, or that have no water")
     section = le.Section(ground, layers, piezometric, float(prm["Water/Unit weight of water"]))
+    # The pseudo-static seismic load of the run (Loads/...).
+    section.kh = float(prm.get("Loads/Horizontal seismic coefficient", "0"))
+    section.kv = float(prm.get("Loads/Vertical seismic coefficient", "0"))
+    section.seismic_on_pore_water = prm.get("Loads/Seismic force on pore water", "false") == "true"
+    direction = prm.get("Loads/Seismic direction", "towards free face").strip()
+    if direction != "towards free face":
+        section.kh_direction = 1 if float(direction.split(",")[0]) > 0 else -1
     crack = dict(crack_depth=float(prm[slope + "Tension crack depth"]),
                  crack_water_depth=float(prm[slope + "Tension crack water depth"]))
     if prm[slope + "Sliding surface"] == "circular":
@@ -85,13 +94,16 @@ def python_values(section, polyline, circle, crack, n):
 
 def main():
     exe, prm = sys.argv[1:3]
-    tolerance = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-11
+    extra = dict(a.split("=", 1) for a in sys.argv[3:] if "=" in a)
+    rest = [a for a in sys.argv[3:] if "=" not in a]
+    tolerance = float(rest[0]) if rest else 1e-11
     # Only the limit equilibrium is compared: no safety factor, no VTU; 100
     # slices (and 200), as the Python yardstick's loops take seconds per
     # method at the default 400.
     run = fdem_run.run_case(exe, prm, settings={"Output/Write VTU": "false",
                                                 "Safety factor/Compute": "false",
-                                                "Limit equilibrium/Number of slices": "100"})
+                                                "Limit equilibrium/Number of slices": "100",
+                                                **extra})
     assert run.returncode == 0 and run.summary is not None, run.stderr
     results = run.summary["limit_equilibrium"]
     assert results["computed"], results["not_computed"]

@@ -54,6 +54,18 @@ namespace fdem
         double                water_unit_weight = 9.81;
         /** Whether the base carries the piezometric pore pressure. */
         bool pore_pressure = true;
+        /**
+         * Pseudo-static seismic coefficients: a horizontal force kh W' at
+         * each slice's centroid in the direction the mass slides (towards
+         * the free face), and kv W' upwards, W' the slice's weight with the
+         * unit weight above and below the piezometric line, or with the
+         * saturated one below it if @p seismic_on_pore_water (as the FE
+         * model's Loads/Seismic force on pore water).
+         */
+        double kh = 0, kv = 0;
+        bool   seismic_on_pore_water = false;
+        /** 0: kh towards the free face; +1 or -1: a positive kh along +x or -x. */
+        int kh_direction = 0;
       };
 
       /** The sliding surface: a circle or a polyline, with a tension crack. */
@@ -123,6 +135,14 @@ namespace fdem
       struct Slice
       {
         double W, xg, alpha, l, xm, ym, U, c, tan_phi, sin_alpha, cos_alpha;
+        /**
+         * The seismic forces: the horizontal kh W' (pushing the way the
+         * mass moves, i.e. to the left here) and the vertical kv W'
+         * (upwards), at the height yg of the slice's centroid; W' is W, or
+         * W with the unit weight below the piezometric line
+         * (Section::seismic_on_pore_water false).
+         */
+        double Q = 0, V = 0, yg = 0;
       };
 
       /**
@@ -142,6 +162,9 @@ namespace fdem
         std::vector<SoilLayer> layers;
         double                 water_unit_weight;
         bool                   pore_pressure;
+        /** The section's seismic coefficients (Section::kh, kv). */
+        double kh = 0, kv = 0;
+        bool   seismic_on_pore_water = false;
         /** The crack's water force (pushing left) and its point of action. */
         double              crack_force = 0;
         Point<2>            crack_point;

@@ -225,6 +225,24 @@ namespace fdem
       double
       free_mode_load(const unsigned int k) const;
 
+      /** The same for the nodal forces @p nodal_forces instead of F. */
+      double
+      free_mode_load(const unsigned int k, const Vector<double> &nodal_forces) const;
+
+      /**
+       * The nodal forces of the block's weight per unit coefficient in each
+       * coordinate direction d: the integral of N gamma e_d, gamma the unit
+       * weight of assemble()'s gravity (rho g). With @p saturated the
+       * saturated weight below the water table, as the assembled gravity
+       * has it; without, the material's weight everywhere (the soil without
+       * the water in its pores' extra weight). Any body force proportional
+       * to the weight (gravity, seismic coefficients, a factor on the unit
+       * weight) is a linear combination of these dim vectors (load cases,
+       * doc/theory.md). Needs assemble() first.
+       */
+      std::vector<Vector<double>>
+      unit_body_force_loads(const bool saturated) const;
+
       std::string                    name;
       parallel::shared::Triangulation<dim> triangulation;
       /** FE_Q or FE_SimplexP, by the shape of the mesh's cells. */

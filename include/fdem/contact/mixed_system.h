@@ -159,6 +159,41 @@ namespace fdem
       void
       set_moving_compliance_scale(const double scale);
 
+      /**
+       * Load cases (doc/theory.md, "Load cases"): another external load on
+       * the blocks, given by its nodal forces @p loads and the displacements
+       * @p displacements = K^{-1} loads of each block (solved on the blocks'
+       * factorisations by the caller). Its part of g_bar (and of the moving
+       * blocks' part) and of omega^T F is computed once here; the system's
+       * load stays the assembled one until set_load_coefficients(). Returns
+       * the index of the case.
+       */
+      unsigned int
+      add_load_case(const std::vector<Vector<double>> &displacements,
+                    const std::vector<Vector<double>> &loads);
+
+      /** Number of load cases added. */
+      unsigned int
+      n_load_cases() const
+      {
+        return case_gaps.size();
+      }
+
+      /**
+       * Sets the external load to @p base_factor times the assembled load
+       * plus @p coefficients[k] times load case k (missing coefficients are
+       * zero): g_bar and omega^T F are linear in the load, so they follow
+       * from the parts computed once, without a solve, a new factorisation
+       * or a new C. The initial gaps are not a load and are not scaled. The
+       * scales of the dimensionless system stay those of the assembled load
+       * (a reference force; any fixed one keeps the decisions scale-free),
+       * so the LU factors of the mixed system stay valid. With @p
+       * base_factor 1 and no coefficient the system is the assembled one
+       * bit for bit.
+       */
+      void
+      set_load_coefficients(const double base_factor, const std::vector<double> &coefficients);
+
       /** Whether set_moving_compliance_scale() can be used. */
       bool
       can_scale_moving_compliance() const
@@ -339,6 +374,22 @@ namespace fdem
       Vector<double>     moving_external_gap;
       /** The current scale of the moving blocks' compliance. */
       double moving_compliance_scale = 1;
+
+      /** g_bar and omega^T F of the assembled load (at the current compliance scale). */
+      Vector<double> base_external_gap, base_rigid_loads;
+      /** The initial gaps in g_bar (not a load: never scaled). */
+      Vector<double> initial_gaps;
+      /** Per load case: its g_bar, its moving blocks' part, its omega^T F. */
+      std::vector<Vector<double>> case_gaps, case_moving_gaps, case_rigid_loads;
+      /** The current load combination (set_load_coefficients()). */
+      double              base_load_factor = 1;
+      std::vector<double> load_coefficients;
+      /** The force scale of the assembled load (set_diagonal_scales()), once computed. */
+      double base_force_scale = -1;
+
+      /** external_gap and rigid_loads of the current combination and compliance scale. */
+      void
+      combine_loads();
 
       /**
        * self_flexibility, held_flexibility, mean_flexibility and the scales

@@ -172,6 +172,24 @@ namespace fdem
       std::vector<double> gravity_direction = {0, -1};
       /** Gravitational acceleration (length/time^2), used with densities. */
       double gravitational_acceleration = 9.81;
+      /**
+       * Pseudo-static seismic coefficients (doc/theory.md, "Seismic load"):
+       * a body force kh W in seismic_direction and kv W upwards (against
+       * gravity), W the weight.
+       */
+      double horizontal_seismic_coefficient = 0;
+      double vertical_seismic_coefficient   = 0;
+      /** The horizontal direction of kh (normalised); empty: towards the free face (found). */
+      std::vector<double> seismic_direction;
+      /** Whether the seismic force acts on the saturated weight below the water table. */
+      bool seismic_on_pore_water = false;
+
+      /** Whether any seismic coefficient is set. */
+      bool
+      seismic() const
+      {
+        return horizontal_seismic_coefficient != 0 || vertical_seismic_coefficient != 0;
+      }
     };
 
     /**

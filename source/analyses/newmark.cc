@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/analyses/newmark.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /** The fields of a line split at commas, semicolons and blanks. */
+      std::vector<std::string>
+      fields_of(const std::string &line)
+      {
+        std::vector<std::string> fields;
+        std::string              field;
+        for (const char c : line)
+          if (c == ',' || c == ';' || c == ' ' || c == '\t' || c == '\r')
+            {
+              if (!field.empty())
+                fields.push_back(field);
+              field.clear();
+            }
+          else
+            field += c;
+        if (!field.empty())
+          fields.push_back(field);
+        return fields;
+      }
+
+      bool
+      parse_number(const std::string &text, double &value)
+      {
+        char *end = nullptr;
+        errno     = 0;
+        value     = std::strtod(text.c_str(), &end);
+        return end != text.c_str() && *end == '\0' && errno == 0;
+      }
+    } // namespace
+
+    AccelerationRecord
+    read_acceleration_record(const std::string &file, const std::string &unit)
+    {
+      const std::string where =
+        "Yield acceleration/Acceleration record: '" + file + "'";
+      std::ifstream in(file);
+      AssertThrow(in, ExcMessage(where + " cannot be read (missing file?)."));
+      const double       scale = unit == "g" ? standard_gravity : 1.0;
+      AccelerationRecord record;
+      std::string        line;
+      unsigned int       line_number    = 0;
+      bool               header_allowed = true;
+      while (std::getline(in, line))
+        {
+          ++line_number;
+          const std::size_t comment = line.find('#');
+          if (comment != std::string::npos)
+            line.erase(comment);
+          const std::vector<std::string> fields = fields_of(line);
+          if (fields.empty())
+            continue;
+          double     t = 0, a = 0;
+          const bool numbers = fields.size() == 2 &&
+                               parse_number(fields[0], t) &&
+                               parse_number(fields[1], a);
+          if (!numbers && header_allowed)
+            {
+              // A header: the first line, if none of its fields is a number.
+              double ignored;
+              if (std::none_of(fields.begin(),
+                               fields.end(),
+                               [&](const std::string &f) {
+                                 return parse_number(f, ignored);
+                               }))
+                {
+                  header_allowed = false;
+                  continue;
+                }
+            }
+          header_allowed = false;
+          const std::string at =
+            where + " line " + std::to_string(line_number) + ": ";
+          AssertThrow(fields.size() == 2,
+                      ExcMessage(
+                        at + "expected two values (time, acceleration), got " +
+                        std::to_string(fields.size()) + "."));
+          AssertThrow(numbers && std::isfinite(t) && std::isfinite(a),
+                      ExcMessage(at + "'" + fields[0] + "', '" + fields[1] +
+                                 "' are not two finite numbers."));
+          AssertThrow(
+            record.time.empty() || t > record.time.back(),
+            ExcMessage(
+              at + "the time " + fields[0] +
+              " is not after the time before it; times must increase."));
+          record.time.push_back(t);
+          record.acceleration.push_back(a * scale);
+        }
+      AssertThrow(record.time.size() >= 2,
+                  ExcMessage(where +
+                             ": fewer than two samples (time, acceleration)."));
+      return record;
+    }
+
+    namespace
+    {
+      /**
+       * Within one interval of duration @p dt, a(tau) = a0 + s tau: the
+       * forward sliding of a mass with relative velocity v >= 0 (v > 0 or
+       * a > a_y to slide), yield acceleration a_y. Advances v and the
+       * displacement d exactly; returns the time within the interval at
+       * which the motion stops (dt if it does not).
+       */
+      double
+      slide(const double a0,
+            const double s,
+            const double a_y,
+            const double dt,
+            double      &v,
+            double      &d)
+      {
+        // v(tau) = v + (a0 - a_y) tau + s tau^2 / 2: its first zero in (0, dt].
+        const double b = a0 - a_y, c = v;
+        double       stop     = dt;
+        const auto   try_root = [&](const double tau) {
+          if (tau > 0 && tau < stop)
+            stop = tau;
+        };
+        if (s != 0)
+          {
+            const double disc = b * b - 2 * s * c;
+            if (disc >= 0)
+              {
+                const double root = std::sqrt(disc);
+                // Both roots, the cancellation-free way.
+                const double q = -(b + std::copysign(root, b));
+                if (q != 0)
+                  {
+                    try_root(q / s);
+                    try_root(2 * c / q);
+                  }
+              }
+          }
+        else if (b < 0)
+          try_root(-c / b);
+        const double tau = stop;
+        d += v * tau + b * tau * tau / 2 + s * tau * tau * tau / 6;
+        v = stop < dt ? 0.0 : std::max(0.0, v + b * tau + s * tau * tau / 2);
+        return stop;
+      }
+    } // namespace
+
+    NewmarkResult
+    newmark_displacement(const AccelerationRecord &record,
+                         const double              k_y,
+                         const double              k_y_backward)
+    {
+      NewmarkResult result;
+      if (!std::isfinite(k_y))
+        return result;
+      result.computed  = true;
+      const double a_f = k_y * standard_gravity;
+      const double a_b = std::isnan(k_y_backward) ?
+                           std::numeric_limits<double>::infinity() :
+                           k_y_backward * standard_gravity;
+      double       v   = 0,
+             d = 0; // relative velocity and displacement, forwards positive
+      const auto record_point = [&](const unsigned int i) {
+        result.time.push_back(record.time[i]);
+        result.acceleration.push_back(record.acceleration[i]);
+        result.velocity.push_back(v);
+        result.displacement.push_back(d);
+        if (std::abs(d) > result.max_displacement)
+          {
+            result.max_displacement = std::abs(d);
+            result.time_of_max      = record.time[i];
+          }
+        result.max_velocity = std::max(result.max_velocity, std::abs(v));
+      };
+      record_point(0);
+      for (unsigned int i = 0; i + 1 < record.time.size(); ++i)
+        {
+          const double dt  = record.time[i + 1] - record.time[i];
+          const double a0  = record.acceleration[i];
+          const double s   = (record.acceleration[i + 1] - a0) / dt;
+          double       tau = 0;
+          // Within the interval: phases of rest, forward and backward sliding.
+          while (tau < dt)
+            {
+              const double a = a0 + s * tau;
+              if (v > 0 || (v == 0 && (a > a_f || (a == a_f && s > 0))))
+                tau += slide(a, s, a_f, dt - tau, v, d);
+              else if (v < 0 || (v == 0 && (a < -a_b || (a == -a_b && s < 0))))
+                {
+                  // Backwards: the mirror image of forward sliding.
+                  double w = -v, e = -d;
+                  tau += slide(-a, -s, a_b, dt - tau, w, e);
+                  v = -w;
+                  d = -e;
+                }
+              else
+                {
+                  // At rest: until a reaches a_f (rising) or -a_b (falling).
+                  double next = dt;
+                  if (s > 0 && std::isfinite(a_f))
+                    next = std::min(next, tau + (a_f - a) / s);
+                  if (s < 0 && std::isfinite(a_b))
+                    next = std::min(next, tau + (-a_b - a) / s);
+                  if (!(next > tau))
+                    next = dt; // no start within the interval
+                  tau = next;
+                }
+            }
+          record_point(i + 1);
+        }
+      return result;
+    }
+  } // namespace analyses
+} // namespace fdem
