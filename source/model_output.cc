@@ -205,6 +205,8 @@ namespace fdem
                                         parameters.safety_factor.compute ?
                                           &safety_factor_result :
                                           nullptr);
+    if (!probabilistic.is_null())
+      summary["probabilistic"] = probabilistic;
     // The only entries that differ between two runs of the same input.
     summary["timings"] =
       postprocess::section_wall_times(timer, run_timer.wall_time());

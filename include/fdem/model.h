@@ -22,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -149,6 +150,25 @@ namespace fdem
     std::vector<contact::PairStrength>
     pair_strengths(const double K) const;
 
+    /**
+     * The same with the soil strength (c, tan(phi)) of interface i at a
+     * node pair given by @p soil(i, pair) instead of the model's
+     * (soil_strength()): a sample of a probabilistic analysis.
+     */
+    std::vector<contact::PairStrength>
+    pair_strengths(
+      const double K,
+      const std::function<blocks::SoilStrength(unsigned int, const contact::NodePair<dim> &)> &soil)
+      const;
+
+    /**
+     * c and tan(phi) of interface @p i at @p pair (of i, or of an earlier
+     * interface sharing the node): the interface's own, or its materials'
+     * at the node (soil_strengths).
+     */
+    blocks::SoilStrength
+    soil_strength(const unsigned int i, const contact::NodePair<dim> &pair) const;
+
     /** Per pair of all interfaces: on a sliding surface? */
     std::vector<bool>
     pairs_on_sliding_surface() const;
@@ -224,6 +244,8 @@ namespace fdem
     /** Limit equilibrium on the same sliding surface (slope generator only). */
     analyses::LimitEquilibriumResults                   limit_equilibrium;
     std::vector<Vector<double>>                         displacements;
+    /** summary.json's "probabilistic" (analyses/probabilistic.h), if computed. */
+    nlohmann::json                                      probabilistic;
     nlohmann::json                                      summary;
 
   private:

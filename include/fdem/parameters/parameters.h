@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/analyses/limit_equilibrium_parameters.h>
+#include <fdem/analyses/probabilistic_parameters.h>
 #include <fdem/parameters/geometry_parameters.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -44,6 +45,8 @@ namespace fdem
       OutputParameters   output;
       /** Limit equilibrium on the model's own sliding surface. */
       analyses::LimitEquilibriumParameters limit_equilibrium;
+      /** The probabilistic safety factor (Monte Carlo on the soil strengths). */
+      analyses::ProbabilisticParameters probabilistic;
 
       std::vector<std::string>                   block_names;
       /** Names of the material regions (Materials/Names). */
@@ -69,6 +72,10 @@ namespace fdem
       /** Reads the values from a handler declared by declare_parameters(). */
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Probabilistic/Variables: each target exists and has a strength of its own. */
+      void
+      probabilistic_check_targets() const;
 
       /** The output folder this run writes into. */
       std::string
