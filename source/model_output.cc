@@ -192,7 +192,8 @@ namespace fdem
       for (unsigned int b = 0; b < blocks.size(); ++b)
         {
           Vector<double> residual = blocks[b]->nodal_residual(displacements[b]);
-          residual += load_change(b); // the assembled cells have the assembled load
+          residual +=
+            load_change(b); // the assembled cells have the assembled load
           for (const auto dof : blocks[b]->support_dofs)
             reactions[b] = std::max(reactions[b], std::abs(residual[dof]));
         }

@@ -91,40 +91,27 @@ namespace fdem
             model.set_load_combination(1, {});
         }
 
-        /** Sets the starting point of every later evaluation: the state at @p
-         * values. */
+        /**
+         * K at @p values (the means) from the model's initial K and states,
+         * as every later evaluation starts.
+         */
         Result
         set_start(const std::vector<double> &values)
         {
           start_states.clear();
-          gradient.clear();
           parameters = model.parameters.safety_factor;
-          K_start    = parameters.initial_factor;
           Result result;
           evaluate(values, &result);
-          if (result.converged)
-            K_start = result.safety_factor;
-          start_states = last_states;
-          means        = values;
+          // Each sample starts from the initial states (as the first solve
+          // of the deterministic K did), not from the limit state at the
+          // means: there every pair slips, and an all-slip state gives
+          // K* = K at any K where it is static, a fixed point that is not
+          // the sample's (measured: FOSM from the limit state gave half the
+          // true dK/dc on the paper's slope).
+          start_states.clear();
           return result;
         }
 
-        /**
-         * Where a sample's iteration starts: K at the means, moved by the
-         * gradient of K (FOSM's) if known, times 0.99. K is close to linear
-         * in c and tan(phi), so the first step lands near the sample's K and
-         * the iteration takes fewer steps; starting a little below keeps
-         * the first solve static (above the limit it fails, and the
-         * iteration would halve K).
-         */
-        double
-        predicted_factor(const std::vector<double> &values) const
-        {
-          double K = K_start;
-          for (unsigned int v = 0; v < gradient.size(); ++v)
-            K += gradient[v] * (values[v] - means[v]);
-          return gradient.empty() ? K : std::max(0.99 * K, 0.1 * K_start);
-        }
 
         Evaluation
         evaluate(const std::vector<double> &values, Result *full = nullptr)
@@ -154,13 +141,18 @@ namespace fdem
                                                 reduced,
                                                 on_sliding_surface);
           };
-          parameters.initial_factor = predicted_factor(values);
-          const Result result       = iterate(solve, parameters, quiet);
-          evaluation.n_steps        = result.steps.size();
-          evaluation.status = result.converged ? SampleStatus::certified :
-                              result.no_equilibrium ?
-                                                 SampleStatus::no_equilibrium :
-                                                 SampleStatus::not_certified;
+          // Every sample starts as the deterministic K did: at Safety
+          // factor/Initial factor from the initial states. A start near the
+          // limit finds a fixed point that is not the sample's: where every
+          // pair slips, K* = K at any K where that state is static
+          // (measured on the paper's slope: one step, K certified below
+          // the sample's own, FOSM's dK/dc half the true one).
+          const Result result = iterate(solve, parameters, quiet);
+          evaluation.n_steps  = result.steps.size();
+          evaluation.status   = result.converged ? SampleStatus::certified :
+                                result.no_equilibrium ?
+                                                   SampleStatus::no_equilibrium :
+                                                   SampleStatus::not_certified;
           if (result.converged)
             evaluation.K = result.safety_factor;
           if (full != nullptr)
@@ -174,10 +166,7 @@ namespace fdem
         contact::StatusIterationControl      control;
         parameters::SafetyFactorParameters   parameters;
         std::vector<contact::PairState<dim>> start_states, last_states;
-        /** K at the means, the means, and dK/dx there (empty: not known). */
-        double              K_start = 1;
-        std::vector<double> means, gradient;
-        std::ostream        quiet; // no output per sample
+        std::ostream                         quiet; // no output per sample
         /** The unit weight factor's variable (-1: none) and the body-force
          * cases. */
         int                       weight_variable = -1;
@@ -213,8 +202,7 @@ namespace fdem
                          " one standard deviation from its mean"}};
             gradient[v] = (up.K - down.K) / (2 * std_devs[v]);
           }
-        evaluator.gradient = gradient;
-        double variance    = 0;
+        double variance = 0;
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             variance += gradient[i] * gradient[j] * p.correlation[i * n + j] *
@@ -310,8 +298,7 @@ namespace fdem
                    at_means.certificate.reason +
                    "); the samples start from that state."));
 
-      // FOSM first: its gradient of K starts each sample's iteration near
-      // its K.
+      // FOSM (2n safety factors) before the samples.
       const nlohmann::json first_order =
         fosm(evaluator, p, means, std_devs, at_means.safety_factor);
       if (p.fosm)

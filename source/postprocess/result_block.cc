@@ -196,17 +196,21 @@ namespace fdem
         return {};
       const nlohmann::json &p    = summary["probabilistic"];
       const auto            text = [&](const char *key, const unsigned int n) {
-        return p.contains(key) && p[key].is_number() ? fixed(p[key].get<double>(), n) : "none";
+        return p.contains(key) && p[key].is_number() ?
+                            fixed(p[key].get<double>(), n) :
+                            "none";
       };
       std::vector<std::string> lines;
-      lines.push_back("mean K = " + text("K_mean", 3) + ", std " + text("K_std", 3) + " (" +
-                      std::to_string(p["n_samples"].get<unsigned long>()) + " samples, " +
-                      std::to_string(p["n_certified"].get<unsigned long>()) + " certified)");
+      lines.push_back(
+        "mean K = " + text("K_mean", 3) + ", std " + text("K_std", 3) + " (" +
+        std::to_string(p["n_samples"].get<unsigned long>()) + " samples, " +
+        std::to_string(p["n_certified"].get<unsigned long>()) + " certified)");
       const auto &interval = p["P_failure_interval"];
       lines.push_back("P(K < 1) = " + text("P_failure", 4) + " [" +
                       fixed(interval["lower"].get<double>(), 4) + ", " +
-                      fixed(interval["upper"].get<double>(), 4) + "] (95 % Wilson), beta = " +
-                      text("beta_normal", 2) + " (normal), " + text("beta_lognormal", 2) +
+                      fixed(interval["upper"].get<double>(), 4) +
+                      "] (95 % Wilson), beta = " + text("beta_normal", 2) +
+                      " (normal), " + text("beta_lognormal", 2) +
                       " (lognormal)");
       return lines;
     }
