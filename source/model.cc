@@ -7,6 +7,7 @@
 #include <fdem/model.h>
 #include <fdem/postprocess/output_files.h>
 
+#include <fdem/analyses/probabilistic.h>
 #include <fdem/analyses/safety_factor_analysis.h>
 #include <fdem/analyses/seismic.h>
 #include <fdem/postprocess/output_files.h>
@@ -115,6 +116,8 @@ namespace fdem
         if (fe_stress.computed)
           log << "FE-stress factor (every pair stuck, full strength): " << std::setprecision(8)
               << fe_stress.factor << std::endl;
+        if (parameters.probabilistic.compute)
+          probabilistic = analyses::probabilistic_safety_factor(*this);
       }
     else
       {
@@ -383,21 +386,35 @@ namespace fdem
   }
 
   template <int dim>
+  blocks::SoilStrength
+  Model<dim>::soil_strength(const unsigned int i, const contact::NodePair<dim> &pair) const
+  {
+    const parameters::InterfaceParameters &p = parameters.interfaces.at(interfaces[i].name);
+    if (!p.strength_from_material)
+      return blocks::SoilStrength{p.cohesion, std::tan(p.friction_angle * numbers::PI / 180)};
+    auto it = soil_strengths[i].find(pair.dofs_I[0]);
+    if (it == soil_strengths[i].end()) // an earlier interface's pair, I and J swapped
+      it = soil_strengths[i].find(pair.dofs_J[0]);
+    AssertThrow(it != soil_strengths[i].end(), ExcInternalError());
+    return it->second;
+  }
+
+  template <int dim>
   std::vector<contact::PairStrength>
   Model<dim>::pair_strengths(const double K) const
   {
-    // c and tan(phi) in interface i at @p pair (of i, or of an earlier
-    // interface sharing the node): the interface's, or its materials'.
-    const auto soil = [this](const unsigned int i, const contact::NodePair<dim> &pair) {
-      const parameters::InterfaceParameters &p = parameters.interfaces.at(interfaces[i].name);
-      if (!p.strength_from_material)
-        return blocks::SoilStrength{p.cohesion, std::tan(p.friction_angle * numbers::PI / 180)};
-      auto it = soil_strengths[i].find(pair.dofs_I[0]);
-      if (it == soil_strengths[i].end()) // an earlier interface's pair, I and J swapped
-        it = soil_strengths[i].find(pair.dofs_J[0]);
-      AssertThrow(it != soil_strengths[i].end(), ExcInternalError());
-      return it->second;
-    };
+    return pair_strengths(K, [this](const unsigned int i, const contact::NodePair<dim> &pair) {
+      return soil_strength(i, pair);
+    });
+  }
+
+  template <int dim>
+  std::vector<contact::PairStrength>
+  Model<dim>::pair_strengths(
+    const double K,
+    const std::function<blocks::SoilStrength(unsigned int, const contact::NodePair<dim> &)> &soil)
+    const
+  {
     std::vector<contact::PairStrength> strengths;
     for (unsigned int i = 0; i < interfaces.size(); ++i)
       {

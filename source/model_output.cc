@@ -192,7 +192,8 @@ namespace fdem
       for (unsigned int b = 0; b < blocks.size(); ++b)
         {
           Vector<double> residual = blocks[b]->nodal_residual(displacements[b]);
-          residual += load_change(b); // the assembled cells have the assembled load
+          residual +=
+            load_change(b); // the assembled cells have the assembled load
           for (const auto dof : blocks[b]->support_dofs)
             reactions[b] = std::max(reactions[b], std::abs(residual[dof]));
         }
@@ -207,6 +208,8 @@ namespace fdem
                                           nullptr);
     if (seismic.active)
       summary["seismic"] = analyses::to_json(seismic);
+    if (!probabilistic.is_null())
+      summary["probabilistic"] = probabilistic;
     // The only entries that differ between two runs of the same input.
     summary["timings"] =
       postprocess::section_wall_times(timer, run_timer.wall_time());

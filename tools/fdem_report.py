@@ -440,6 +440,72 @@ def seismic_section(folder, summary):
         plt.close(fig)
         out.append(f"<p>{image(path, 'K(kh) and the Newmark displacement')}</p>")
     return "\n".join(out)
+def probabilistic_section(folder, summary):
+    """The probabilistic safety factor (summary.json "probabilistic"): its
+    numbers, and probabilistic.png: the histogram of K, its empirical CDF
+    with P(K < 1), and the fragility curve if there is one."""
+    p = summary["probabilistic"]
+    K = []
+    samples = os.path.join(folder, "samples.csv")
+    if os.path.exists(samples):
+        with open(samples) as f:
+            K = [float(r["K"]) for r in csv.DictReader(f) if r["status"] == "certified"]
+    fragility = p.get("fragility")
+    fig, axes = plt.subplots(1, 3 if fragility else 2, figsize=(13 if fragility else 9, 3.8))
+    ax, ax2 = axes[0], axes[1]
+    if K:
+        ax.hist(K, bins=min(40, max(5, int(len(K) ** 0.5))), color="#4a7ebb")
+        ax2.plot(np.sort(K), np.arange(1, len(K) + 1) / len(K), color="#4a7ebb")
+    for a in (ax, ax2):
+        a.axvline(1.0, color="#a00", lw=0.8, ls="--")
+        a.set_xlabel("safety factor K")
+        a.grid(alpha=0.3)
+    ax.set_ylabel("samples")
+    ax.set_title("histogram of K (certified samples)", fontsize=10)
+    ax2.set_ylabel("P(K ≤ k)")
+    ax2.set_title("empirical CDF of K", fontsize=10)
+    if fragility:
+        bins = fragility["bins"]
+        x = [b["x_mean"] for b in bins]
+        ax3 = axes[2]
+        ax3.errorbar(x, [b["P_failure"] for b in bins],
+                     yerr=[[b["P_failure"] - b["lower"] for b in bins],
+                           [b["upper"] - b["P_failure"] for b in bins]], fmt="o-", capsize=3)
+        target = p["variables"][fragility["variable"] - 1]["target"]
+        ax3.set_xlabel(target)
+        ax3.set_ylabel("P(K < 1) in the bin")
+        ax3.set_title("fragility curve (95 % Wilson intervals)", fontsize=10)
+        ax3.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(folder, "probabilistic.png"), dpi=DPI)
+    plt.close(fig)
+    interval = p["P_failure_interval"]
+    rows = [("samples", f"{p['n_samples']} ({html.escape(p['sampling'])}, seed {p['seed']})"),
+            ("certified / no equilibrium / not certified / nonphysical",
+             f"{p['n_certified']} / {p['n_no_equilibrium']} / {p['n_not_certified']} / "
+             f"{p['n_nonphysical']}"),
+            ("mean K, standard deviation", f"{number(p['K_mean'], 4)}, {number(p['K_std'], 4)}"),
+            ("P(K < 1)", f"<b>{number(p['P_failure'], 4)}</b> (95 % Wilson interval "
+                         f"{number(interval['lower'], 4)} – {number(interval['upper'], 4)})"),
+            ("reliability index β (normal, lognormal)",
+             f"{number(p['beta_normal'], 4)}, {number(p['beta_lognormal'], 4)}"),
+            ("K at the variables' means", number(p["K_at_means"], 6))]
+    for key, name in (("fosm", "FOSM"), ("point_estimate", "Rosenblueth's point estimates")):
+        e = p.get(key)
+        if e and e.get("computed"):
+            rows.append((f"{name}: mean K, standard deviation",
+                         f"{number(e['K_mean'], 4)}, {number(e['K_std'], 4)}"))
+    cost = p["cost"]
+    rows.append(("cost", f"{number(cost['seconds_per_sample'], 3)} s per sample, "
+                         f"{number(cost['mean_steps_per_sample'], 3)} steps per sample, "
+                         f"{cost['n_ranks']} rank(s)"))
+    variables = table([(html.escape(v["target"]), html.escape(v["distribution"]), number(v["mean"], 6),
+                        number(v["std"], 6)) for v in p["variables"]],
+                      ["random variable", "distribution", "mean", "standard deviation"])
+    return ("<h2>Probabilistic safety factor</h2>\n" + variables + table(rows) +
+            f"<p>{image(os.path.join(folder, 'probabilistic.png'), 'probabilistic safety factor')}</p>"
+            "<p>Samples whose contact problem has no static equilibrium, or whose K is not certified, "
+            "count as failures; every sample is in samples.csv.</p>")
 
 
 # --------------------------------------------------------------------------
@@ -554,6 +620,8 @@ stresses in force per length squared.</p>
                             html.escape(str(s["contact_result"])))
                            for k, s in enumerate(steps)],
                           ["step", "K", "K*", "F_R", "F_τ", "stick", "slip", "open", "contact problem"]))
+    if "probabilistic" in summary:
+        page.append(probabilistic_section(folder, summary))
     page.append("<h2>Input parameters (parameters.prm)</h2>")
     if os.path.exists(os.path.join(folder, "parameters.prm")):
         # The entries the case set (marked '# default:' by the program) first.

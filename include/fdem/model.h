@@ -23,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -150,6 +151,25 @@ namespace fdem
     std::vector<contact::PairStrength>
     pair_strengths(const double K) const;
 
+    /**
+     * The same with the soil strength (c, tan(phi)) of interface i at a
+     * node pair given by @p soil(i, pair) instead of the model's
+     * (soil_strength()): a sample of a probabilistic analysis.
+     */
+    std::vector<contact::PairStrength>
+    pair_strengths(
+      const double K,
+      const std::function<blocks::SoilStrength(unsigned int, const contact::NodePair<dim> &)> &soil)
+      const;
+
+    /**
+     * c and tan(phi) of interface @p i at @p pair (of i, or of an earlier
+     * interface sharing the node): the interface's own, or its materials'
+     * at the node (soil_strengths).
+     */
+    blocks::SoilStrength
+    soil_strength(const unsigned int i, const contact::NodePair<dim> &pair) const;
+
     /** Per pair of all interfaces: on a sliding surface? */
     std::vector<bool>
     pairs_on_sliding_surface() const;
@@ -227,6 +247,8 @@ namespace fdem
     /** The seismic load, the yield acceleration and the Newmark displacement (analyses/seismic.h). */
     analyses::SeismicResults                            seismic;
     std::vector<Vector<double>>                         displacements;
+    /** summary.json's "probabilistic" (analyses/probabilistic.h), if computed. */
+    nlohmann::json                                      probabilistic;
     nlohmann::json                                      summary;
 
   private:

@@ -332,6 +332,14 @@ namespace fdem
     }
 
     template <int dim>
+    void
+    MixedSystem<dim>::forget_factorization()
+    {
+      if (dense)
+        dense->lu.clear();
+    }
+
+    template <int dim>
     std::vector<Vector<double>>
     MixedSystem<dim>::flexibility_products(const std::vector<Vector<double>> &sources)
     {

@@ -150,6 +150,7 @@ namespace fdem
       OutputParameters::declare_parameters(prm);
       analyses::LimitEquilibriumParameters::declare_parameters(prm);
       analyses::YieldAccelerationParameters::declare_parameters(prm);
+      analyses::ProbabilisticParameters::declare_parameters(prm);
     }
 
     void
@@ -166,6 +167,7 @@ namespace fdem
       output.parse_parameters(prm);
       limit_equilibrium.parse_parameters(prm);
       yield_acceleration.parse_parameters(prm);
+      probabilistic.parse_parameters(prm);
 
       block_names     = names_in(prm, "Blocks");
       boundary_names  = names_in(prm, "Boundaries");
@@ -217,6 +219,22 @@ namespace fdem
           prm.leave_subsection();
         }
       prm.leave_subsection();
+      probabilistic_check_targets();
+    }
+
+    void
+    Parameters::probabilistic_check_targets() const
+    {
+      std::map<std::string, bool> interfaces_without_own_strength, materials_with_strength;
+      for (const auto &[name, interface] : interfaces)
+        interfaces_without_own_strength[name] =
+          interface.strength_from_material || interface.frictionless;
+      for (const auto &[name, material] : materials)
+        materials_with_strength[name] = material.has_strength;
+      probabilistic.check_targets(interfaces_without_own_strength, materials_with_strength);
+      AssertThrow(!probabilistic.compute || safety_factor.compute,
+                  ExcMessage("Probabilistic/Compute: needs Safety factor/Compute = true (the "
+                             "samples start from the safety factor's state)."));
     }
 
     std::string

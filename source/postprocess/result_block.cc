@@ -191,6 +191,32 @@ namespace fdem
     }
 
     std::vector<std::string>
+    probabilistic_lines(const nlohmann::json &summary)
+    {
+      if (!summary.contains("probabilistic"))
+        return {};
+      const nlohmann::json &p    = summary["probabilistic"];
+      const auto            text = [&](const char *key, const unsigned int n) {
+        return p.contains(key) && p[key].is_number() ?
+                            fixed(p[key].get<double>(), n) :
+                            "none";
+      };
+      std::vector<std::string> lines;
+      lines.push_back(
+        "mean K = " + text("K_mean", 3) + ", std " + text("K_std", 3) + " (" +
+        std::to_string(p["n_samples"].get<unsigned long>()) + " samples, " +
+        std::to_string(p["n_certified"].get<unsigned long>()) + " certified)");
+      const auto &interval = p["P_failure_interval"];
+      lines.push_back("P(K < 1) = " + text("P_failure", 4) + " [" +
+                      fixed(interval["lower"].get<double>(), 4) + ", " +
+                      fixed(interval["upper"].get<double>(), 4) +
+                      "] (95 % Wilson), beta = " + text("beta_normal", 2) +
+                      " (normal), " + text("beta_lognormal", 2) +
+                      " (lognormal)");
+      return lines;
+    }
+
+    std::vector<std::string>
     result_block(const nlohmann::json &summary,
                  const std::string    &results_folder,
                  const std::string    &log_file)
@@ -234,6 +260,9 @@ namespace fdem
         }
       for (const auto &[label, text] : analyses::seismic_result_lines(summary))
         add(label, text);
+      const auto probabilistic = probabilistic_lines(summary);
+      for (unsigned int i = 0; i < probabilistic.size(); ++i)
+        add(i == 0 ? "Probabilistic" : "", probabilistic[i]);
 
       unsigned int n_changing = 0;
       for (const std::string &w : listed)

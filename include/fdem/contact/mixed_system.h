@@ -194,6 +194,15 @@ namespace fdem
       void
       set_load_coefficients(const double base_factor, const std::vector<double> &coefficients);
 
+      /**
+       * The next dense solve factorises afresh instead of updating the last
+       * factors (a no-op for the iterative solver): the solves that follow
+       * then do not depend on what was solved before, as the samples of a
+       * probabilistic analysis must not, whichever rank solves them.
+       */
+      void
+      forget_factorization();
+
       /** Whether set_moving_compliance_scale() can be used. */
       bool
       can_scale_moving_compliance() const

@@ -4,6 +4,7 @@
 
 #include <fdem/analyses/limit_equilibrium_parameters.h>
 #include <fdem/analyses/yield_acceleration_parameters.h>
+#include <fdem/analyses/probabilistic_parameters.h>
 #include <fdem/parameters/geometry_parameters.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -47,6 +48,8 @@ namespace fdem
       analyses::LimitEquilibriumParameters limit_equilibrium;
       /** The yield acceleration and the Newmark displacement. */
       analyses::YieldAccelerationParameters yield_acceleration;
+      /** The probabilistic safety factor (Monte Carlo on the soil strengths). */
+      analyses::ProbabilisticParameters probabilistic;
 
       std::vector<std::string>                   block_names;
       /** Names of the material regions (Materials/Names). */
@@ -72,6 +75,10 @@ namespace fdem
       /** Reads the values from a handler declared by declare_parameters(). */
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Probabilistic/Variables: each target exists and has a strength of its own. */
+      void
+      probabilistic_check_targets() const;
 
       /** The output folder this run writes into. */
       std::string

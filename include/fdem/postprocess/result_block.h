@@ -60,6 +60,14 @@ namespace fdem
     conditioning_changes_answer(const nlohmann::json &summary);
 
     /**
+     * Two lines on summary.json's "probabilistic", if it has one: mean and
+     * standard deviation of K with the sample counts; P(K < 1) with its
+     * 95 % Wilson interval and the reliability indices.
+     */
+    std::vector<std::string>
+    probabilistic_lines(const nlohmann::json &summary);
+
+    /**
      * The block an engineer reads first, ending the default screen and the
      * log file: K to 3 decimals (and once in full), its certificate in
      * words, the comparison values, the stiffness check, the warnings that

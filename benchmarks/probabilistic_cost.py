@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""The cost of the probabilistic safety factor: 10^4 samples of c and phi on
+the paper's slope at its default mesh, the wall time of the whole process
+(from its start: mesh, factorisation, the deterministic K, the samples,
+FOSM and point estimates, output without VTU and report), serial and on 2
+MPI ranks, and the cost of one sample against that of one deterministic K
+(the safety-factor iteration of the same run: its contact and safety-factor
+phases). Writes its table into doc/benchmarks.md.
+
+    /usr/bin/python3 benchmarks/probabilistic_cost.py [--exe build/fdem-slope]
+        [--samples 10000] [--output doc/benchmarks.md]
+"""
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+# c lognormal with COV 0.3, phi normal with COV 0.1 (typical values: Duncan
+# 2000, Table 1), as tests/probabilistic/paper_slope_cov.prm.
+VARIABLES = ("Interfaces/sliding surface/Cohesion: lognormal, mean 3, cov 0.3; "
+             "Interfaces/sliding surface/Friction angle: normal, mean 19.6, cov 0.1")
+MPIRUN = ["mpirun", "-np", "2", "--oversubscribe"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--exe", default=common.DEFAULT_EXE)
+    parser.add_argument("--samples", type=int, default=10000)
+    parser.add_argument("--output", default=os.path.join(common.ROOT, "doc", "benchmarks.md"))
+    args = parser.parse_args()
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    base = {"Output/Report": "false"}
+    deterministic = common.run_case(args.exe, "paper_slope.prm", base)
+    if not deterministic.ok:
+        sys.exit(f"probabilistic_cost.py: {deterministic.failure()}")
+    t = deterministic.summary["timings"]
+    one_K = t.get("contact", 0) + t.get("safety factor", 0)
+    settings = dict(base, **{"Probabilistic/Compute": "true",
+                             "Probabilistic/Number of samples": str(args.samples),
+                             "Probabilistic/Variables": VARIABLES,
+                             "Safety factor/Stiffness check": "false"})
+    rows = []
+    for label, launcher in (("1 process", []), ("2 MPI ranks", MPIRUN)):
+        run = common.run_case(args.exe, "paper_slope.prm", settings, launcher=launcher, env=env)
+        if not run.ok:
+            sys.exit(f"probabilistic_cost.py: {label}: {run.failure()}")
+        p = run.summary["probabilistic"]
+        cost = p["cost"]
+        per_sample = cost["samples_wall_seconds"] / (args.samples / cost["n_ranks"])
+        rows.append([label, f"{run.wall:.2f}", f"{run.summary['timings'].get('probabilistic', 0):.2f}",
+                     f"{args.samples / cost['samples_wall_seconds']:.0f}",
+                     f"{1e3 * per_sample:.2f}", f"{cost['mean_steps_per_sample']:.2f}",
+                     f"{cost['mean_contact_solves_per_sample']:.1f}",
+                     f"{p['K_mean']:.4f}", f"{p['K_std']:.4f}", f"{p['P_failure']:.4f}"])
+        print(" | ".join(rows[-1]))
+    lines = [
+        "<!-- probabilistic-cost: written by benchmarks/probabilistic_cost.py; do not edit by hand -->",
+        "## Probabilistic safety factor: cost of 10^4 samples",
+        "",
+        f"The paper's slope at its default mesh (h = 1), {args.samples} Monte Carlo samples of c "
+        "(lognormal, COV 0.3) and phi (normal, COV 0.1) on its sliding surface, with FOSM and "
+        "point estimates; stiffness check, VTU and report off. Wall time of the whole process "
+        "from its start (mesh, factorisation, the deterministic K, the samples, output); "
+        "samples per second of the sample loop (all ranks together); one sample against one "
+        f"deterministic K: the safety-factor iteration of the same slope took {one_K * 1e3:.1f} ms "
+        f"(contact and safety-factor phases of a run without samples; that whole run took "
+        f"{deterministic.wall:.2f} s). Commit {common.git_description()}, on the machine's 2 "
+        "cores shared with other work.",
+        "",
+    ] + common.markdown_table(
+        ["run", "process wall (s)", "probabilistic phase (s)", "samples / s", "ms per sample (per rank)",
+         "steps per sample", "contact solves per sample", "mean K", "std K", "P(K < 1)"], rows) + [
+        "",
+        "<!-- /probabilistic-cost -->"]
+    common.put_benchmarks_section(args.output, lines, "probabilistic-cost")
+
+
+if __name__ == "__main__":
+    main()

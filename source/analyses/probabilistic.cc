@@ -1,0 +1,443 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/analyses/probabilistic.h>
+#include <fdem/analyses/probabilistic_sampling.h>
+#include <fdem/analyses/probabilistic_strengths.h>
+#include <fdem/analyses/safety_factor_iteration.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    namespace
+    {
+      /** A JSON number, or null where it is not finite. */
+      nlohmann::json
+      number(const double x)
+      {
+        return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
+      }
+
+      /** K of one set of strengths, and what it cost. */
+      struct Evaluation
+      {
+        double       K       = std::numeric_limits<double>::quiet_NaN();
+        SampleStatus status  = SampleStatus::nonphysical;
+        unsigned int n_steps = 0, n_status_iterations = 0;
+      };
+
+      /**
+       * The safety factor of a sample: iterate() on the model's mixed
+       * system with the sample's strengths, from the state and K at the
+       * variables' means, without output.
+       */
+      template <int dim>
+      class SampleSafetyFactor
+      {
+      public:
+        SampleSafetyFactor(Model<dim>                        &model,
+                           const std::vector<RandomVariable> &variables)
+          : model(model)
+          , strengths(model, variables)
+          , on_sliding_surface(model.pairs_on_sliding_surface())
+          , quiet(nullptr)
+        {
+          control.max_iterations =
+            model.parameters.contact.max_status_iterations;
+          control.runaway_factor = model.parameters.contact.runaway_factor;
+          for (unsigned int v = 0; v < variables.size(); ++v)
+            if (variables[v].quantity ==
+                RandomVariable::Quantity::unit_weight_factor)
+              {
+                weight_variable = v;
+                // Solved once on the blocks' factorisations (collective).
+                weight_cases = model.body_force_cases(true);
+              }
+        }
+
+        /**
+         * The load of @p values: the weight times the unit weight factor,
+         * as the body-force cases combine it (Model::set_load_combination()).
+         */
+        void
+        set_load(const std::vector<double> &values)
+        {
+          if (weight_variable < 0)
+            return;
+          std::vector<double> coefficients(
+            *std::max_element(weight_cases.begin(), weight_cases.end()) + 1,
+            0.0);
+          for (unsigned int d = 0; d < dim; ++d)
+            coefficients[weight_cases[d]] =
+              (values[weight_variable] - 1) *
+              model.parameters.loads.gravity_direction[d];
+          model.set_load_combination(1, coefficients);
+        }
+
+        /** Back to the model's own load. */
+        void
+        restore_load()
+        {
+          if (weight_variable >= 0)
+            model.set_load_combination(1, {});
+        }
+
+        /**
+         * K at @p values (the means) from the model's initial K and states,
+         * as every later evaluation starts.
+         */
+        Result
+        set_start(const std::vector<double> &values)
+        {
+          start_states.clear();
+          parameters = model.parameters.safety_factor;
+          Result result;
+          evaluate(values, &result);
+          // Each sample starts from the initial states (as the first solve
+          // of the deterministic K did), not from the limit state at the
+          // means: there every pair slips, and an all-slip state gives
+          // K* = K at any K where it is static, a fixed point that is not
+          // the sample's (measured: FOSM from the limit state gave half the
+          // true dK/dc on the paper's slope).
+          start_states.clear();
+          return result;
+        }
+
+
+        Evaluation
+        evaluate(const std::vector<double> &values, Result *full = nullptr)
+        {
+          Evaluation evaluation;
+          if (!strengths.physical(values))
+            return evaluation;
+          // The same start for every sample: its state, K and a fresh
+          // factorisation, whatever was solved before.
+          model.mixed_system->forget_factorization();
+          set_load(values);
+          std::vector<contact::PairState<dim>> states = start_states;
+          last_states.clear();
+          const auto solve = [&](const double K) {
+            const std::vector<contact::PairStrength> reduced =
+              strengths(values, K);
+            if (states.empty())
+              states = contact::initial_states(*model.mixed_system, reduced);
+            const contact::ContactOutcome<dim> outcome =
+              contact::solve_contact_problem(
+                *model.mixed_system, reduced, states, control, quiet);
+            evaluation.n_status_iterations += outcome.iterations.size();
+            if (outcome.converged())
+              states = last_states = outcome.states;
+            return resisting_and_sliding_forces(*model.mixed_system,
+                                                outcome,
+                                                reduced,
+                                                on_sliding_surface);
+          };
+          // Every sample starts as the deterministic K did: at Safety
+          // factor/Initial factor from the initial states. A start near the
+          // limit finds a fixed point that is not the sample's: where every
+          // pair slips, K* = K at any K where that state is static
+          // (measured on the paper's slope: one step, K certified below
+          // the sample's own, FOSM's dK/dc half the true one).
+          const Result result = iterate(solve, parameters, quiet);
+          evaluation.n_steps  = result.steps.size();
+          evaluation.status   = result.converged ? SampleStatus::certified :
+                                result.no_equilibrium ?
+                                                   SampleStatus::no_equilibrium :
+                                                   SampleStatus::not_certified;
+          if (result.converged)
+            evaluation.K = result.safety_factor;
+          if (full != nullptr)
+            *full = result;
+          return evaluation;
+        }
+
+        Model<dim>                          &model;
+        SampleStrengths<dim>                 strengths;
+        const std::vector<bool>              on_sliding_surface;
+        contact::StatusIterationControl      control;
+        parameters::SafetyFactorParameters   parameters;
+        std::vector<contact::PairState<dim>> start_states, last_states;
+        std::ostream                         quiet; // no output per sample
+        /** The unit weight factor's variable (-1: none) and the body-force
+         * cases. */
+        int                       weight_variable = -1;
+        std::vector<unsigned int> weight_cases;
+      };
+
+      /**
+       * FOSM: K at the means and at each mean plus and minus one standard
+       * deviation; the variance g^T Sigma g with g by central differences.
+       */
+      template <int dim>
+      nlohmann::json
+      fosm(SampleSafetyFactor<dim>       &evaluator,
+           const ProbabilisticParameters &p,
+           const std::vector<double>     &means,
+           const std::vector<double>     &std_devs,
+           const double                   K_mean)
+      {
+        const unsigned int  n = means.size();
+        std::vector<double> gradient(n);
+        for (unsigned int v = 0; v < n; ++v)
+          {
+            std::vector<double> x = means;
+            x[v]                  = means[v] + std_devs[v];
+            const Evaluation up   = evaluator.evaluate(x);
+            x[v]                  = means[v] - std_devs[v];
+            const Evaluation down = evaluator.evaluate(x);
+            if (up.status != SampleStatus::certified ||
+                down.status != SampleStatus::certified)
+              return {{"computed", false},
+                      {"reason",
+                       "no certified K at variable " + std::to_string(v + 1) +
+                         " one standard deviation from its mean"}};
+            gradient[v] = (up.K - down.K) / (2 * std_devs[v]);
+          }
+        double variance = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            variance += gradient[i] * gradient[j] * p.correlation[i * n + j] *
+                        std_devs[i] * std_devs[j];
+        const double std_dev = std::sqrt(variance);
+        return {{"computed", true},
+                {"K_mean", K_mean},
+                {"K_std", std_dev},
+                {"beta_normal", number((K_mean - 1) / std_dev)},
+                {"P_failure_normal",
+                 number(probability::normal_cdf(-(K_mean - 1) / std_dev))},
+                {"gradient", gradient},
+                {"n_safety_factors", 2 * n}};
+      }
+
+      /**
+       * Rosenblueth (1975): the 2^n points mean +- one standard deviation,
+       * weighted (1 + sum_{i<j} s_i s_j rho_ij) / 2^n.
+       */
+      template <int dim>
+      nlohmann::json
+      point_estimate(SampleSafetyFactor<dim>       &evaluator,
+                     const ProbabilisticParameters &p,
+                     const std::vector<double>     &means,
+                     const std::vector<double>     &std_devs)
+      {
+        const unsigned int n  = means.size();
+        double             m1 = 0, m2 = 0;
+        for (unsigned int corner = 0; corner < (1u << n); ++corner)
+          {
+            std::vector<double> x = means;
+            std::vector<int>    sign(n);
+            double              weight = 1;
+            for (unsigned int v = 0; v < n; ++v)
+              {
+                sign[v] = (corner >> v) & 1 ? 1 : -1;
+                x[v] += sign[v] * std_devs[v];
+                for (unsigned int w = 0; w < v; ++w)
+                  weight += sign[v] * sign[w] * p.correlation[v * n + w];
+              }
+            weight /= double(1u << n);
+            const Evaluation e = evaluator.evaluate(x);
+            if (e.status != SampleStatus::certified)
+              return {{"computed", false},
+                      {"reason", "no certified K at a point estimate"}};
+            m1 += weight * e.K;
+            m2 += weight * e.K * e.K;
+          }
+        const double std_dev = std::sqrt(std::max(0.0, m2 - m1 * m1));
+        return {{"computed", true},
+                {"K_mean", m1},
+                {"K_std", std_dev},
+                {"beta_normal", number((m1 - 1) / std_dev)},
+                {"n_safety_factors", 1u << n}};
+      }
+    } // namespace
+
+    template <int dim>
+    nlohmann::json
+    probabilistic_safety_factor(Model<dim> &model)
+    {
+      const ProbabilisticParameters &p = model.parameters.probabilistic;
+      TimerOutput::Scope scope(model.phase_timer(), "probabilistic");
+      Timer              timer;
+      model.progress("probabilistic: " + std::to_string(p.n_samples) +
+                     " samples");
+      const unsigned int  n_variables = p.variables.size();
+      std::vector<double> means, std_devs;
+      for (const RandomVariable &v : p.variables)
+        {
+          means.push_back(v.marginal.distribution_mean());
+          std_devs.push_back(v.marginal.distribution_std_dev());
+        }
+
+      nlohmann::json          result;
+      SampleSafetyFactor<dim> evaluator(model, p.variables);
+      const unsigned int      factorized_before =
+        model.mixed_system->dense_solver().n_factorizations;
+      const unsigned int reused_before =
+        model.mixed_system->dense_solver().n_reused_solves;
+      Timer        mean_timer;
+      const Result at_means     = evaluator.set_start(means);
+      const double mean_seconds = mean_timer.wall_time();
+      result["K_at_means"] =
+        number(at_means.converged ? at_means.safety_factor :
+                                    std::numeric_limits<double>::quiet_NaN());
+      result["K_at_means_steps"]   = at_means.steps.size();
+      result["K_at_means_seconds"] = mean_seconds;
+      AssertThrow(
+        at_means.converged,
+        ExcMessage("Probabilistic/Variables: no certified safety factor at the "
+                   "variables' means (" +
+                   at_means.certificate.reason +
+                   "); the samples start from that state."));
+
+      // FOSM (2n safety factors) before the samples.
+      const nlohmann::json first_order =
+        fosm(evaluator, p, means, std_devs, at_means.safety_factor);
+      if (p.fosm)
+        result["fosm"] = first_order;
+
+      // Every rank draws every sample from the seed; each evaluates its slice.
+      const std::vector<double> L =
+        probability::cholesky(p.correlation, n_variables);
+      const std::vector<double> z = probability::standard_normal_samples(
+        p.n_samples, n_variables, p.latin_hypercube, p.seed, L);
+      std::vector<double> values(z.size());
+      for (std::size_t i = 0; i < z.size(); ++i)
+        values[i] =
+          p.variables[i % n_variables].marginal.from_standard_normal(z[i]);
+
+      // The iterative mixed solver's block solves are collective: there every
+      // rank solves every sample.
+      const bool split =
+        model.mixed_system->solver() == contact::MixedSystemSolver::dense;
+      const unsigned int n_ranks =
+        split ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
+      const unsigned int rank =
+        split ? Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) : 0;
+      const unsigned int first = std::size_t(p.n_samples) * rank / n_ranks;
+      const unsigned int last = std::size_t(p.n_samples) * (rank + 1) / n_ranks;
+      std::vector<double>
+            local; // K, status, steps, status iterations per sample
+      Timer sample_timer;
+      for (unsigned int s = first; s < last; ++s)
+        {
+          const Evaluation e = evaluator.evaluate(
+            std::vector<double>(values.begin() + std::size_t(s) * n_variables,
+                                values.begin() +
+                                  std::size_t(s + 1) * n_variables));
+          local.insert(local.end(),
+                       {e.K,
+                        double(e.status),
+                        double(e.n_steps),
+                        double(e.n_status_iterations)});
+        }
+      const double        sample_seconds = sample_timer.wall_time();
+      std::vector<double> gathered;
+      if (split)
+        for (const auto &part :
+             Utilities::MPI::all_gather(MPI_COMM_WORLD, local))
+          gathered.insert(gathered.end(), part.begin(), part.end());
+      else
+        gathered = local;
+
+      std::vector<double>       K(p.n_samples);
+      std::vector<SampleStatus> status(p.n_samples);
+      double                    n_steps = 0, n_status_iterations = 0;
+      for (unsigned int s = 0; s < p.n_samples; ++s)
+        {
+          K[s]      = gathered[4 * s];
+          status[s] = SampleStatus(int(gathered[4 * s + 1]));
+          n_steps += gathered[4 * s + 2];
+          n_status_iterations += gathered[4 * s + 3];
+        }
+      result.update(sample_statistics(K,
+                                      status,
+                                      values,
+                                      n_variables,
+                                      int(p.fragility_variable) - 1,
+                                      p.n_fragility_bins));
+      result["seed"] = p.seed;
+      result["sampling"] =
+        p.latin_hypercube ? "Latin hypercube" : "Monte Carlo";
+      result["deterministic_K"] =
+        number(model.safety_factor_result.safety_factor);
+      nlohmann::json variables = nlohmann::json::array();
+      for (unsigned int v = 0; v < n_variables; ++v)
+        variables.push_back({{"target", p.variables[v].target},
+                             {"distribution",
+                              probability::distribution_name(
+                                p.variables[v].marginal.distribution)},
+                             {"mean", means[v]},
+                             {"std", std_devs[v]}});
+      result["variables"]   = variables;
+      result["correlation"] = p.correlation;
+
+      if (p.point_estimate)
+        result["point_estimate"] =
+          point_estimate(evaluator, p, means, std_devs);
+
+      evaluator.restore_load();
+      // Cost: this rank's samples, the run's mean per sample.
+      const unsigned int n_local = last - first;
+      result["cost"]             = {
+                    {"wall_seconds", timer.wall_time()},
+                    {"samples_wall_seconds", sample_seconds},
+                    {"seconds_per_sample", n_local > 0 ? sample_seconds / n_local : 0.0},
+                    {"seconds_K_at_means", mean_seconds},
+                    {"mean_steps_per_sample", n_steps / p.n_samples},
+                    {"mean_contact_solves_per_sample", n_status_iterations / p.n_samples},
+                    {"factorizations_rank0",
+                     model.mixed_system->dense_solver().n_factorizations -
+                       factorized_before},
+                    {"reused_solves_rank0",
+                     model.mixed_system->dense_solver().n_reused_solves - reused_before},
+                    {"n_ranks", n_ranks}};
+
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          std::ofstream out(model.parameters.output_directory() +
+                            "/samples.csv");
+          out << "sample";
+          for (const RandomVariable &v : p.variables)
+            out << ",\"" << v.target << "\"";
+          out << ",K,status,steps\n" << std::setprecision(17);
+          for (unsigned int s = 0; s < p.n_samples; ++s)
+            {
+              out << s;
+              for (unsigned int v = 0; v < n_variables; ++v)
+                out << "," << values[std::size_t(s) * n_variables + v];
+              out << ",";
+              if (status[s] == SampleStatus::certified)
+                out << K[s];
+              out << "," << status_name(status[s]) << "," << gathered[4 * s + 2]
+                  << "\n";
+            }
+        }
+      model.log << "Probabilistic: " << p.n_samples << " samples, "
+                << result["n_certified"]
+                << " with a certified K, mean K = " << result["K_mean"]
+                << ", P(K < 1) = " << result["P_failure"] << std::endl;
+      if (result["n_nonphysical"].get<unsigned long>() > 0)
+        model.warn(postprocess::warning_text(
+          "nonphysical-samples",
+          std::to_string(result["n_nonphysical"].get<unsigned long>()) +
+            " samples had a strength outside its physical range (c < 0, phi outside [0, 90) "
+            "degrees) and were left out of the statistics; a lognormal or truncated normal "
+            "distribution keeps strengths physical"));
+      return result;
+    }
+
+    template nlohmann::json
+    probabilistic_safety_factor(Model<2> &);
+    template nlohmann::json
+    probabilistic_safety_factor(Model<3> &);
+  } // namespace analyses
+} // namespace fdem
