@@ -149,6 +149,7 @@ namespace fdem
       SolverParameters::declare_parameters(prm);
       OutputParameters::declare_parameters(prm);
       analyses::LimitEquilibriumParameters::declare_parameters(prm);
+      analyses::SurfaceSearchParameters::declare_parameters(prm);
     }
 
     void
@@ -164,6 +165,7 @@ namespace fdem
       solver.parse_parameters(prm);
       output.parse_parameters(prm);
       limit_equilibrium.parse_parameters(prm);
+      surface_search.parse_parameters(prm);
 
       block_names     = names_in(prm, "Blocks");
       boundary_names  = names_in(prm, "Boundaries");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/analyses/limit_equilibrium_parameters.h>
+#include <fdem/analyses/surface_search_parameters.h>
 #include <fdem/parameters/geometry_parameters.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -44,6 +45,8 @@ namespace fdem
       OutputParameters   output;
       /** Limit equilibrium on the model's own sliding surface. */
       analyses::LimitEquilibriumParameters limit_equilibrium;
+      /** The search for the critical circle (analyses/surface_search.h). */
+      analyses::SurfaceSearchParameters surface_search;
 
       std::vector<std::string>                   block_names;
       /** Names of the material regions (Materials/Names). */
