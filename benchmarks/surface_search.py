@@ -55,7 +55,7 @@ def slices(exe, centre, radius):
         if not run.ok:
             sys.exit("the slices run failed: " + run.failure())
         methods = run.summary["limit_equilibrium"]["methods"]
-        rows.append((n, methods["bishop"]["K"], methods["spencer"]["K"]))
+        rows.append((n, methods["bishop_simplified"]["K"], methods["spencer"]["K"]))
     return rows
 
 
@@ -100,7 +100,7 @@ def main():
               f"{critical['centre'][1]:.4f}), radius {critical['radius']:.4f}, chosen by the "
               f"{critical['chosen_by']}; contact K {critical['K']:.4f} at 1 m "
               f"({critical['contact_K']:.4f} on the 2 m screening mesh), Bishop "
-              f"{critical['limit_equilibrium'].get('bishop', float('nan')):.4f} with 400 slices "
+              f"{critical['limit_equilibrium'].get('bishop_simplified', float('nan')):.4f} with 400 slices "
               f"({n_screened} circles screened, {counts['contact_certified']} of "
               f"{counts['contact_evaluations']} contact evaluations certified).",
               "",
