@@ -531,6 +531,10 @@ def main():
     output_cost_csv = os.path.join(figures, "output_cost.csv")
     if os.path.exists(output_cost_csv):
         lines += [""] + output_cost.benchmarks_section(output_cost_csv)
+    # And the Surface search section (benchmarks/surface_search.py).
+    surface_search_md = os.path.join(figures, "surface_search.md")
+    if os.path.exists(surface_search_md):
+        lines += [""] + open(surface_search_md).read().splitlines()
     with open(os.path.join(doc_dir, "benchmarks.md"), "w") as f:
         f.write("\n".join(lines))
     print(f"Wrote {os.path.join(doc_dir, 'benchmarks.md')} and {figures}/")

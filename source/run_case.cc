@@ -3,6 +3,7 @@
 //
 // The two ways main() runs a case: validate it (up to its node pairs, with
 // the layout checks) or run it into its results folder.
+#include <fdem/analyses/surface_search.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/report.h>
 #include <fdem/postprocess/result_block.h>
@@ -45,11 +46,19 @@ namespace fdem
     log.brief() << "Case: " << prm_file << " (" << parameters.case_name << ", " << parameters.dimension
                 << "D)" << std::endl;
     nlohmann::json summary;
+    // The surface search replaces the circle of Geometry/Slope by the
+    // critical one, on which the run below computes K as usual.
+    analyses::SurfaceSearchResult search;
+    if (parameters.surface_search.enabled)
+      search = analyses::search_critical_surface(parameters, folder.staging() + "/search-scratch",
+                                                 log.brief());
     if (parameters.dimension == 2)
       {
         Model<2> model(parameters, expanded, log.detail(), &log.brief());
         model.run();
         summary = model.summary;
+        if (search.performed && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          analyses::write_surface_search(search, folder.staging(), summary);
       }
     else
       {

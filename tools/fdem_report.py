@@ -559,6 +559,80 @@ def results_table(summary):
     return table(rows)
 
 
+def surface_search_picture(folder, search, path):
+    """search.png: the screening factor over the grid of centres (each
+    centre's lowest over its radii), the refinement's circles and the
+    centres evaluated by the contact method, with the critical centre."""
+    rows = list(csv.DictReader(open(os.path.join(folder, "search.csv"))))
+    lowest = {}
+    for r in rows:
+        if r["stage"] == "grid" and r["le_K"]:
+            key = (float(r["centre_x"]), float(r["centre_y"]))
+            lowest[key] = min(lowest.get(key, np.inf), float(r["le_K"]))
+    fig, ax = plt.subplots(figsize=(8, 6))
+    if lowest:
+        xy = np.array(list(lowest.keys()))
+        K = np.array(list(lowest.values()))
+        xs, ys = np.unique(xy[:, 0]), np.unique(xy[:, 1])
+        if len(xs) > 1 and len(ys) > 1 and len(K) == len(xs) * len(ys):
+            grid = np.full((len(ys), len(xs)), np.nan)
+            for (x, y), k in lowest.items():
+                grid[np.searchsorted(ys, y), np.searchsorted(xs, x)] = k
+            shown = ax.contourf(xs, ys, grid, levels=20, cmap="viridis")
+        else:
+            shown = ax.scatter(xy[:, 0], xy[:, 1], c=K, cmap="viridis", s=40)
+        fig.colorbar(shown, ax=ax, label=f"lowest {search['method']} factor at the centre")
+    refined = np.array([(float(r["centre_x"]), float(r["centre_y"])) for r in rows
+                        if r["stage"] == "refinement" and r["le_K"]]).reshape(-1, 2)
+    ax.plot(refined[:, 0], refined[:, 1], ".", color="0.7", ms=3,
+            label="refinement (limit equilibrium)")
+    contact = np.array([(float(r["centre_x"]), float(r["centre_y"])) for r in rows
+                        if r["stage"].startswith("contact")]).reshape(-1, 2)
+    ax.plot(contact[:, 0], contact[:, 1], "o", mfc="none", color="tab:red",
+            label="contact evaluations")
+    c = search["critical"]["centre"]
+    ax.plot([c[0]], [c[1]], "*", color="w", mec="k", ms=16, label="critical circle's centre")
+    ax.set_xlabel("x of the centre (length unit)")
+    ax.set_ylabel("y of the centre (length unit)")
+    ax.set_aspect("equal")
+    ax.legend(fontsize=8)
+    ax.set_title("surface search: factor of safety over the grid of centres", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+
+
+def surface_search_section(folder, summary):
+    """The report's section on the surface search (summary.json's
+    surface_search): the critical circle, its factors, the counts and the
+    picture of K over the grid."""
+    search = summary["surface_search"]
+    critical, counts = search["critical"], search["counts"]
+    rows = [("critical circle", f"centre ({number(critical['centre'][0])}, "
+                                f"{number(critical['centre'][1])}), radius {number(critical['radius'])}"),
+            ("chosen by", html.escape(critical["chosen_by"])),
+            ("contact K (the run's, at the model's mesh size)", number(critical["K"], 4)),
+            ("contact K during the search (screening mesh size "
+             f"{number(critical['screening_mesh_size'])})", number(critical["contact_K"], 4))]
+    for method, K in critical["limit_equilibrium"].items():
+        rows.append((f"limit equilibrium, {html.escape(method)}", number(K, 4)))
+    rows.append(("circles screened (grid, refinement)",
+                 f"{counts['grid']} ({counts['valid']} valid), {counts['refinement']}"))
+    rows.append(("contact evaluations (certified)",
+                 f"{counts['contact_evaluations']} ({counts['contact_certified']})"))
+    out = ["<h2>Surface search</h2>", table(rows)]
+    if search.get("minimum_on_grid_edge"):
+        out.append('<p class="warning">The screening minimum lies on the edge of the search '
+                   "region: a lower one may lie beyond it.</p>")
+    if os.path.exists(os.path.join(folder, "search.csv")):
+        surface_search_picture(folder, search, os.path.join(folder, "search.png"))
+        out.append("<p>" + image(os.path.join(folder, "search.png"),
+                                 "Factor of safety over the grid of centres") + "</p>")
+    out.append("<p>Every circle evaluated: search.csv; the critical circle's entries to rerun "
+               "it: critical_surface.prm.</p>")
+    return out
+
+
 def main(folder):
     start = time.perf_counter()
     summary = json.load(open(os.path.join(folder, "summary.json")))
@@ -597,6 +671,8 @@ stresses in force per length squared.</p>
     warnings = summary.get("warnings", [])
     page.append("<ul>" + "".join(f'<li class="warning">{html.escape(w)}</li>' for w in warnings) + "</ul>"
                 if warnings else "<p>None.</p>")
+    if "surface_search" in summary:
+        page += surface_search_section(folder, summary)
     page.append("<h2>Sliding surfaces</h2>")
     page.append(table([(html.escape(i["name"]), html.escape(i["block_I"]), html.escape(i["block_J"]),
                         i["n_pairs"], i["n_stick"], i["n_slip"], i["n_open"],

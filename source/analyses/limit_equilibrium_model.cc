@@ -52,12 +52,43 @@ namespace fdem
       }
     } // namespace
 
+    void
+    check_surface_in_model(const le::Section &section,
+                           const le::Surface &surface,
+                           const double       base_elevation)
+    {
+      const auto line =
+        surface.circular ?
+          le::circle_surface(section.ground,
+                             surface.centre,
+                             surface.radius,
+                             2001) :
+          le::polyline_in_ground(section.ground, surface.polyline);
+      double lowest = line.front()[1];
+      for (const Point<2> &q : line)
+        lowest = std::min(lowest, q[1]);
+      const double x_left      = section.ground.front()[0],
+                   x_right     = section.ground.back()[0];
+      const double       slack = 1e-9 * (x_right - x_left);
+      std::ostringstream where;
+      where << "from x = " << line.front()[0] << " to " << line.back()[0]
+            << ", down to y = " << lowest << "; the model spans x = " << x_left
+            << " to " << x_right << " above y = " << base_elevation;
+      AssertThrow(line.front()[0] > x_left - slack &&
+                    line.back()[0] < x_right + slack && lowest > base_elevation,
+                  ExcMessage(
+                    "Geometry/Slope: the sliding surface leaves the model "
+                    "for limit equilibrium (" +
+                    where.str() + ")."));
+    }
+
     bool
     model_section(const parameters::Parameters &p,
                   le::Section                  &section,
                   le::Surface                  &surface,
                   std::string                  &why_not,
-                  std::vector<std::string>     &notes)
+                  std::vector<std::string>     &notes,
+                  const bool                    check_surface)
     {
       why_not = unsupported(p);
       if (!why_not.empty())
@@ -194,30 +225,8 @@ namespace fdem
 
       // The surface must lie inside the model: its ends within the ground's
       // x range, and above the base.
-      const auto line =
-        surface.circular ?
-          le::circle_surface(section.ground,
-                             surface.centre,
-                             surface.radius,
-                             2001) :
-          le::polyline_in_ground(section.ground, surface.polyline);
-      double lowest = line.front()[1];
-      for (const Point<2> &q : line)
-        lowest = std::min(lowest, q[1]);
-      const double x_left      = section.ground.front()[0],
-                   x_right     = section.ground.back()[0];
-      const double       slack = 1e-9 * (x_right - x_left);
-      std::ostringstream where;
-      where << "from x = " << line.front()[0] << " to " << line.back()[0]
-            << ", down to y = " << lowest << "; the model spans x = " << x_left
-            << " to " << x_right << " above y = " << slope.base_elevation;
-      AssertThrow(line.front()[0] > x_left - slack &&
-                    line.back()[0] < x_right + slack &&
-                    lowest > slope.base_elevation,
-                  ExcMessage(
-                    "Geometry/Slope: the sliding surface leaves the model "
-                    "for limit equilibrium (" +
-                    where.str() + ")."));
+      if (check_surface)
+        check_surface_in_model(section, surface, slope.base_elevation);
 
       // Loads of the FE model that the section does not carry.
       bool crack_pressure = false;

@@ -31,6 +31,21 @@ namespace fdem
       }
     } // namespace
 
+    std::string
+    method_name_selection()
+    {
+      std::string all;
+      for (const auto &name : method_names())
+        all += (all.empty() ? "" : "|") + name.first;
+      return all;
+    }
+
+    limit_equilibrium::Method
+    method_from_name(const std::string &name)
+    {
+      return method_names().at(name);
+    }
+
     void
     LimitEquilibriumParameters::declare_parameters(ParameterHandler &prm)
     {
@@ -45,9 +60,7 @@ namespace fdem
         "summary.json why not). They use the same ground, "
         "layers, unit weights, piezometric line, pore pressure "
         "and tension crack as the FE model.");
-      std::string all;
-      for (const auto &name : method_names())
-        all += (all.empty() ? "" : "|") + name.first;
+      const std::string all = method_name_selection();
       prm.declare_entry(
         "Methods",
         "ordinary, Bishop, Janbu, Janbu corrected, Spencer, "

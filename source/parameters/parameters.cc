@@ -151,6 +151,7 @@ namespace fdem
       analyses::LimitEquilibriumParameters::declare_parameters(prm);
       analyses::YieldAccelerationParameters::declare_parameters(prm);
       analyses::ProbabilisticParameters::declare_parameters(prm);
+      analyses::SurfaceSearchParameters::declare_parameters(prm);
     }
 
     void
@@ -168,6 +169,7 @@ namespace fdem
       limit_equilibrium.parse_parameters(prm);
       yield_acceleration.parse_parameters(prm);
       probabilistic.parse_parameters(prm);
+      surface_search.parse_parameters(prm);
 
       block_names     = names_in(prm, "Blocks");
       boundary_names  = names_in(prm, "Boundaries");

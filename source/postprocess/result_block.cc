@@ -217,6 +217,27 @@ namespace fdem
     }
 
     std::vector<std::string>
+    surface_search_lines(const nlohmann::json &summary)
+    {
+      if (!summary.contains("surface_search"))
+        return {};
+      const nlohmann::json &s = summary["surface_search"];
+      const nlohmann::json &c = s["critical"];
+      const nlohmann::json &n = s["counts"];
+      return {"circle centre (" + digits(c["centre"][0].get<double>(), 6) +
+                ", " + digits(c["centre"][1].get<double>(), 6) + "), radius " +
+                digits(c["radius"].get<double>(), 6) +
+                " (critical_surface.prm)",
+              "chosen by the " + c.value("chosen_by", std::string()) +
+                " from " +
+                std::to_string(n["grid"].get<unsigned int>() +
+                               n["refinement"].get<unsigned int>()) +
+                " circles screened and " +
+                std::to_string(n["contact_evaluations"].get<unsigned int>()) +
+                " contact evaluations (search.csv)"};
+    }
+
+    std::vector<std::string>
     result_block(const nlohmann::json &summary,
                  const std::string    &results_folder,
                  const std::string    &log_file)
@@ -247,6 +268,9 @@ namespace fdem
       else
         add("Contact problem",
             summary["contact"].value("result", std::string()));
+      const auto critical = surface_search_lines(summary);
+      for (unsigned int i = 0; i < critical.size(); ++i)
+        add(i == 0 ? "Critical surface" : "", critical[i]);
 
       std::vector<std::string> listed;
       for (const auto &w : summary["warnings"])

@@ -46,14 +46,26 @@ namespace fdem
      * The section and sliding surface of the model of @p parameters, or an
      * empty @p why_not saying why there is none; @p notes receives what of
      * the FE model it leaves out. Throws (naming the entry) if the surface
-     * leaves the model.
+     * leaves the model, unless @p check_surface is false (the surface
+     * search, whose circles are checked one by one).
      */
     bool
     model_section(const parameters::Parameters &parameters,
                   limit_equilibrium::Section   &section,
                   limit_equilibrium::Surface   &surface,
                   std::string                  &why_not,
-                  std::vector<std::string>     &notes);
+                  std::vector<std::string>     &notes,
+                  const bool                    check_surface = true);
+
+    /**
+     * Throws "Geometry/Slope: the sliding surface leaves the model ..." if
+     * @p surface does not cut the ground of @p section, or has an end
+     * beyond the ground's x range or a point below @p base_elevation.
+     */
+    void
+    check_surface_in_model(const limit_equilibrium::Section &section,
+                           const limit_equilibrium::Surface &surface,
+                           const double                      base_elevation);
 
     /** Every method of @p settings on one section and surface. */
     LimitEquilibriumResults

@@ -6,6 +6,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <string>
 #include <vector>
 
 namespace fdem
@@ -36,5 +37,14 @@ namespace fdem
       /** Absolute tolerance of the roots in K (lambda: ten times it). */
       double tolerance = 1e-14;
     };
+
+    /** The methods' names in .prm files joined by '|' (a Patterns::Selection).
+     */
+    std::string
+    method_name_selection();
+
+    /** The method called @p name in .prm files ("Bishop", "Spencer", ...). */
+    limit_equilibrium::Method
+    method_from_name(const std::string &name);
   } // namespace analyses
 } // namespace fdem

@@ -5,6 +5,7 @@
 #include <fdem/analyses/limit_equilibrium_parameters.h>
 #include <fdem/analyses/yield_acceleration_parameters.h>
 #include <fdem/analyses/probabilistic_parameters.h>
+#include <fdem/analyses/surface_search_parameters.h>
 #include <fdem/parameters/geometry_parameters.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -50,6 +51,8 @@ namespace fdem
       analyses::YieldAccelerationParameters yield_acceleration;
       /** The probabilistic safety factor (Monte Carlo on the soil strengths). */
       analyses::ProbabilisticParameters probabilistic;
+      /** The search for the critical circle (analyses/surface_search.h). */
+      analyses::SurfaceSearchParameters surface_search;
 
       std::vector<std::string>                   block_names;
       /** Names of the material regions (Materials/Names). */

@@ -68,6 +68,13 @@ namespace fdem
     probabilistic_lines(const nlohmann::json &summary);
 
     /**
+     * The critical surface of summary.json's "surface_search" in two lines
+     * (empty without a search): the circle and how it was chosen.
+     */
+    std::vector<std::string>
+    surface_search_lines(const nlohmann::json &summary);
+
+    /**
      * The block an engineer reads first, ending the default screen and the
      * log file: K to 3 decimals (and once in full), its certificate in
      * words, the comparison values, the stiffness check, the warnings that

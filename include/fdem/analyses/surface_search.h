@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/analyses/limit_equilibrium.h>
+#include <fdem/analyses/surface_search_parameters.h>
+#include <fdem/parameters/parameters.h>
+
+#include <deal.II/base/point.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <limits>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    /**
+     * One circle the search looked at: where it came from, its screening
+     * factor and, where the contact method evaluated it, its contact K.
+     */
+    struct SearchedSurface
+    {
+      /** "grid", "refinement", "contact" or "contact refinement". */
+      std::string      stage;
+      dealii::Point<2> centre;
+      double           radius = 0;
+      /** Whether it is a valid sliding surface with a screening factor. */
+      bool valid = false;
+      /** The screening method's factor (NaN if none). */
+      double le_K = std::numeric_limits<double>::quiet_NaN();
+      /** The contact K on the screening mesh (NaN if not evaluated or none). */
+      double contact_K = std::numeric_limits<double>::quiet_NaN();
+      /** Whether the contact K is certified (safety-factor certificate). */
+      bool certified = false;
+      /** "valid", why it was skipped, or the contact evaluation's outcome. */
+      std::string status;
+      /** Wall time of the contact evaluation (s; 0 if none). */
+      double contact_seconds = 0;
+    };
+
+    /** What the search did and found (summary.json's "surface_search"). */
+    struct SurfaceSearchResult
+    {
+      bool performed = false;
+      /** Every surface evaluated, in order. */
+      std::vector<SearchedSurface> surfaces;
+      /** Index into surfaces of the critical circle. */
+      unsigned int critical = 0;
+      /** "contact K" or the screening method's key: what chose it. */
+      std::string chosen_by;
+      /** Index of the screening minimum (grid and refinement). */
+      unsigned int le_minimum = 0;
+      /** The circle of Geometry/Slope that the search replaced. */
+      dealii::Point<2> given_centre;
+      double           given_radius = 0;
+      unsigned int     n_grid = 0, n_valid = 0, n_refinement = 0, n_contact = 0;
+      /** Skipped grid circles by reason. */
+      std::map<std::string, unsigned int> n_skipped;
+      double seconds_screening = 0, seconds_refinement = 0, seconds_contact = 0;
+      std::string method_key;
+      double      screening_mesh_size = 0;
+      /**
+       * Whether the screening minimum lies on the edge of the search region
+       * (grid rectangle, tangent range): the minimum may lie beyond it.
+       */
+      bool on_grid_edge = false;
+      /** The search's settings (for the summary). */
+      SurfaceSearchParameters settings;
+    };
+
+    /**
+     * The screening of one circle on @p section: whether it is a sliding
+     * surface of the model (it cuts the ground, its ends within the
+     * ground's x range, above @p base_elevation, its centre above the
+     * ground it cuts, at least Minimum depth deep) and, if so, the factor of
+     * the screening method of @p settings.
+     */
+    SearchedSurface
+    screen_circle(const limit_equilibrium::Section &section,
+                  const double                      base_elevation,
+                  const dealii::Point<2>           &centre,
+                  const double                      radius,
+                  const SurfaceSearchParameters    &settings);
+
+    /**
+     * Whether the circle (x_c, y_c, R) lies in the search region of
+     * @p settings: its centre in the grid's rectangle and, by tangent
+     * elevations, its lowest point between the lowest and highest tangent.
+     * The refinements stay inside it.
+     */
+    bool
+    inside_search_region(const SurfaceSearchParameters &settings,
+                         const std::array<double, 3>   &circle);
+
+    /** Whether the circle lies on the edge of the search region. */
+    bool
+    on_search_region_edge(const SurfaceSearchParameters &settings,
+                          const std::array<double, 3>   &circle);
+
+    /**
+     * The limit-equilibrium part of the search, no model needed: the grid
+     * of @p settings, then a pattern search around its minimum. Throws a
+     * one-sentence error naming the entry when the grid gives no valid
+     * surface or lies outside the model.
+     */
+    SurfaceSearchResult
+    screen_surfaces(const limit_equilibrium::Section &section,
+                    const double                      base_elevation,
+                    const SurfaceSearchParameters    &settings);
+
+    /**
+     * The whole search on the model of @p parameters (slope generator,
+     * circular surface): the screening, then up to Maximum contact
+     * evaluations models solved by the contact method (each its own mesh,
+     * no output files) in @p scratch, a folder it makes and removes. Sets
+     * @p parameters' circle to the critical one. One line per stage and per
+     * contact evaluation on @p brief.
+     */
+    SurfaceSearchResult
+    search_critical_surface(parameters::Parameters &parameters,
+                            const std::string      &scratch,
+                            std::ostream           &brief);
+
+    /**
+     * summary.json's "surface_search", with the critical circle's factors
+     * by every method taken from the run's own @p summary (which describes
+     * the critical circle at the model's mesh size).
+     */
+    nlohmann::json
+    to_json(const SurfaceSearchResult &result, const nlohmann::json &summary);
+
+    /**
+     * After the run on the critical circle: search.csv and
+     * critical_surface.prm in @p directory, and "surface_search" added to
+     * @p summary and to its summary.json there.
+     */
+    void
+    write_surface_search(const SurfaceSearchResult &result,
+                         const std::string         &directory,
+                         nlohmann::json            &summary);
+  } // namespace analyses
+} // namespace fdem

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+//
+// What the surface search leaves in the results folder: search.csv (every
+// circle), critical_surface.prm (the entries to rerun the critical circle)
+// and summary.json's "surface_search".
+#include <fdem/analyses/surface_search.h>
+#include <fdem/postprocess/output_files.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    namespace
+    {
+      nlohmann::json
+      number_or_null(const double value)
+      {
+        return std::isfinite(value) ? nlohmann::json(value) :
+                                      nlohmann::json(nullptr);
+      }
+
+      nlohmann::json
+      circle_json(const SearchedSurface &s)
+      {
+        return {{"centre", {s.centre[0], s.centre[1]}},
+                {"radius", s.radius},
+                {"stage", s.stage},
+                {"le_K", number_or_null(s.le_K)},
+                {"contact_K", number_or_null(s.contact_K)},
+                {"status", s.status}};
+      }
+    } // namespace
+
+    nlohmann::json
+    to_json(const SurfaceSearchResult &result, const nlohmann::json &summary)
+    {
+      const SurfaceSearchParameters &s    = result.settings;
+      nlohmann::json                 grid = {
+                        {"lower_left", {s.grid_lower[0], s.grid_lower[1]}},
+                        {"upper_right", {s.grid_upper[0], s.grid_upper[1]}},
+                        {"n_x", s.n_x},
+                        {"n_y", s.n_y},
+                        {"radii",
+         s.radii == SurfaceSearchParameters::Radii::through_point ?
+                           "through point" :
+                           "tangent elevations"}};
+      if (s.radii == SurfaceSearchParameters::Radii::through_point)
+        grid["point"] = {s.point[0], s.point[1]};
+      else
+        grid["tangent_elevations"] = s.tangent_elevations;
+
+      nlohmann::json critical = circle_json(result.surfaces[result.critical]);
+      critical["chosen_by"]   = result.chosen_by;
+      critical["screening_mesh_size"] = result.screening_mesh_size;
+      // The run itself is on the critical circle at the model's mesh size:
+      // its K, certificate and limit-equilibrium factors are the circle's.
+      critical["K"]         = summary.contains("safety_factor") ?
+                                summary["safety_factor"] :
+                                nlohmann::json(nullptr);
+      critical["certified"] = summary.contains("certificate") &&
+                              summary["certificate"].value("holds", false);
+      nlohmann::json by_method = nlohmann::json::object();
+      if (summary.contains("limit_equilibrium") &&
+          summary["limit_equilibrium"].contains("methods"))
+        for (const auto &[method, value] :
+             summary["limit_equilibrium"]["methods"].items())
+          by_method[method] =
+            value.contains("K") ? value["K"] : nlohmann::json(nullptr);
+      critical["limit_equilibrium"] = by_method;
+
+      nlohmann::json skipped = nlohmann::json::object();
+      for (const auto &[why, n] : result.n_skipped)
+        skipped[why] = n;
+      unsigned int n_certified = 0;
+      for (const auto &surface : result.surfaces)
+        n_certified += surface.certified;
+      return {{"method", result.method_key},
+              {"n_slices", s.n_slices},
+              {"grid", grid},
+              {"given_circle",
+               {{"centre", {result.given_centre[0], result.given_centre[1]}},
+                {"radius", result.given_radius}}},
+              {"critical", critical},
+              {"minimum_on_grid_edge", result.on_grid_edge},
+              {"screening_minimum",
+               circle_json(result.surfaces[result.le_minimum])},
+              {"counts",
+               {{"grid", result.n_grid},
+                {"valid", result.n_valid},
+                {"skipped", skipped},
+                {"refinement", result.n_refinement},
+                {"contact_evaluations", result.n_contact},
+                {"contact_certified", n_certified},
+                {"maximum_contact_evaluations", s.max_contact_evaluations}}},
+              {"timings",
+               {{"screening", result.seconds_screening},
+                {"refinement", result.seconds_refinement},
+                {"contact_evaluations", result.seconds_contact}}},
+              {"files", {"search.csv", "critical_surface.prm"}}};
+    }
+
+    void
+    write_surface_search(const SurfaceSearchResult &result,
+                         const std::string         &directory,
+                         nlohmann::json            &summary)
+    {
+      summary["surface_search"] = to_json(result, summary);
+      postprocess::write_json(directory + "/summary.json", summary);
+
+      std::ofstream csv(directory + "/search.csv");
+      csv << std::setprecision(12);
+      csv
+        << "stage,centre_x,centre_y,radius,le_K,contact_K,certified,status,contact_seconds\n";
+      const auto cell = [](const double x) {
+        std::ostringstream text;
+        if (std::isfinite(x))
+          text << std::setprecision(12) << x;
+        return text.str();
+      };
+      for (const auto &s : result.surfaces)
+        csv << s.stage << "," << s.centre[0] << "," << s.centre[1] << ","
+            << s.radius << "," << cell(s.le_K) << "," << cell(s.contact_K)
+            << "," << (s.certified ? 1 : 0) << ",\"" << s.status << "\","
+            << s.contact_seconds << "\n";
+
+      const SearchedSurface &c = result.surfaces[result.critical];
+      std::ofstream          prm(directory + "/critical_surface.prm");
+      prm << std::setprecision(12);
+      prm
+        << "# The critical circle of the surface search (search.csv; chosen by the "
+        << result.chosen_by << ").\n"
+        << "# Paste into the case's .prm file, with Surface search/Enabled = false, to\n"
+        << "# rerun it.\n"
+        << "subsection Geometry\n"
+        << "  subsection Slope\n"
+        << "    set Sliding surface = circular\n"
+        << "    set Circle centre   = " << c.centre[0] << ", " << c.centre[1]
+        << "\n"
+        << "    set Circle radius   = " << c.radius << "\n"
+        << "  end\n"
+        << "end\n";
+    }
+  } // namespace analyses
+} // namespace fdem
