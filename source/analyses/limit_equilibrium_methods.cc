@@ -263,10 +263,12 @@ namespace fdem
                 const double sa = s.sin_alpha, ca = s.cos_alpha;
                 const double m     = ca + sa * s.tan_phi / K;
                 const double width = s.l * ca;
-                resisting += (s.c * width + (s.W - s.V - s.U * ca) * s.tan_phi) / m;
+                resisting +=
+                  (s.c * width + (s.W - s.V - s.U * ca) * s.tan_phi) / m;
                 // The weight's moment about the centre, for a mass moving
                 // left, and the seismic force's (Q to the left at yg).
-                driving += (s.W - s.V) * (s.xg - mass.centre[0]) + s.Q * (mass.centre[1] - s.yg);
+                driving += (s.W - s.V) * (s.xg - mass.centre[0]) +
+                           s.Q * (mass.centre[1] - s.yg);
               }
             driving +=
               mass.crack_force * (mass.centre[1] - mass.crack_point[1]);

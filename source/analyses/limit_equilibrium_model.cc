@@ -145,8 +145,8 @@ namespace fdem
       section.seismic_on_pore_water = p.loads.seismic_on_pore_water;
       if (!p.loads.seismic_direction.empty())
         section.kh_direction = p.loads.seismic_direction[0] > 0 ? 1 : -1;
-      section.piezometric       = points(p.water.piezometric_line);
-      section.ground            = slope.ground_surface;
+      section.piezometric = points(p.water.piezometric_line);
+      section.ground      = slope.ground_surface;
 
       const auto strength = [&](le::SoilLayer                        &layer,
                                 const parameters::MaterialParameters &m) {

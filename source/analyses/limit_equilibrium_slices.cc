@@ -367,20 +367,23 @@ namespace fdem
           // The seismic weight W' per unit width at a and b and its first
           // moment about y = 0: the column stacked from its base up, each
           // layer wet below the piezometric line, dry above (column()).
-          const auto seismic_weight = [&mass](const Column &c, double &w, double &m) {
-            w = m = 0;
-            double y = c.y_base;
-            for (int k = int(mass.layers.size()) - 1; k >= 0; --k)
-              {
-                const SoilLayer &layer = mass.layers[k];
-                const double     dry = c.parts[k].first, wet = c.parts[k].second;
-                const double     wet_weight =
-                  mass.seismic_on_pore_water ? layer.saturated_unit_weight : layer.unit_weight;
-                w += wet_weight * wet + layer.unit_weight * dry;
-                m += wet_weight * wet * (y + wet / 2) + layer.unit_weight * dry * (y + wet + dry / 2);
-                y += wet + dry;
-              }
-          };
+          const auto seismic_weight =
+            [&mass](const Column &c, double &w, double &m) {
+              w = m    = 0;
+              double y = c.y_base;
+              for (int k = int(mass.layers.size()) - 1; k >= 0; --k)
+                {
+                  const SoilLayer &layer = mass.layers[k];
+                  const double dry = c.parts[k].first, wet = c.parts[k].second;
+                  const double wet_weight = mass.seismic_on_pore_water ?
+                                              layer.saturated_unit_weight :
+                                              layer.unit_weight;
+                  w += wet_weight * wet + layer.unit_weight * dry;
+                  m += wet_weight * wet * (y + wet / 2) +
+                       layer.unit_weight * dry * (y + wet + dry / 2);
+                  y += wet + dry;
+                }
+            };
           if (mass.kh != 0 || mass.kv != 0)
             {
               double w_a, m_a, w_b, m_b;
@@ -388,7 +391,8 @@ namespace fdem
               seismic_weight(cb, w_b, m_b);
               // The trapezoidal rule for int m dx / int w dx.
               const double W_seismic = 0.5 * (w_a + w_b) * (b - a);
-              s.yg = w_a + w_b > 0 ? (m_a + m_b) / (w_a + w_b) : 0.5 * (ca.y_base + cb.y_base);
+              s.yg = w_a + w_b > 0 ? (m_a + m_b) / (w_a + w_b) :
+                                     0.5 * (ca.y_base + cb.y_base);
               s.Q  = mass.kh * W_seismic;
               s.V  = mass.kv * W_seismic;
             }

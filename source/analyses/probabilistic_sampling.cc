@@ -139,8 +139,10 @@ namespace fdem
       double
       uniform_open(const std::uint64_t word)
       {
-        // The 53 high bits and a half: never 0, never 1.
-        return (double(word >> 11) + 0.5) * (1.0 / 9007199254740992.0);
+        // The 52 high bits and a half: never 0, never 1. (With 53 bits the
+        // largest value, 1 - 2^-54, rounds to 1.0, whose normal is
+        // infinite.)
+        return (double(word >> 12) + 0.5) * (1.0 / 4503599627370496.0);
       }
 
       double

@@ -93,7 +93,8 @@ namespace fdem
           double m_alpha = std::numeric_limits<double>::infinity();
           for (const le::Slice &slice : mass.slices)
             m_alpha = std::min(m_alpha,
-                               slice.cos_alpha + slice.sin_alpha * slice.tan_phi / s.le_K);
+                               slice.cos_alpha +
+                                 slice.sin_alpha * slice.tan_phi / s.le_K);
           if (m_alpha < 0.2)
             {
               s.status = "m_alpha below 0.2";

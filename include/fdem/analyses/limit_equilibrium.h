@@ -64,7 +64,8 @@ namespace fdem
          */
         double kh = 0, kv = 0;
         bool   seismic_on_pore_water = false;
-        /** 0: kh towards the free face; +1 or -1: a positive kh along +x or -x. */
+        /** 0: kh towards the free face; +1 or -1: a positive kh along +x or -x.
+         */
         int kh_direction = 0;
       };
 
