@@ -102,6 +102,14 @@ namespace fdem
           return text.str();
         }
 
+        /** Whether the last K evaluated was certified (not "no static
+         * solution"). */
+        bool
+        last_certified() const
+        {
+          return !result.curve.empty() && result.curve.back().certified;
+        }
+
       private:
         Model<dim>                        &model;
         const SeismicLoad<dim>             load;
@@ -154,6 +162,17 @@ namespace fdem
             low = high = b;
             return b;
           }
+        // K = 0 at b stands for "no static solution at any K": between a
+        // and b, K(kh) may jump rather than pass through 1, and a root
+        // search would return the jump as k_y. k_y is reported only when
+        // bracketed by two certified K.
+        if (!K_of.last_certified())
+          throw SearchStopped{
+            "K(kh) does not pass through 1 between two certified values: "
+            "K = " +
+            KOfKh<dim>::number(K_a) + " at kh = " + KOfKh<dim>::number(a) +
+            ", no static solution at any K at kh = " + KOfKh<dim>::number(b) +
+            "; no yield acceleration is reported"};
         // Brent's method (scipy.optimize.brentq's algorithm) on K - 1, which
         // changes sign in [a, b]; K is continuous in kh (a linear load).
         const double root = limit_equilibrium::find_root(
@@ -161,6 +180,20 @@ namespace fdem
           a,
           b,
           parameters.tolerance);
+        // Brent finds a sign change, which a jump gives too: where the
+        // contact problem loses its static solution at every K (K counted
+        // as 0) before K reaches 1, the "root" is the jump, not k_y. K at
+        // the root must be 1 to the root's accuracy (|dK/dkh| times the
+        // tolerance, a few 1e-6 on the slopes tested; a jump leaves 1).
+        const double K_root = K_of(root);
+        if (!(std::abs(K_root - 1) <= 1e-3))
+          throw SearchStopped{
+            "K(kh) does not pass through 1 between kh = " +
+            KOfKh<dim>::number(a) + " and " + KOfKh<dim>::number(b) +
+            ": K = " + KOfKh<dim>::number(K_root) +
+            " at kh = " + KOfKh<dim>::number(root) +
+            " (the contact problem has no static solution at any K beyond "
+            "it); no yield acceleration is reported"};
         low  = a;
         high = b;
         return root;
