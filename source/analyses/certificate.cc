@@ -22,12 +22,30 @@ namespace fdem
         return text.str();
       }
 
-      /** The last solved step at exactly @p K, or nullptr. */
+      /**
+       * A step that bounds the safety factor from above: a solve without a
+       * static solution, or a state with every pair in contact slipping
+       * (degenerate: K* = K at any K).
+       */
+      bool
+      bounds_from_above(const Step &step)
+      {
+        return !step.solution.has_factor() || step.solution.degenerate;
+      }
+
+      /** A step that is a limit state: a mechanism, or every pair slipping. */
+      bool
+      limit_state(const Step &step)
+      {
+        return step.solution.mechanism || step.solution.degenerate;
+      }
+
+      /** The last step at exactly @p K that bounds from above (or not), or nullptr. */
       const Step *
-      step_at(const std::vector<Step> &steps, const double K, const bool solved)
+      step_at(const std::vector<Step> &steps, const double K, const bool from_above)
       {
         for (auto step = steps.rbegin(); step != steps.rend(); ++step)
-          if (step->K == K && step->solution.has_factor() == solved)
+          if (step->K == K && bounds_from_above(*step) == from_above)
             return &*step;
         return nullptr;
       }
@@ -66,7 +84,14 @@ namespace fdem
         c.relative_difference    = std::abs(c.K_star - c.K) / c.K;
         c.relative_distance_left = solved.distance_left / c.K;
         const bool agrees        = c.relative_difference <= tolerance;
-        c.holds                  = agrees && c.relative_distance_left <= tolerance;
+        c.holds = agrees && c.relative_distance_left <= tolerance && !solved.solution.degenerate;
+        if (solved.solution.degenerate)
+          {
+            c.reason = factors(solved) + ": every pair in contact slips, so K* = K at any K "
+                                         "where this state is static; it bounds K from above "
+                                         "and certifies nothing";
+            return c;
+          }
         std::ostringstream numbers;
         numbers.precision(3);
         numbers << " (relative difference " << c.relative_difference
@@ -90,7 +115,9 @@ namespace fdem
         c.K_star              = solved.K_star;
         c.relative_difference = std::abs(c.K_star - c.K) / c.K;
         c.K_failed            = failed.K;
-        c.failure             = failed.solution.result;
+        c.failure             = failed.solution.degenerate ?
+                                  "every pair in contact slips, a limit state" :
+                                  failed.solution.result;
         const bool agrees     = c.relative_difference <= tolerance;
         const double width    = (c.K_failed - c.K) / c.K;
         // K* above K_lo, by a little: the blocks have strength to spare by
@@ -100,13 +127,15 @@ namespace fdem
         // conservative answer.
         c.conservative = (!agrees || width > tolerance) && c.K_star >= c.K &&
                          c.relative_difference <= agreement && width <= agreement;
-        c.holds = (agrees || c.conservative) && failed.solution.mechanism;
+        c.holds = (agrees || c.conservative) && limit_state(failed);
         std::ostringstream numbers;
         numbers.precision(9);
-        numbers << " and no static solution at K = " << c.K_failed << " (" << c.failure << ")";
+        numbers << (failed.solution.degenerate ? " and a limit state at K = " :
+                                                 " and no static solution at K = ")
+                << c.K_failed << " (" << c.failure << ")";
         if (!agrees && !c.conservative)
           c.reason = factors(solved) + ", the largest K with a static solution" + why_not_closed;
-        else if (!failed.solution.mechanism)
+        else if (!limit_state(failed))
           c.reason = "the solve at K = " + std::to_string(c.K_failed) + " above " +
                      factors(solved) + " failed numerically (" + c.failure +
                      "), not as a mechanism";
@@ -141,17 +170,17 @@ namespace fdem
         }
       if (bracketed)
         {
-          const Step *solved = step_at(result.steps, result.bracket_low, true);
-          const Step *failed = step_at(result.steps, result.bracket_high, false);
+          const Step *solved = step_at(result.steps, result.bracket_low, false);
+          const Step *failed = step_at(result.steps, result.bracket_high, true);
           Assert(solved != nullptr && failed != nullptr, dealii::ExcInternalError());
           // A numerical failure just above K_lo bounds nothing: the smallest
           // K above it whose solve failed as a mechanism does.
           const Step *mechanism = nullptr;
           for (const Step &step : result.steps)
-            if (step.solution.mechanism && step.K > solved->K &&
+            if (limit_state(step) && step.K > solved->K &&
                 (mechanism == nullptr || step.K < mechanism->K))
               mechanism = &step;
-          if (!failed->solution.mechanism && mechanism != nullptr)
+          if (!limit_state(*failed) && mechanism != nullptr)
             {
               const Certificate c = bracket(*solved, *mechanism, tolerance, bracket_agreement);
               if (c.holds)

@@ -75,7 +75,8 @@ namespace fdem
           std::ostringstream warning;
           const Certificate &c = result.certificate;
           warning << "the limit lies between the last static state, K = " << std::setprecision(9)
-                  << c.K << " (its K* = " << c.K_star << "), and a mechanism at K = " << c.K_failed
+                  << c.K << " (its K* = " << c.K_star << "), and a limit state at K = " << c.K_failed
+                  << " (" << c.failure << ")"
                   << ", further apart than the tolerance: equilibrium is lost before K reaches "
                      "K* (e.g. a plane lifting off) or solves between failed numerically; K is "
                      "the conservative value";

@@ -87,7 +87,8 @@ namespace fdem
         if (s.has_factor())
           log << " K* = " << std::left << std::setw(11) << std::setprecision(8) << step.K_star
               << std::right << " " << s.n_stick << " stick, " << s.n_slip << " slip, " << s.n_open
-              << " open" << std::endl;
+              << " open" << (s.degenerate ? " (all slipping: K* = K at any K, a bound)" : "")
+              << std::endl;
         else
           log << " no static solution" << (s.mechanism ? ": a mechanism" : " (" + s.result + ")")
               << std::endl;
@@ -110,7 +111,18 @@ namespace fdem
         {
           Step step{K, nan, nan, nan, solve(K)}; // eqs. (10)-(11)
           const ReducedStrengthSolution &s = step.solution;
-          if (s.has_factor())
+          if (s.has_factor() && s.degenerate)
+            {
+              // Every pair in contact slips: K* = K whatever K is, which only
+              // says that the reduced strength is used up. The limit lies at
+              // or below K; go back to K* of the last informative step.
+              step.K_star = K * s.resisting_force / s.sliding_force; // eq. (12)
+              K_high      = std::min(K_high, K);
+              step.K_next = previous != nullptr && previous->K_star < K_high ? previous->K_star :
+                            std::isnan(K_low)                                ? 0.5 * K :
+                                                                               0.5 * (K_low + K_high);
+            }
+          else if (s.has_factor())
             {
               step.K_star        = K * s.resisting_force / s.sliding_force; // eq. (12)
               K_low              = std::isnan(K_low) ? K : std::max(K_low, K);
@@ -131,14 +143,15 @@ namespace fdem
               break;
             }
           // Eq. (13): K* reproduces K, and the distance still to go is as small.
-          if (s.has_factor() && std::abs(step.K_star - K) <= tolerance * step.K_star &&
+          if (s.has_factor() && !s.degenerate && std::abs(step.K_star - K) <= tolerance * step.K_star &&
               step.distance_left <= tolerance * step.K_star)
             {
               result.reason = "fixed point: K* reproduces K";
               break;
             }
           // A planar limit: K* is the answer, shown by one solve just below it.
-          if (s.has_factor() && independent_of_K(step, previous, K_high, tolerance))
+          if (s.has_factor() && !s.degenerate &&
+              independent_of_K(step, previous, K_high, tolerance))
             {
               result.steps.back().K_next = step.K_star * (1 - 0.25 * tolerance);
               log << "  K* is independent of K (a planar limit): solving just below it" << std::endl;
@@ -156,7 +169,7 @@ namespace fdem
                             [](const Step &s) { return s.solution.mechanism; });
               break;
             }
-          if (s.has_factor())
+          if (s.has_factor() && !s.degenerate)
             {
               previous      = &result.steps.back();
               previous_step = std::abs(result.steps.back().K_next - K);

@@ -38,6 +38,11 @@ namespace fdem
           s.resisting_force += reduced_strengths[p].shear_capacity(outcome.solution.forces[dim * p]);
         }
       s.sliding_force = dim == 2 ? std::abs(sum_f_t) : sum_tangential.norm();
+      // The slip rows fix each |f_t| at its reduced strength exactly, so
+      // F_tau = F_R holds to round-off of the solve (1e-13 measured);
+      // 1e-10 leaves room and is far below any Safety factor/Tolerance.
+      s.degenerate = s.converged && s.n_stick == 0 && s.n_slip > 0 &&
+                     s.sliding_force >= (1 - 1e-10) * s.resisting_force;
       return s;
     }
 

@@ -73,9 +73,14 @@ namespace fdem
                       "within " + digits(difference, 2) + " relative") +
                    tolerance;
           }
+        // Above the bracket: a solve without a static solution, or a state
+        // with every pair slipping (K* = K at any K, a limit state).
+        const bool all_slipping =
+          c.value("failure", std::string()).rfind("every pair", 0) == 0;
         const std::string bracket =
           "static at K = " + digits(number(c, "K"), 8) +
-          ", a mechanism (no static solution) at K = " +
+          (all_slipping ? ", every pair slipping at K = " :
+                          ", a mechanism (no static solution) at K = ") +
           digits(number(c, "K_failed"), 8);
         if (c.value("conservative", false))
           return "certified as a conservative value: " + bracket +

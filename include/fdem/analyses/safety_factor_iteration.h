@@ -40,6 +40,15 @@ namespace fdem
       /** F_tau: sliding force along the sliding direction (eq. 11). */
       double sliding_force = 0;
       unsigned int n_stick = 0, n_slip = 0, n_open = 0;
+      /**
+       * Every pair in contact on the sliding surface slips, and their shear
+       * forces add up (F_tau = F_R to round-off): eq. (12) then gives K* = K
+       * at any K where this state is static, so the step says nothing about
+       * the distance to the limit. Such a state bounds the safety factor
+       * from above in the iteration; it never certifies it (doc/theory.md,
+       * "Degenerate states").
+       */
+      bool degenerate = false;
 
       /** Solved, with a sliding force: K* is defined. */
       bool
