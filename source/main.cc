@@ -10,7 +10,6 @@
 
 #include <iostream>
 #include <new>
-#include <regex>
 #include <string>
 
 namespace
@@ -32,27 +31,6 @@ namespace
     "  --validate          read and check case.prm and the model's layout\n"
     "                      (mesh, blocks, node pairs), then stop\n"
     "  --help              this text\n";
-
-  /**
-   * The reason of an error on one line: deal.II's exception text has the
-   * file, line and condition of the check around the message; a user needs
-   * only the message.
-   */
-  std::string
-  one_line(const std::exception &error)
-  {
-    std::string text = error.what();
-    const std::string marker = "Additional information:";
-    const auto        start  = text.find(marker);
-    if (start != std::string::npos)
-      text = text.substr(start + marker.size());
-    const auto end = text.find("Stacktrace:");
-    if (end != std::string::npos)
-      text = text.substr(0, end);
-    text = std::regex_replace(text, std::regex("-{10,}"), " ");
-    text = std::regex_replace(text, std::regex("\\s+"), " ");
-    return std::regex_replace(text, std::regex("^ | $"), "");
-  }
 } // namespace
 
 int
@@ -175,7 +153,7 @@ main(int argc, char *argv[])
   catch (const std::exception &error)
     {
       if (host)
-        std::cerr << "fdem-slope: error: " << one_line(error) << std::endl;
+        std::cerr << "fdem-slope: error: " << fdem::postprocess::one_line(error) << std::endl;
       return 1;
     }
   catch (...)

@@ -40,6 +40,20 @@ namespace fdem
       return parameters;
     }
 
+    /** A model up to its mixed system (blocks factorised, C computed), not solved. */
+    template <int dim>
+    std::unique_ptr<Model<dim>>
+    factorised_model(const parameters::Parameters &parameters, std::ostream &log)
+    {
+      auto model = std::make_unique<Model<dim>>(parameters, "", log);
+      model->make_geometry();
+      model->setup_blocks();
+      model->assemble_and_factorize();
+      model->build_interfaces();
+      model->compute_flexibility();
+      return model;
+    }
+
     /** A model taken through every step of run() up to the contact solve. */
     template <int dim>
     std::unique_ptr<Model<dim>>

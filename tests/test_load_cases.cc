@@ -17,20 +17,6 @@ namespace
 {
   constexpr double PI = numbers::PI;
 
-  /** A model up to its mixed system, not solved. */
-  template <int dim>
-  std::unique_ptr<Model<dim>>
-  factorised_model(const parameters::Parameters &parameters, std::ostream &log)
-  {
-    auto model = std::make_unique<Model<dim>>(parameters, "", log);
-    model->make_geometry();
-    model->setup_blocks();
-    model->assemble_and_factorize();
-    model->build_interfaces();
-    model->compute_flexibility();
-    return model;
-  }
-
   double
   relative_difference(const Vector<double> &a, const Vector<double> &b)
   {
@@ -45,9 +31,8 @@ TEST(LoadCases, DefaultCombinationIsTheAssembledLoadBitForBit)
   // Adding cases and setting (1, {}) or (1, {0, 0}) must leave g_bar and
   // omega^T F exactly as assembled: the verified results cannot move.
   std::ostringstream log;
-  auto               model =
-    factorised_model<2>(test_support::case_parameters("inclined_block.prm"),
-                        log);
+  auto               model = test_support::factorised_model<2>(
+    test_support::case_parameters("inclined_block.prm"), log);
   const Vector<double> gap   = model->mixed_system->external_gap;
   const Vector<double> rigid = model->mixed_system->rigid_loads;
   const auto           cases = model->body_force_cases(false);
@@ -68,7 +53,8 @@ TEST(LoadCases, GravityIsTheCombinationOfTheBodyForceCases)
     {
       std::ostringstream log;
       auto               model =
-        factorised_model<2>(test_support::case_parameters(name), log);
+        test_support::factorised_model<2>(test_support::case_parameters(name),
+                                          log);
       const auto          gap   = model->mixed_system->external_gap;
       const auto          rigid = model->mixed_system->rigid_loads;
       const auto          load  = model->blocks[0]->load_vector;
@@ -98,8 +84,8 @@ TEST(LoadCases, UnitWeightFactorOnTheInclinedBlock)
   auto parameters = test_support::case_parameters("inclined_block.prm");
   parameters.interfaces.at("sliding surface").tensile_strength = 1e3;
   std::ostringstream log;
-  auto               model    = factorised_model<2>(parameters, log);
-  const auto         cases    = model->body_force_cases(true);
+  auto               model = test_support::factorised_model<2>(parameters, log);
+  const auto         cases = model->body_force_cases(true);
   const auto        &geometry = parameters.geometry.inclined_block;
   const double theta = geometry.inclination * PI / 180, phi = 35 * PI / 180,
                c = 10;

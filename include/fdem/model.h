@@ -181,6 +181,21 @@ namespace fdem
     void
     restore_last_static_state();
 
+    /** The states the next contact solve starts from (the last static ones), and their K. */
+    std::pair<contact::ContactOutcome<dim>, double>
+    warm_start() const
+    {
+      return {last_converged, last_converged_K};
+    }
+
+    /** The next contact solve starts from @p start (a warm_start() kept before). */
+    void
+    set_warm_start(const std::pair<contact::ContactOutcome<dim>, double> &start)
+    {
+      last_converged   = start.first;
+      last_converged_K = start.second;
+    }
+
     /** The next contact solve starts from the initial states, not the last static ones. */
     void
     forget_warm_start()

@@ -134,12 +134,16 @@ namespace fdem
               contact::solve_contact_problem(
                 *model.mixed_system, reduced, states, control, quiet);
             evaluation.n_status_iterations += outcome.iterations.size();
-            if (outcome.converged())
+            const ReducedStrengthSolution solution =
+              resisting_and_sliding_forces(*model.mixed_system,
+                                           outcome,
+                                           reduced,
+                                           on_sliding_surface);
+            // Not from a state with every pair slipping: it would carry
+            // itself below the limit (SafetyFactorAnalysis::solve()).
+            if (outcome.converged() && !solution.degenerate)
               states = last_states = outcome.states;
-            return resisting_and_sliding_forces(*model.mixed_system,
-                                                outcome,
-                                                reduced,
-                                                on_sliding_surface);
+            return solution;
           };
           // Every sample starts as the deterministic K did: at Safety
           // factor/Initial factor from the initial states. A start near the

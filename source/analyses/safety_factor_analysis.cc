@@ -38,6 +38,7 @@ namespace fdem
       what << "safety factor step: K = " << std::setprecision(8) << K;
       model.progress(what.str());
       const std::vector<contact::PairStrength> strengths = model.pair_strengths(K); // eq. (10)
+      const auto start = model.warm_start();
       model.solve_contact(strengths, K);
       ReducedStrengthSolution solution;
       {
@@ -52,6 +53,12 @@ namespace fdem
         on_solved_step(K, solution.has_factor() ?
                             K * solution.resisting_force / solution.sliding_force : // eq. (12)
                             std::numeric_limits<double>::quiet_NaN());
+      // The statuses are path dependent: started from a state with every
+      // pair slipping, the solve at a lower K tends to find every pair
+      // slipping again, below a K where a state with a sticking pair is
+      // static. So the next solve starts where this one did.
+      if (solution.degenerate)
+        model.set_warm_start(start);
       return solution;
     }
 

@@ -9,6 +9,7 @@
 #include <fdem/analyses/safety_factor_analysis.h>
 #include <fdem/analyses/surface_search.h>
 #include <fdem/model.h>
+#include <fdem/postprocess/run_log.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -18,7 +19,6 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -31,21 +31,6 @@ namespace fdem
 
     namespace
     {
-      /** The message of a deal.II exception on one line. */
-      std::string
-      one_line(const std::exception &error)
-      {
-        std::string       text   = error.what();
-        const std::string marker = "Additional information:";
-        const auto        start  = text.find(marker);
-        if (start != std::string::npos)
-          text = text.substr(start + marker.size());
-        text = text.substr(0, text.find("Stacktrace:"));
-        text = std::regex_replace(text, std::regex("-{10,}"), " ");
-        text = std::regex_replace(text, std::regex("\\s+"), " ");
-        return std::regex_replace(text, std::regex("^ | $"), "");
-      }
-
       std::string
       circle_words(const Point<2> &centre, const double radius)
       {
@@ -107,7 +92,7 @@ namespace fdem
           }
         catch (const std::exception &error)
           {
-            s.status = "failed: " + one_line(error);
+            s.status = "failed: " + postprocess::one_line(error);
           }
         s.contact_seconds = timer.wall_time();
       }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/limit_equilibrium.h>
+#include <fdem/analyses/safety_factor_analysis.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 #include <fdem/analyses/yield_acceleration.h>
 
@@ -39,7 +40,6 @@ namespace fdem
           , parameters(parameters)
           , result(result)
           , n_evaluations(n_evaluations)
-          , on_sliding_surface(model.pairs_on_sliding_surface())
         {}
 
         /** K at @p kh; 0 where no strength holds the mass (no equilibrium at
@@ -60,19 +60,11 @@ namespace fdem
           at.kh               = kh;
           set_seismic_load(model, at);
           std::ostringstream quiet; // the steps go to the log, not the screen
-          const Result       r = iterate(
-            [this](const double K) {
-              const std::vector<contact::PairStrength> strengths =
-                model.pair_strengths(K); // eq. (10)
-              model.solve_contact(strengths, K);
-              return resisting_and_sliding_forces(
-                *model.mixed_system,
-                model.contact_outcome,
-                strengths,
-                on_sliding_surface); // eq. (11)
-            },
-            model.parameters.safety_factor,
-            model.log);
+          SafetyFactorAnalysis<dim> steps(model);
+          const Result              r =
+            iterate([&steps](const double K) { return steps.solve(K); },
+                    model.parameters.safety_factor,
+                    model.log);
           double K = r.safety_factor;
           if (!r.converged)
             {
@@ -116,7 +108,6 @@ namespace fdem
         const YieldAccelerationParameters &parameters;
         YieldAccelerationResult           &result;
         unsigned int                      &n_evaluations;
-        const std::vector<bool>            on_sliding_surface;
         std::map<double, double>           values;
       };
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <iostream>
+#include <regex>
 
 namespace fdem
 {
@@ -91,6 +92,20 @@ namespace fdem
       if (message.empty() || message[0] != '[' || end == std::string::npos)
         return "";
       return message.substr(1, end - 1);
+    }
+
+    std::string
+    one_line(const std::exception &error)
+    {
+      std::string       text   = error.what();
+      const std::string marker = "Additional information:";
+      const auto        start  = text.find(marker);
+      if (start != std::string::npos)
+        text = text.substr(start + marker.size());
+      text = text.substr(0, text.find("Stacktrace:"));
+      text = std::regex_replace(text, std::regex("-{10,}"), " ");
+      text = std::regex_replace(text, std::regex("\\s+"), " ");
+      return std::regex_replace(text, std::regex("^ | $"), "");
     }
   } // namespace postprocess
 } // namespace fdem

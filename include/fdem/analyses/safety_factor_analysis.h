@@ -38,6 +38,14 @@ namespace fdem
       Result
       run();
 
+      /**
+       * One step at K, eqs. (10)-(11): the contact solve at the reduced
+       * strengths, warm-started from the last informative static state,
+       * and F_R, F_tau. Other analyses iterate() on it (yield acceleration).
+       */
+      ReducedStrengthSolution
+      solve(const double K);
+
     private:
       Model<dim> &          model;
       std::function<void(double K, double K_star)> on_solved_step;
@@ -52,10 +60,6 @@ namespace fdem
        */
       StiffnessSensitivity
       stiffness_sensitivity(const Result &base);
-
-      /** Eqs. (10)-(11) at K: the contact solve and F_R, F_tau. */
-      ReducedStrengthSolution
-      solve(const double K);
     };
   } // namespace analyses
 } // namespace fdem

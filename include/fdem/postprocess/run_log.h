@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <exception>
 #include <fstream>
 #include <memory>
 #include <ostream>
@@ -118,5 +119,14 @@ namespace fdem
      * "". */
     std::string
     message_id(const std::string &message);
+
+    /**
+     * The reason of an error on one line: deal.II's exception text has the
+     * file, line and condition of the check around the message; a user
+     * needs only the message (the `fdem-slope: error:` line, a candidate's
+     * status in search.csv).
+     */
+    std::string
+    one_line(const std::exception &error);
   } // namespace postprocess
 } // namespace fdem
