@@ -59,12 +59,7 @@ namespace fdem
     std::unique_ptr<Model<dim>>
     solved_model(const parameters::Parameters &parameters, std::ostream &log)
     {
-      auto model = std::make_unique<Model<dim>>(parameters, "", log);
-      model->make_geometry();
-      model->setup_blocks();
-      model->assemble_and_factorize();
-      model->build_interfaces();
-      model->compute_flexibility();
+      auto model = factorised_model<dim>(parameters, log);
       model->solve_contact();
       model->recover_block_displacements();
       return model;
