@@ -444,3 +444,48 @@ TEST(SafetyFactorIteration, SlowlyCreepingFactorStopsWithinTheToleranceOfItsFixe
   expect_certificate_holds(result, control.tolerance);
   EXPECT_LE(std::abs(result.safety_factor - K_lim), control.tolerance * K_lim) << log.str();
 }
+
+TEST(SafetyFactorIteration, AllSlipStatesBoundFromAboveAndNeverCertify)
+{
+  // Below K_s = 0.9 a state with a sticking pair, K* = K + (0.9 - K)/2;
+  // from 0.9 up a static state with every pair slipping, so K* = K at any
+  // K (what the paper's slope under kh = 0.15 gave at K = 1, after a rigid
+  // slide of 540 m). The first step, at K = 1, is such a state: it must
+  // not certify K = 1; the answer is the limit of the informative steps.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const double                       K_s    = 0.9;
+  const auto                         result = analyses::iterate(
+    [&](const double K) {
+      if (K < K_s)
+        return synthetic_step(K, K + 0.5 * (K_s - K), 10);
+      analyses::ReducedStrengthSolution s = synthetic_step(K, K, 10);
+      s.n_slip                            = 10;
+      s.degenerate                        = true;
+      return s;
+    },
+    control,
+    log);
+  ASSERT_TRUE(result.converged) << log.str() << result.certificate.reason;
+  EXPECT_TRUE(result.steps.front().solution.degenerate);
+  EXPECT_LE(std::abs(result.safety_factor - K_s), control.tolerance * K_s)
+    << log.str();
+  // What the certificate rests on is an informative step.
+  for (const auto &step : result.steps)
+    {
+      if (step.K == result.certificate.K &&
+          step.K_star == result.certificate.K_star)
+        {
+          EXPECT_FALSE(step.solution.degenerate) << log.str();
+        }
+    }
+
+  // An all-slip step alone, its K* = K to the last digit, certifies nothing.
+  analyses::Result alone;
+  alone.steps                   = {result.steps.front()};
+  alone.steps[0].distance_left  = 0;
+  const analyses::Certificate c = analyses::certify(alone, control.tolerance);
+  EXPECT_FALSE(c.holds);
+  EXPECT_NE(c.reason.find("every pair in contact slips"), std::string::npos)
+    << c.reason;
+}
