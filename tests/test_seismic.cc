@@ -193,9 +193,11 @@ TEST(Seismic, YieldAccelerationOfTheBlockOnPlane)
                 << "kh " << point.kh;
             }
         if (c == 0)
-          EXPECT_NEAR(r.k_y,
-                      (1 - kv) * std::tan((phi - 30) * PI / 180),
-                      1e-10 * r.k_y);
+          {
+            EXPECT_NEAR(r.k_y,
+                        (1 - kv) * std::tan((phi - 30) * PI / 180),
+                        1e-10 * r.k_y);
+          }
       }
 }
 
@@ -383,10 +385,8 @@ TEST(PaperSlope, SeismicAgainstLimitEquilibriumAndYieldAcceleration)
   analyses::YieldAccelerationParameters settings;
   settings.tolerance = 1e-6; // K is known to Safety factor/Tolerance 1e-6
   const auto r       = analyses::yield_acceleration(*model, load, settings);
-  // Above kh = 0.1 the first solve (K = 1) finds every pair in contact
-  // slipping after a rigid slide of hundreds of metres: K* = K there at any
-  // K, and the old certificate took it as K = 1 (k_y came out 0.15). Such a
-  // state only bounds K from above (doc/theory.md, "Degenerate states").
+  // (With the all-slip state at kh = 0.15 taken as K = 1, k_y came out
+  // 0.15; doc/theory.md, "Degenerate states".)
   ASSERT_TRUE(r.not_found.empty()) << r.not_found;
   const double bishop_k_y = analyses::limit_equilibrium::find_root(
     [&](const double kh) { return bishop_K(p, kh) - 1; }, 0, 0.5, 1e-12);

@@ -83,8 +83,6 @@ namespace fdem
         c.K_star                 = solved.K_star;
         c.relative_difference    = std::abs(c.K_star - c.K) / c.K;
         c.relative_distance_left = solved.distance_left / c.K;
-        const bool agrees        = c.relative_difference <= tolerance;
-        c.holds = agrees && c.relative_distance_left <= tolerance && !solved.solution.degenerate;
         if (solved.solution.degenerate)
           {
             c.reason = factors(solved) + ": every pair in contact slips, so K* = K at any K "
@@ -92,6 +90,8 @@ namespace fdem
                                          "and certifies nothing";
             return c;
           }
+        const bool agrees = c.relative_difference <= tolerance;
+        c.holds           = agrees && c.relative_distance_left <= tolerance;
         std::ostringstream numbers;
         numbers.precision(3);
         numbers << " (relative difference " << c.relative_difference

@@ -111,12 +111,13 @@ namespace fdem
         {
           Step step{K, nan, nan, nan, solve(K)}; // eqs. (10)-(11)
           const ReducedStrengthSolution &s = step.solution;
+          if (s.has_factor())
+            step.K_star = K * s.resisting_force / s.sliding_force; // eq. (12)
           if (s.has_factor() && s.degenerate)
             {
               // Every pair in contact slips: K* = K whatever K is, which only
               // says that the reduced strength is used up. The limit lies at
               // or below K; go back to K* of the last informative step.
-              step.K_star = K * s.resisting_force / s.sliding_force; // eq. (12)
               K_high      = std::min(K_high, K);
               step.K_next = previous != nullptr && previous->K_star < K_high ? previous->K_star :
                             std::isnan(K_low)                                ? 0.5 * K :
@@ -124,7 +125,6 @@ namespace fdem
             }
           else if (s.has_factor())
             {
-              step.K_star        = K * s.resisting_force / s.sliding_force; // eq. (12)
               K_low              = std::isnan(K_low) ? K : std::max(K_low, K);
               step.K_next        = next_factor(step, previous, K_low, K_high);
               step.distance_left = distance_left(step, previous_step);
