@@ -7,6 +7,7 @@
 #include <fdem/model.h>
 #include <fdem/postprocess/output_files.h>
 
+#include <fdem/analyses/anchors.h>
 #include <fdem/analyses/probabilistic.h>
 #include <fdem/analyses/safety_factor_analysis.h>
 #include <fdem/analyses/seismic.h>
@@ -82,6 +83,8 @@ namespace fdem
     build_interfaces();
     progress("flexibility C of " + std::to_string(n_pairs_of(interfaces)) + " node pairs");
     compute_flexibility();
+    // The anchors' load cases, before the seismic analyses (k_y with them).
+    analyses::add_anchor_loads(*this);
     // The seismic load (and k_y, Newmark) before K: K is then that of the
     // seismic load; without one the load stays the assembled one.
     seismic = analyses::seismic_analyses(*this);
@@ -465,6 +468,8 @@ namespace fdem
   Model<dim>::solve_contact(const std::vector<contact::PairStrength> &strengths,
                             const double                              strength_reduction_factor)
   {
+    if (strength_dependent_loads)
+      strength_dependent_loads(strength_reduction_factor);
     TimerOutput::Scope scope(timer, "contact");
     // Warm start from the last states with a static solution (Sec. 6).
     auto states = last_converged.states.size() == mixed_system->n_pairs() ?
@@ -530,6 +535,8 @@ namespace fdem
   {
     contact_outcome    = outcome;
     strength_reduction = K;
+    if (strength_dependent_loads)
+      strength_dependent_loads(K);
     if (outcome.converged())
       {
         last_converged   = outcome;
@@ -553,6 +560,8 @@ namespace fdem
       {
         contact_outcome    = last_converged;
         strength_reduction = last_converged_K;
+        if (strength_dependent_loads)
+          strength_dependent_loads(last_converged_K);
       }
   }
 
@@ -566,6 +575,7 @@ namespace fdem
     for (const auto &block : blocks)
       block->assemble(parameters.loads);
     build_interfaces();
+    analyses::locate_anchors(*this);
   }
 
   template class Model<2>;

@@ -208,6 +208,8 @@ namespace fdem
                                           nullptr);
     if (seismic.active)
       summary["seismic"] = analyses::to_json(seismic);
+    if (reinforcement_output)
+      summary["reinforcement"] = reinforcement_output();
     if (!probabilistic.is_null())
       summary["probabilistic"] = probabilistic;
     // The only entries that differ between two runs of the same input.

@@ -179,6 +179,59 @@ TEST(LimitEquilibrium, PlaneGivesTheClosedFormForEveryMethod)
                dealii::ExceptionBase);
 }
 
+TEST(LimitEquilibrium, AnchorOnAPlaneGivesTheClosedFormForEveryMethod)
+{
+  // The block of PlaneGivesTheClosedFormForEveryMethod on the plane from
+  // (0, 0) to (30, 10) with an anchor of force T pulling it upslope at theta
+  // below the plane, crossing the plane inside the mass. On one plane the
+  // slices' forces are fixed by the whole mass's force equilibrium, so
+  // every method gives the block's closed form (doc/theory.md, "Anchors"):
+  // unreduced  K = (c L + (W cos b + T sin t) tan phi) / (W sin b - T cos t),
+  // reduced    K = (c L + (W cos b + T sin t) tan phi + T cos t) / (W sin b).
+  const Line     ground = {{-10, 0}, {0, 0}, {20, 10}, {40, 10}};
+  const Point<2> p0(0, 0), p1(30, 10);
+  const double   c = 5, phi = 25, gamma = 20, beta = std::atan2(10., 30.);
+  Line           outline = {p0, p1, Point<2>(30, 10), Point<2>(20, 10)};
+  const double   W = gamma * std::abs(area(outline)), L = p0.distance(p1),
+               t = std::tan(phi * M_PI / 180);
+  for (const auto &[T, theta_deg] :
+       {std::pair{100., 30.}, {250., 60.}, {50., 10.}})
+    for (const bool reduced : {false, true})
+      for (const bool mirror : {false, true})
+        {
+          const double               theta = theta_deg * M_PI / 180;
+          const dealii::Tensor<1, 2> s({std::cos(beta), std::sin(beta)}),
+            n_in({std::sin(beta), -std::cos(beta)});
+          const Point<2> head(15, 6.5);
+          const Point<2> bond =
+            head + 12 * (std::cos(theta) * s + std::sin(theta) * n_in);
+          le::Section section =
+            homogeneous(mirror ? mirrored(ground) : ground, gamma, c, phi);
+          const auto flip = [&](const Point<2> &q) {
+            return mirror ? Point<2>(-q[0], q[1]) : q;
+          };
+          section.anchors              = {{flip(head), flip(bond), T}};
+          section.anchors_reduced_by_K = reduced;
+          const double N = W * std::cos(beta) + T * std::sin(theta);
+          const double K =
+            reduced ?
+              (c * L + N * t + T * std::cos(theta)) / (W * std::sin(beta)) :
+              (c * L + N * t) / (W * std::sin(beta) - T * std::cos(theta));
+          expect_planar(section,
+                        polyline(mirror ? mirrored({p0, p1}) : Line{p0, p1}),
+                        K,
+                        "anchor T = " + std::to_string(T) +
+                          ", theta = " + std::to_string(theta_deg) +
+                          (reduced ? ", reduced" : "") +
+                          (mirror ? ", mirrored" : ""));
+        }
+  // An anchor that ends above the surface: limit equilibrium says so.
+  le::Section section = homogeneous(ground, gamma, c, phi);
+  section.anchors     = {{Point<2>(15, 6.5), Point<2>(18, 7.5), 100.}};
+  EXPECT_THROW(le::SlicedMass(section, polyline({p0, p1}), 50),
+               dealii::ExceptionBase);
+}
+
 namespace
 {
   /**

@@ -142,6 +142,14 @@ namespace fdem
      */
     Vector<double>
     load_change(const unsigned int b) const;
+
+    /**
+     * Loads that depend on K (the anchors' shear reduced by K,
+     * analyses/anchors.h): called with K before each contact solve and
+     * when a state solved at K is restored, to set the load combination of
+     * that K. Empty: none.
+     */
+    std::function<void(double K)> strength_dependent_loads;
     ///@}
 
     /**
@@ -262,6 +270,12 @@ namespace fdem
     /** The seismic load, the yield acceleration and the Newmark displacement (analyses/seismic.h). */
     analyses::SeismicResults                            seismic;
     std::vector<Vector<double>>                         displacements;
+    /**
+     * Writes the reinforcement's own output files and returns summary.json's
+     * "reinforcement" for the current state (analyses/anchors.h). Empty: no
+     * reinforcement.
+     */
+    std::function<nlohmann::json()> reinforcement_output;
     /** summary.json's "probabilistic" (analyses/probabilistic.h), if computed. */
     nlohmann::json                                      probabilistic;
     nlohmann::json                                      summary;

@@ -112,10 +112,14 @@ namespace fdem
               const double a = s.c * s.l / K, b = s.tan_phi / K;
               // The crack's water force acts on the last slice, to the left;
               // the seismic force Q on every slice, to the left, and V up.
-              const double Px  = (i + 1 == n ? -mass.crack_force : 0.) - s.Q;
+              // The anchors crossing its base: a force (Fx, Fy) on the slice.
+              const double Fx = s.anchor_x(K, mass.anchors_reduced),
+                           Fy = s.anchor_y(K, mass.anchors_reduced);
+              const double Px =
+                (i + 1 == n ? -mass.crack_force : 0.) - s.Q + Fx;
               const double g   = a * ca - s.U * sa + Px;
               const double h   = b * ca - sa;
-              const double num = (s.U * ca + a * sa - (s.W - s.V)) +
+              const double num = (s.U * ca + a * sa - (s.W - s.V - Fy)) +
                                  lambda * (f[i] - f[i + 1]) * E_left -
                                  lambda * f[i + 1] * g;
               const double den = lambda * f[i + 1] * h - (ca + b * sa);
@@ -124,7 +128,9 @@ namespace fdem
               const double S  = a + b * N;
               const double fx = -(N + s.U) * sa + S * ca;
               const double fy = (N + s.U) * ca + S * sa;
-              moment += s.xm * fy - s.ym * fx - s.xg * (s.W - s.V) + s.yg * s.Q;
+              moment += s.xm * fy - s.ym * fx - s.xg * (s.W - s.V) +
+                        s.yg * s.Q +
+                        s.anchor_moment(K, mass.anchors_reduced, Point<2>());
             }
           if (mass.crack_force != 0)
             moment += mass.crack_point[1] * mass.crack_force;
@@ -232,18 +238,27 @@ namespace fdem
           // Fellenius: N' = W cos(alpha) - U (- P sin(alpha) with the crack's
           // water force P), K = sum (c l + N' tan(phi)) / sum (W sin(alpha)
           // + P cos(alpha)).
-          double resisting = 0, driving = 0;
+          // The anchors' parts along the bases (if reduced by K) apart:
+          // K = (R - D_S / K) / D gives K = (R - D_S) / D (their part of R
+          // is nil: they are along the base).
+          double     resisting = 0, driving = 0, driving_reduced = 0;
+          const bool reduced = mass.anchors_reduced;
           for (unsigned int i = 0; i < mass.slices.size(); ++i)
             {
               const Slice &s  = mass.slices[i];
               const double sa = s.sin_alpha, ca = s.cos_alpha;
-              // The seismic force Q pushes left like the crack's water.
-              const double P = crack_on(mass, i) + s.Q, W = s.W - s.V;
+              // The seismic force Q pushes left like the crack's water, and
+              // the anchors' force (Fx, Fy) pulls.
+              const double Fx = reduced ? s.Nx : s.Nx + s.Sx;
+              const double Fy = reduced ? s.Ny : s.Ny + s.Sy;
+              const double P = crack_on(mass, i) + s.Q - Fx, W = s.W - s.V - Fy;
               resisting += s.c * s.l + (W * ca - s.U - P * sa) * s.tan_phi;
               driving += W * sa + P * ca;
+              if (reduced)
+                driving_reduced += -s.Sy * sa - s.Sx * ca;
             }
           MethodResult result;
-          result.K = resisting / driving;
+          result.K = (resisting - driving_reduced) / driving;
           return result;
         }
 
@@ -263,12 +278,16 @@ namespace fdem
                 const double sa = s.sin_alpha, ca = s.cos_alpha;
                 const double m     = ca + sa * s.tan_phi / K;
                 const double width = s.l * ca;
+                const double Fy    = s.anchor_y(K, mass.anchors_reduced);
                 resisting +=
-                  (s.c * width + (s.W - s.V - s.U * ca) * s.tan_phi) / m;
+                  (s.c * width + (s.W - s.V - Fy - s.U * ca) * s.tan_phi) / m;
                 // The weight's moment about the centre, for a mass moving
-                // left, and the seismic force's (Q to the left at yg).
-                driving += (s.W - s.V) * (s.xg - mass.centre[0]) +
-                           s.Q * (mass.centre[1] - s.yg);
+                // left, the seismic force's (Q to the left at yg) and the
+                // anchors' (clockwise positive, as the mass moves).
+                driving +=
+                  (s.W - s.V) * (s.xg - mass.centre[0]) +
+                  s.Q * (mass.centre[1] - s.yg) -
+                  s.anchor_moment(K, mass.anchors_reduced, mass.centre);
               }
             driving +=
               mass.crack_force * (mass.centre[1] - mass.crack_point[1]);

@@ -145,6 +145,20 @@ namespace fdem
       section.seismic_on_pore_water = p.loads.seismic_on_pore_water;
       if (!p.loads.seismic_direction.empty())
         section.kh_direction = p.loads.seismic_direction[0] > 0 ? 1 : -1;
+      // The anchors, at the base of the slice where each crosses the surface.
+      section.anchors.clear();
+      section.anchors_reduced_by_K = p.anchors.reduced_by_K;
+      for (unsigned int k = 0; k < p.anchors.n_anchors(); ++k)
+        if (p.anchors.heads[k].size() == 2 &&
+            p.anchors.bond_points[k].size() == 2)
+          section.anchors.push_back(
+            {Point<2>(p.anchors.heads[k][0], p.anchors.heads[k][1]),
+             Point<2>(p.anchors.bond_points[k][0], p.anchors.bond_points[k][1]),
+             p.anchors.forces[k]});
+      if (!section.anchors.empty())
+        notes.push_back(
+          "the anchors act on the base of the slice where each crosses the sliding surface "
+          "(in the FE model at their heads: the same line of action)");
       section.piezometric = points(p.water.piezometric_line);
       section.ground      = slope.ground_surface;
 

@@ -470,6 +470,50 @@ namespace fdem
         make_slices(*this, n_slices);
         for (unsigned int i = 0; i + 1 < x.size(); ++i)
           slices.push_back(make_slice(*this, x[i], x[i + 1]));
+        anchors_reduced = section.anchors_reduced_by_K;
+        for (unsigned int k = 0; k < section.anchors.size(); ++k)
+          {
+            const Anchor &a    = section.anchors[k];
+            const auto    into = [&](const Point<2> &p) {
+              return mirrored ? Point<2>(-p[0], p[1]) : p;
+            };
+            const Point<2> head = into(a.head), bond = into(a.bond);
+            // The first crossing of the anchor with the surface from its head.
+            double t_cross = 2;
+            for (unsigned int j = 0; j + 1 < surface.size(); ++j)
+              {
+                const Tensor<1, 2> r = bond - head,
+                                   e = surface[j + 1] - surface[j];
+                const double det     = r[0] * (-e[1]) - r[1] * (-e[0]);
+                if (det == 0)
+                  continue;
+                const Tensor<1, 2> q = surface[j] - head;
+                const double       t = (q[0] * (-e[1]) - q[1] * (-e[0])) / det;
+                const double       u = (r[0] * q[1] - r[1] * q[0]) / det;
+                if (t >= 0 && t <= 1 && u >= 0 && u <= 1)
+                  t_cross = std::min(t_cross, t);
+              }
+            AssertThrow(
+              t_cross <= 1,
+              ExcMessage(
+                "Limit equilibrium: anchor " + std::to_string(k + 1) +
+                " does not cross the sliding surface of the section."));
+            const Point<2> c = head + t_cross * (bond - head);
+            unsigned int   i = 0;
+            while (i + 1 < slices.size() && c[0] > x[i + 1])
+              ++i;
+            Slice             &s = slices[i];
+            const Tensor<1, 2> F =
+              a.force * (bond - head) / (bond - head).norm();
+            const Tensor<1, 2> n({-s.sin_alpha, s.cos_alpha});
+            const Tensor<1, 2> N = (F * n) * n, S = F - N;
+            s.Nx += N[0];
+            s.Ny += N[1];
+            s.Sx += S[0];
+            s.Sy += S[1];
+            s.Mn += c[0] * N[1] - c[1] * N[0];
+            s.Ms += c[0] * S[1] - c[1] * S[0];
+          }
       }
     } // namespace limit_equilibrium
   }   // namespace analyses

@@ -89,6 +89,8 @@ namespace fdem
         {
           if (weight_variable >= 0)
             model.set_load_combination(1, {});
+          if (model.strength_dependent_loads)
+            model.strength_dependent_loads(model.strength_reduction);
         }
 
         /**
@@ -130,6 +132,10 @@ namespace fdem
               strengths(values, K);
             if (states.empty())
               states = contact::initial_states(*model.mixed_system, reduced);
+            // The anchors' shear reduced by K (analyses/anchors.h), and
+            // their cases back after set_load().
+            if (model.strength_dependent_loads)
+              model.strength_dependent_loads(K);
             const contact::ContactOutcome<dim> outcome =
               contact::solve_contact_problem(
                 *model.mixed_system, reduced, states, control, quiet);

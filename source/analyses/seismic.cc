@@ -63,7 +63,10 @@ namespace fdem
       // load plus the body-force cases with coefficients kh h_d - kv g_d.
       const std::vector<unsigned int> cases =
         model.body_force_cases(load.on_pore_water);
-      std::vector<double> coefficients(model.mixed_system->n_load_cases(), 0.0);
+      // The other cases (the anchors) keep their coefficients.
+      std::vector<double> coefficients =
+        model.mixed_system->get_load_coefficients();
+      coefficients.resize(model.mixed_system->n_load_cases(), 0.0);
       for (unsigned int d = 0; d < dim; ++d)
         coefficients[cases[d]] =
           load.kh * load.direction[d] -

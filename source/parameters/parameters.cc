@@ -150,6 +150,7 @@ namespace fdem
       OutputParameters::declare_parameters(prm);
       analyses::LimitEquilibriumParameters::declare_parameters(prm);
       analyses::YieldAccelerationParameters::declare_parameters(prm);
+      analyses::AnchorParameters::declare_parameters(prm);
       analyses::ProbabilisticParameters::declare_parameters(prm);
       analyses::SurfaceSearchParameters::declare_parameters(prm);
     }
@@ -168,6 +169,7 @@ namespace fdem
       output.parse_parameters(prm);
       limit_equilibrium.parse_parameters(prm);
       yield_acceleration.parse_parameters(prm);
+      anchors.parse_parameters(prm);
       probabilistic.parse_parameters(prm);
       surface_search.parse_parameters(prm);
 

@@ -3,6 +3,7 @@
 //
 // The result block of the screen and the log file, made from summary.json
 // alone: what the screen says is what the results folder holds.
+#include <fdem/analyses/anchor_results.h>
 #include <fdem/analyses/seismic_results.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/run_log.h>
@@ -297,6 +298,9 @@ namespace fdem
           add("Stiffness check", stiffness_words(summary, stiffness_warned));
         }
       for (const auto &[label, text] : analyses::seismic_result_lines(summary))
+        add(label, text);
+      for (const auto &[label, text] :
+           analyses::reinforcement_result_lines(summary))
         add(label, text);
       const auto probabilistic = probabilistic_lines(summary);
       for (unsigned int i = 0; i < probabilistic.size(); ++i)

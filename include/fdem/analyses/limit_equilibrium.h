@@ -40,6 +40,18 @@ namespace fdem
       };
 
       /**
+       * An active anchor (analyses/anchors.h): the force T pulls the mass at
+       * its head towards the bond point. On the slices it acts at the point
+       * where it crosses the sliding surface, on the base of that slice, split
+       * into the part normal to the base and the part along it.
+       */
+      struct Anchor
+      {
+        Point<2> head, bond;
+        double   force = 0;
+      };
+
+      /**
        * The section: ground, layers top down (each below its top line down to
        * the next layer's top), piezometric line and the unit weight of water.
        * Below the piezometric line a layer weighs its saturated unit weight
@@ -67,6 +79,11 @@ namespace fdem
         /** 0: kh towards the free face; +1 or -1: a positive kh along +x or -x.
          */
         int kh_direction = 0;
+        /** Active anchors across the sliding surface. */
+        std::vector<Anchor> anchors;
+        /** Whether the anchors' part along the base is divided by K (method B).
+         */
+        bool anchors_reduced_by_K = false;
       };
 
       /** The sliding surface: a circle or a polyline, with a tension crack. */
@@ -144,6 +161,36 @@ namespace fdem
          * (Section::seismic_on_pore_water false).
          */
         double Q = 0, V = 0, yg = 0;
+        /**
+         * The anchors crossing the base of this slice: the sums of their
+         * parts normal to the base (Nx, Ny) and along it (Sx, Sy), x to the
+         * right and y up, and each part's moment about the origin (x F_y -
+         * y F_x at the crossing).
+         */
+        double Nx = 0, Ny = 0, Sx = 0, Sy = 0, Mn = 0, Ms = 0;
+
+        /** The anchors' force on the slice at K: the part along the base
+         * divided by K if @p reduced. */
+        double
+        anchor_x(const double K, const bool reduced) const
+        {
+          return Nx + (reduced ? Sx / K : Sx);
+        }
+        double
+        anchor_y(const double K, const bool reduced) const
+        {
+          return Ny + (reduced ? Sy / K : Sy);
+        }
+        /** Their moment about the point @p c at K. */
+        double
+        anchor_moment(const double    K,
+                      const bool      reduced,
+                      const Point<2> &c) const
+        {
+          const double scale = reduced ? 1 / K : 1.;
+          return Mn + scale * Ms -
+                 (c[0] * anchor_y(K, reduced) - c[1] * anchor_x(K, reduced));
+        }
       };
 
       /**
@@ -166,6 +213,8 @@ namespace fdem
         /** The section's seismic coefficients (Section::kh, kv). */
         double kh = 0, kv = 0;
         bool   seismic_on_pore_water = false;
+        /** Section::anchors_reduced_by_K. */
+        bool anchors_reduced = false;
         /** The crack's water force (pushing left) and its point of action. */
         double              crack_force = 0;
         Point<2>            crack_point;

@@ -194,6 +194,20 @@ namespace fdem
       void
       set_load_coefficients(const double base_factor, const std::vector<double> &coefficients);
 
+      /** The factor on the assembled load of the current combination (set_load_coefficients()). */
+      double
+      get_base_load_factor() const
+      {
+        return base_load_factor;
+      }
+
+      /** The coefficients of the load cases of the current combination (set_load_coefficients()). */
+      const std::vector<double> &
+      get_load_coefficients() const
+      {
+        return load_coefficients;
+      }
+
       /**
        * The next dense solve factorises afresh instead of updating the last
        * factors (a no-op for the iterative solver): the solves that follow

@@ -4,6 +4,7 @@
 
 #include <fdem/analyses/limit_equilibrium_parameters.h>
 #include <fdem/analyses/yield_acceleration_parameters.h>
+#include <fdem/analyses/anchor_parameters.h>
 #include <fdem/analyses/probabilistic_parameters.h>
 #include <fdem/analyses/surface_search_parameters.h>
 #include <fdem/parameters/geometry_parameters.h>
@@ -49,6 +50,8 @@ namespace fdem
       analyses::LimitEquilibriumParameters limit_equilibrium;
       /** The yield acceleration and the Newmark displacement. */
       analyses::YieldAccelerationParameters yield_acceleration;
+      /** Active anchors across the sliding surface (analyses/anchors.h). */
+      analyses::AnchorParameters anchors;
       /** The probabilistic safety factor (Monte Carlo on the soil strengths). */
       analyses::ProbabilisticParameters probabilistic;
       /** The search for the critical circle (analyses/surface_search.h). */

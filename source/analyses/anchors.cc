@@ -1,0 +1,423 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#include <fdem/analyses/anchors.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/physics/transformations.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+namespace fdem
+{
+  namespace analyses
+  {
+    namespace
+    {
+      std::string
+      anchor_name(const unsigned int k)
+      {
+        return "Reinforcement: anchor " + std::to_string(k + 1);
+      }
+
+      template <int dim>
+      std::string
+      text(const Point<dim> &p)
+      {
+        std::ostringstream out;
+        out << std::setprecision(6) << "(" << p << ")";
+        return out.str();
+      }
+
+      /** The point as the mesh has it: x -> R (s x) + t
+       * (geometry::apply_transformation()). */
+      template <int dim>
+      Point<dim>
+      transformed(const parameters::GeometryParameters &geometry,
+                  const std::vector<double>            &xyz,
+                  const std::string                    &what)
+      {
+        AssertThrow(xyz.size() == dim,
+                    ExcMessage(what + " has " + std::to_string(xyz.size()) +
+                               " coordinates; this " + std::to_string(dim) +
+                               "D model needs " + std::to_string(dim) + "."));
+        Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = xyz[d];
+        Tensor<1, dim> translation;
+        for (unsigned int d = 0;
+             d < std::min<std::size_t>(dim, geometry.translation.size());
+             ++d)
+          translation[d] = geometry.translation[d];
+        const double   angle = geometry.rotation_angle * numbers::PI / 180;
+        Tensor<2, dim> rotation;
+        if constexpr (dim == 2)
+          rotation =
+            Physics::Transformations::Rotations::rotation_matrix_2d(angle);
+        else
+          rotation = Physics::Transformations::Rotations::rotation_matrix_3d(
+            geometry.rotation_axis / geometry.rotation_axis.norm(), angle);
+        return Point<dim>(rotation * (geometry.scale_factor * x) + translation);
+      }
+
+      /** Finds points in the blocks' cells (a deal.II cache per block). */
+      template <int dim>
+      class PointLocator
+      {
+      public:
+        explicit PointLocator(const Model<dim> &model)
+          : model(model)
+        {
+          for (const auto &block : model.blocks)
+            caches.push_back(
+              std::make_unique<GridTools::Cache<dim>>(block->triangulation,
+                                                      block->mapping));
+        }
+
+        /** The cell of block @p b around @p p and p's reference coordinates; an
+         * invalid iterator if none. */
+        std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
+        find(const unsigned int b, const Point<dim> &p) const
+        {
+          try
+            {
+              const auto found =
+                GridTools::find_active_cell_around_point(*caches[b], p);
+              if (found.first.state() == IteratorState::valid &&
+                  found.first != model.blocks[b]->triangulation.end())
+                return found;
+            }
+          catch (...)
+            {
+              // Not in this block.
+            }
+          return {typename Triangulation<dim>::active_cell_iterator(),
+                  Point<dim>()};
+        }
+
+        bool
+        inside(const unsigned int b, const Point<dim> &p) const
+        {
+          return find(b, p).first.state() == IteratorState::valid;
+        }
+
+        /** The first block holding @p p, or invalid_unsigned_int. */
+        unsigned int
+        block_of(const Point<dim> &p) const
+        {
+          for (unsigned int b = 0; b < caches.size(); ++b)
+            if (inside(b, p))
+              return b;
+          return numbers::invalid_unsigned_int;
+        }
+
+        /** Adds the point force @p force at @p p to the nodal forces @p load of
+         * block @p b (shape functions). */
+        void
+        add_point_force(const unsigned int    b,
+                        const Point<dim>     &p,
+                        const Tensor<1, dim> &force,
+                        Vector<double>       &load) const
+        {
+          const auto &block = *model.blocks[b];
+          const auto  found = find(b, p);
+          Assert(found.first.state() == IteratorState::valid,
+                 ExcInternalError());
+          const typename DoFHandler<dim>::active_cell_iterator cell(
+            &block.triangulation,
+            found.first->level(),
+            found.first->index(),
+            &block.dof_handler);
+          FEValues<dim> fe_values(block.mapping,
+                                  block.fe,
+                                  Quadrature<dim>(
+                                    std::vector<Point<dim>>{found.second}),
+                                  update_values);
+          fe_values.reinit(cell);
+          std::vector<types::global_dof_index> dofs(block.fe.n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          const FEValuesExtractors::Vector displacement(0);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            load[dofs[i]] += fe_values[displacement].value(i, 0) * force;
+        }
+
+      private:
+        const Model<dim>                                   &model;
+        std::vector<std::unique_ptr<GridTools::Cache<dim>>> caches;
+      };
+
+      template <int dim>
+      std::vector<double>
+      coordinates(const Point<dim> &p)
+      {
+        std::vector<double> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x.push_back(p[d]);
+        return x;
+      }
+    } // namespace
+
+    template <int dim>
+    std::vector<Anchor<dim>>
+    locate_anchors(const Model<dim> &model)
+    {
+      const AnchorParameters  &given = model.parameters.anchors;
+      std::vector<Anchor<dim>> anchors;
+      if (given.n_anchors() == 0)
+        return anchors;
+      const PointLocator<dim> locator(model);
+      for (unsigned int k = 0; k < given.n_anchors(); ++k)
+        {
+          const std::string name = anchor_name(k);
+          Anchor<dim>       a;
+          a.force      = given.forces[k];
+          a.head       = transformed<dim>(model.parameters.geometry,
+                                    given.heads[k],
+                                    name + ": its head");
+          a.bond       = transformed<dim>(model.parameters.geometry,
+                                    given.bond_points[k],
+                                    name + ": its bond point");
+          a.head_block = locator.block_of(a.head);
+          AssertThrow(
+            a.head_block != numbers::invalid_unsigned_int,
+            ExcMessage(
+              name + ": its head " + text(a.head) +
+              " lies in no block of the mesh; give Reinforcement/Anchor "
+              "heads on the sliding mass."));
+          AssertThrow(
+            model.blocks[a.head_block]->n_free_rigid_modes() > 0,
+            ExcMessage(
+              name + ": its head " + text(a.head) + " lies in block '" +
+              model.blocks[a.head_block]->name +
+              "', which is supported and cannot slide; the head must be "
+              "on the sliding mass (a block without supports)."));
+          a.bond_block = numbers::invalid_unsigned_int;
+          for (unsigned int b = 0; b < model.blocks.size(); ++b)
+            if (b != a.head_block && locator.inside(b, a.bond))
+              {
+                a.bond_block = b;
+                break;
+              }
+          AssertThrow(a.bond_block != numbers::invalid_unsigned_int &&
+                        !locator.inside(a.head_block, a.bond),
+                      ExcMessage(
+                        name + ": its bond point " + text(a.bond) +
+                        (locator.inside(a.head_block, a.bond) ?
+                           " lies in the head's block '" +
+                             model.blocks[a.head_block]->name + "'" :
+                           std::string(" lies in no block of the mesh")) +
+                        "; give Reinforcement/Anchor bond points in the stable "
+                        "ground beyond the sliding surface."));
+          a.direction = (a.bond - a.head) / (a.bond - a.head).norm();
+
+          // Where the straight anchor leaves the head's block: bisection on
+          // the segment between the head (inside) and the bond point (not).
+          double lo = 0, hi = 1;
+          for (unsigned int i = 0; i < 60; ++i)
+            {
+              const double mid = 0.5 * (lo + hi);
+              (locator.inside(a.head_block, a.head + mid * (a.bond - a.head)) ?
+                 lo :
+                 hi)           = mid;
+            }
+          a.crossing = a.head + lo * (a.bond - a.head);
+
+          // The nearest node pair of a sliding surface on the head's block,
+          // within the size of the cell there.
+          const auto cell = locator.find(a.head_block, a.crossing).first;
+          Assert(cell.state() == IteratorState::valid, ExcInternalError());
+          const double reach   = cell->diameter();
+          double       nearest = std::numeric_limits<double>::infinity();
+          for (const auto &interface : model.interfaces)
+            if (model.parameters.interfaces.at(interface.name)
+                  .sliding_surface &&
+                (interface.block_I == a.head_block ||
+                 interface.block_J == a.head_block))
+              for (const auto &pair : interface.pairs)
+                {
+                  const double distance =
+                    std::min(a.crossing.distance(pair.position_I),
+                             a.crossing.distance(pair.position_J));
+                  if (distance < nearest)
+                    {
+                      nearest     = distance;
+                      a.normal    = pair.frame[0];
+                      a.interface = interface.name;
+                    }
+                }
+          AssertThrow(
+            nearest <= reach,
+            ExcMessage(
+              name + " does not cross a sliding surface: it leaves block '" +
+              model.blocks[a.head_block]->name + "' at " + text(a.crossing) +
+              ", where no interface with 'Sliding surface = true' is."));
+          if (a.normal * a.direction < 0)
+            a.normal = -a.normal;
+          a.normal_force = a.force * (a.normal * a.direction);
+          a.shear_force =
+            (a.force * a.direction - a.normal_force * a.normal).norm();
+          AssertThrow(a.normal * a.direction > 1e-6,
+                      ExcMessage(name + " runs along the sliding surface '" +
+                                 a.interface + "' at " + text(a.crossing) +
+                                 " instead of crossing it."));
+          anchors.push_back(a);
+        }
+      return anchors;
+    }
+
+    template <int dim>
+    void
+    add_anchor_loads(Model<dim> &model)
+    {
+      const std::vector<Anchor<dim>> anchors = locate_anchors(model);
+      if (anchors.empty())
+        return;
+      const bool              reduced = model.parameters.anchors.reduced_by_K;
+      const PointLocator<dim> locator(model);
+      // Case 0: the normal components, case 1: the shear components.
+      std::vector<std::vector<Vector<double>>> loads(2);
+      for (auto &l : loads)
+        for (const auto &block : model.blocks)
+          l.emplace_back(block->dof_handler.n_dofs());
+      for (const Anchor<dim> &a : anchors)
+        {
+          const Tensor<1, dim> normal = a.normal_force * a.normal;
+          const Tensor<1, dim> shear  = a.force * a.direction - normal;
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              const Tensor<1, dim> &f = c == 0 ? normal : shear;
+              locator.add_point_force(a.head_block,
+                                      a.head,
+                                      f,
+                                      loads[c][a.head_block]);
+              locator.add_point_force(a.bond_block,
+                                      a.bond,
+                                      -f,
+                                      loads[c][a.bond_block]);
+            }
+        }
+      const unsigned int normal_case = model.add_load_case(loads[0]);
+      const unsigned int shear_case  = model.add_load_case(loads[1]);
+      model.strength_dependent_loads =
+        [&model, normal_case, shear_case, reduced](const double K) {
+          std::vector<double> c = model.mixed_system->get_load_coefficients();
+          c.resize(model.mixed_system->n_load_cases(), 0.0);
+          const double shear = reduced ? 1 / K : 1.0;
+          if (c[normal_case] == 1 && c[shear_case] == shear)
+            return;
+          c[normal_case] = 1;
+          c[shear_case]  = shear;
+          model.set_load_combination(model.mixed_system->get_base_load_factor(),
+                                     c);
+        };
+      model.strength_dependent_loads(1.0);
+
+      const std::string convention =
+        reduced ? "shear component reduced by K" : "unreduced loads";
+      double total = 0;
+      for (const auto &a : anchors)
+        total += a.force;
+      model.brief << "Anchors: " << anchors.size() << ", total force "
+                  << std::setprecision(6) << total << " (" << convention << ")"
+                  << std::endl;
+      for (unsigned int k = 0; k < anchors.size(); ++k)
+        {
+          const Anchor<dim> &a = anchors[k];
+          model.log << "  anchor " << k + 1 << ": T = " << a.force << " from "
+                    << text(a.head) << " in '"
+                    << model.blocks[a.head_block]->name << "' to "
+                    << text(a.bond) << " in '"
+                    << model.blocks[a.bond_block]->name << "', across '"
+                    << a.interface << "' at " << text(a.crossing) << ": normal "
+                    << a.normal_force << ", shear " << a.shear_force
+                    << std::endl;
+        }
+
+      model.reinforcement_output = [&model, anchors, reduced, convention]() {
+        const double   K    = model.strength_reduction;
+        nlohmann::json list = nlohmann::json::array();
+        for (const Anchor<dim> &a : anchors)
+          list.push_back({{"head", coordinates(a.head)},
+                          {"bond_point", coordinates(a.bond)},
+                          {"crossing", coordinates(a.crossing)},
+                          {"interface", a.interface},
+                          {"head_block", model.blocks[a.head_block]->name},
+                          {"bond_block", model.blocks[a.bond_block]->name},
+                          {"force", a.force},
+                          {"normal_force", a.normal_force},
+                          {"shear_force", a.shear_force},
+                          {"applied_shear_force",
+                           reduced ? a.shear_force / K : a.shear_force}});
+        const std::string directory = model.parameters.output_directory();
+        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 &&
+            std::filesystem::is_directory(directory))
+          {
+            std::ofstream out(directory + "/anchors.csv");
+            const char   *axes[] = {"x", "y", "z"};
+            out << "anchor";
+            for (const std::string what : {"head", "bond", "crossing"})
+              for (unsigned int d = 0; d < dim; ++d)
+                out << ',' << what << '_' << axes[d];
+            out
+              << ",force,normal_force,shear_force,applied_shear_force,interface\n"
+              << std::setprecision(12);
+            for (unsigned int k = 0; k < anchors.size(); ++k)
+              {
+                const Anchor<dim> &a = anchors[k];
+                out << k + 1;
+                for (const Point<dim> *p : {&a.head, &a.bond, &a.crossing})
+                  for (unsigned int d = 0; d < dim; ++d)
+                    out << ',' << (*p)[d];
+                out << ',' << a.force << ',' << a.normal_force << ','
+                    << a.shear_force << ','
+                    << (reduced ? a.shear_force / K : a.shear_force) << ','
+                    << a.interface << '\n';
+              }
+          }
+        return nlohmann::json{{"convention", convention},
+                              {"reduced_by_K", reduced},
+                              {"K_of_state", K},
+                              {"anchors", list},
+                              {"csv", "anchors.csv"}};
+      };
+    }
+
+    std::vector<std::pair<std::string, std::string>>
+    reinforcement_result_lines(const nlohmann::json &summary)
+    {
+      std::vector<std::pair<std::string, std::string>> lines;
+      if (!summary.contains("reinforcement") ||
+          !summary["reinforcement"].is_object())
+        return lines;
+      const nlohmann::json &r     = summary["reinforcement"];
+      double                total = 0;
+      for (const auto &a : r["anchors"])
+        total += a["force"].get<double>();
+      std::ostringstream line;
+      line << r["anchors"].size()
+           << (r["anchors"].size() == 1 ? " anchor" : " anchors")
+           << ", total force " << std::setprecision(6) << total << " ("
+           << r["convention"].get<std::string>() << "; anchors.csv)";
+      lines.push_back({"Anchors", line.str()});
+      return lines;
+    }
+
+    template std::vector<Anchor<2>>
+    locate_anchors(const Model<2> &);
+    template std::vector<Anchor<3>>
+    locate_anchors(const Model<3> &);
+    template void
+    add_anchor_loads(Model<2> &);
+    template void
+    add_anchor_loads(Model<3> &);
+  } // namespace analyses
+} // namespace fdem
