@@ -288,15 +288,21 @@ namespace fdem
       for (auto &l : loads)
         for (const auto &block : model.blocks)
           l.emplace_back(block->dof_handler.n_dofs());
+      // Unreduced, the prestress acts at the head. Reduced by K, the anchor
+      // is a resistance mobilised where it crosses the surface, as limit
+      // equilibrium programs apply support forces: both parts at the
+      // crossing (on the head's block), so that the split force keeps the
+      // moment it has on the slices (doc/theory.md, "Anchors").
       for (const Anchor<dim> &a : anchors)
         {
+          const Point<dim>    &at     = reduced ? a.crossing : a.head;
           const Tensor<1, dim> normal = a.normal_force * a.normal;
           const Tensor<1, dim> shear  = a.force * a.direction - normal;
           for (unsigned int c = 0; c < 2; ++c)
             {
               const Tensor<1, dim> &f = c == 0 ? normal : shear;
               locator.add_point_force(a.head_block,
-                                      a.head,
+                                      at,
                                       f,
                                       loads[c][a.head_block]);
               locator.add_point_force(a.bond_block,
