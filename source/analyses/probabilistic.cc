@@ -52,8 +52,9 @@ namespace fdem
           , quiet(nullptr)
         {
           control.max_iterations =
-            model.parameters.contact.max_status_iterations;
-          control.runaway_factor = model.parameters.contact.runaway_factor;
+            model.get_parameters().contact.max_status_iterations;
+          control.runaway_factor =
+            model.get_parameters().contact.runaway_factor;
           for (unsigned int v = 0; v < variables.size(); ++v)
             if (variables[v].quantity ==
                 RandomVariable::Quantity::unit_weight_factor)
@@ -79,7 +80,7 @@ namespace fdem
           for (unsigned int d = 0; d < dim; ++d)
             coefficients[weight_cases[d]] =
               (values[weight_variable] - 1) *
-              model.parameters.loads.gravity_direction[d];
+              model.get_parameters().loads.gravity_direction[d];
           model.set_load_combination(1, coefficients);
         }
 
@@ -99,7 +100,7 @@ namespace fdem
         set_start(const std::vector<double> &values)
         {
           start_states.clear();
-          parameters = model.parameters.safety_factor;
+          parameters = model.get_parameters().safety_factor;
           Result result;
           evaluate(values, &result);
           // Each sample starts from the initial states (as the first solve
@@ -121,7 +122,7 @@ namespace fdem
             return evaluation;
           // The same start for every sample: its state, K and a fresh
           // factorisation, whatever was solved before.
-          model.mixed_system->forget_factorization();
+          model.forget_mixed_factorization();
           set_load(values);
           std::vector<contact::PairState<dim>> states = start_states;
           last_states.clear();
@@ -129,13 +130,13 @@ namespace fdem
             const std::vector<contact::PairStrength> reduced =
               strengths(values, K);
             if (states.empty())
-              states = contact::initial_states(*model.mixed_system, reduced);
+              states =
+                contact::initial_states(model.get_mixed_system(), reduced);
             const contact::ContactOutcome<dim> outcome =
-              contact::solve_contact_problem(
-                *model.mixed_system, reduced, states, control, quiet);
+              model.solve_contact_from(reduced, states, control, quiet);
             evaluation.n_status_iterations += outcome.iterations.size();
             const ReducedStrengthSolution solution =
-              resisting_and_sliding_forces(*model.mixed_system,
+              resisting_and_sliding_forces(model.get_mixed_system(),
                                            outcome,
                                            reduced,
                                            on_sliding_surface);
@@ -266,9 +267,9 @@ namespace fdem
 
     template <int dim>
     nlohmann::json
-    probabilistic_safety_factor(Model<dim> &model)
+    probabilistic_safety_factor(Model<dim> &model, const double deterministic_K)
     {
-      const ProbabilisticParameters &p = model.parameters.probabilistic;
+      const ProbabilisticParameters &p = model.get_parameters().probabilistic;
       TimerOutput::Scope scope(model.phase_timer(), "probabilistic");
       Timer              timer;
       model.progress("probabilistic: " + std::to_string(p.n_samples) +
@@ -284,9 +285,9 @@ namespace fdem
       nlohmann::json          result;
       SampleSafetyFactor<dim> evaluator(model, p.variables);
       const unsigned int      factorized_before =
-        model.mixed_system->dense_solver().n_factorizations;
+        model.get_mixed_system().dense_solver().n_factorizations;
       const unsigned int reused_before =
-        model.mixed_system->dense_solver().n_reused_solves;
+        model.get_mixed_system().dense_solver().n_reused_solves;
       Timer        mean_timer;
       const Result at_means     = evaluator.set_start(means);
       const double mean_seconds = mean_timer.wall_time();
@@ -321,7 +322,7 @@ namespace fdem
       // The iterative mixed solver's block solves are collective: there every
       // rank solves every sample.
       const bool split =
-        model.mixed_system->solver() == contact::MixedSystemSolver::dense;
+        model.get_mixed_system().solver() == contact::MixedSystemSolver::dense;
       const unsigned int n_ranks =
         split ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
       const unsigned int rank =
@@ -371,9 +372,8 @@ namespace fdem
       result["seed"] = p.seed;
       result["sampling"] =
         p.latin_hypercube ? "Latin hypercube" : "Monte Carlo";
-      result["deterministic_K"] =
-        number(model.safety_factor_result.safety_factor);
-      nlohmann::json variables = nlohmann::json::array();
+      result["deterministic_K"] = number(deterministic_K);
+      nlohmann::json variables  = nlohmann::json::array();
       for (unsigned int v = 0; v < n_variables; ++v)
         variables.push_back({{"target", p.variables[v].target},
                              {"distribution",
@@ -399,15 +399,16 @@ namespace fdem
                     {"mean_steps_per_sample", n_steps / p.n_samples},
                     {"mean_contact_solves_per_sample", n_status_iterations / p.n_samples},
                     {"factorizations_rank0",
-                     model.mixed_system->dense_solver().n_factorizations -
+                     model.get_mixed_system().dense_solver().n_factorizations -
                        factorized_before},
                     {"reused_solves_rank0",
-                     model.mixed_system->dense_solver().n_reused_solves - reused_before},
+                     model.get_mixed_system().dense_solver().n_reused_solves -
+                       reused_before},
                     {"n_ranks", n_ranks}};
 
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
-          std::ofstream out(model.parameters.output_directory() +
+          std::ofstream out(model.get_parameters().output_directory() +
                             "/samples.csv");
           out << "sample";
           for (const RandomVariable &v : p.variables)
@@ -440,8 +441,8 @@ namespace fdem
     }
 
     template nlohmann::json
-    probabilistic_safety_factor(Model<2> &);
+    probabilistic_safety_factor(Model<2> &, const double);
     template nlohmann::json
-    probabilistic_safety_factor(Model<3> &);
+    probabilistic_safety_factor(Model<3> &, const double);
   } // namespace analyses
 } // namespace fdem

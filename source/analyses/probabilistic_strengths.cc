@@ -15,9 +15,9 @@ namespace fdem
       const std::vector<RandomVariable> &variables)
       : model(model)
       , variables(variables)
-      , interface_cohesion(model.interfaces.size(), -1)
-      , interface_friction(model.interfaces.size(), -1)
-      , weights(model.interfaces.size())
+      , interface_cohesion(model.get_interfaces().size(), -1)
+      , interface_friction(model.get_interfaces().size(), -1)
+      , weights(model.get_interfaces().size())
     {
       using Quantity = RandomVariable::Quantity;
       for (unsigned int v = 0; v < variables.size(); ++v)
@@ -28,8 +28,8 @@ namespace fdem
           const bool cohesion = variable.quantity == Quantity::cohesion;
           if (variable.owner == RandomVariable::Owner::interface)
             {
-              for (unsigned int i = 0; i < model.interfaces.size(); ++i)
-                if (model.interfaces[i].name == variable.name)
+              for (unsigned int i = 0; i < model.get_interfaces().size(); ++i)
+                if (model.get_interfaces()[i].name == variable.name)
                   (cohesion ? interface_cohesion : interface_friction)[i] = v;
               continue;
             }
@@ -39,7 +39,7 @@ namespace fdem
           if (m == materials.size())
             {
               const parameters::MaterialParameters &p =
-                model.parameters.materials.at(variable.name);
+                model.get_parameters().materials.at(variable.name);
               materials.push_back(
                 {variable.name,
                  p.cohesion,
@@ -53,22 +53,27 @@ namespace fdem
 
       // Each random material's weight at the nodes of every interface with
       // Strength = material: its c set to 1, every other material's to 0.
-      for (unsigned int i = 0; i < model.interfaces.size(); ++i)
+      for (unsigned int i = 0; i < model.get_interfaces().size(); ++i)
         {
-          const auto &interface = model.interfaces[i];
-          if (!model.parameters.interfaces.at(interface.name)
+          const auto &interface = model.get_interfaces()[i];
+          if (!model.get_parameters()
+                 .interfaces.at(interface.name)
                  .strength_from_material)
             continue;
-          auto      &block = *model.blocks[interface.block_I];
+          auto      &block = *model.get_blocks()[interface.block_I];
           const auto saved = block.materials;
           for (unsigned int m = 0; m < materials.size(); ++m)
             {
               for (auto &[key, material] : block.materials)
                 material.cohesion =
-                  model.mesh.material_key_name(key) == materials[m].name ? 1 :
-                                                                           0;
-              for (const auto &[dof, strength] : blocks::soil_strength_at_nodes(
-                     block, interface.face_group, model.mesh, interface.name))
+                  model.get_mesh().material_key_name(key) == materials[m].name ?
+                    1 :
+                    0;
+              for (const auto &[dof, strength] :
+                   blocks::soil_strength_at_nodes(block,
+                                                  interface.face_group,
+                                                  model.get_mesh(),
+                                                  interface.name))
                 if (strength.cohesion != 0)
                   weights[i][dof].emplace_back(m, strength.cohesion);
             }
@@ -172,12 +177,15 @@ namespace fdem
           const bool interface =
             variable.owner == RandomVariable::Owner::interface;
           const double c =
-            interface ? model.parameters.interfaces.at(variable.name).cohesion :
-                        model.parameters.materials.at(variable.name).cohesion;
+            interface ?
+              model.get_parameters().interfaces.at(variable.name).cohesion :
+              model.get_parameters().materials.at(variable.name).cohesion;
           const double phi =
             interface ?
-              model.parameters.interfaces.at(variable.name).friction_angle :
-              model.parameters.materials.at(variable.name).friction_angle;
+              model.get_parameters()
+                .interfaces.at(variable.name)
+                .friction_angle :
+              model.get_parameters().materials.at(variable.name).friction_angle;
           switch (variable.quantity)
             {
               case RandomVariable::Quantity::cohesion:

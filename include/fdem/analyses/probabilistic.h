@@ -66,10 +66,12 @@ namespace fdem
      * the results are the same bit for bit with any number of ranks. Also
      * FOSM and Rosenblueth's point estimates, if asked. Rank 0 writes
      * samples.csv into the results folder. Returns summary.json's
-     * "probabilistic".
+     * "probabilistic", with @p deterministic_K, the model's own K, beside
+     * the samples' statistics.
      */
     template <int dim>
     nlohmann::json
-    probabilistic_safety_factor(Model<dim> &model);
+    probabilistic_safety_factor(Model<dim>  &model,
+                                const double deterministic_K);
   } // namespace analyses
 } // namespace fdem
