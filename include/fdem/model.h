@@ -129,6 +129,20 @@ namespace fdem
     set_load_combination(const double base_factor, const std::vector<double> &coefficients);
 
     /**
+     * Replaces load case @p index in the mixed system by @p parts
+     * (contact::MixedSystem::load_case()): a load that changes from one
+     * solve to the next (a probabilistic sample's water) without a new
+     * case. The contact problem sees it; the blocks' load vectors keep the
+     * case as it was added, so set its coefficient back to zero before a
+     * recovery or output.
+     */
+    void
+    replace_load_case(const unsigned int index, const typename contact::MixedSystem<dim>::LoadCase &parts)
+    {
+      mixed_system->replace_load_case(index, parts);
+    }
+
+    /**
      * The assembled load of block @p b minus its current load (zero
      * without a load combination): what the assembled cells' residual
      * (ElasticBlock::nodal_residual()) must be corrected by.

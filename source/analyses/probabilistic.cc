@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/probabilistic.h>
+#include <fdem/analyses/probabilistic_loads.h>
 #include <fdem/analyses/probabilistic_sampling.h>
 #include <fdem/analyses/probabilistic_strengths.h>
 #include <fdem/analyses/safety_factor_iteration.h>
@@ -48,6 +49,7 @@ namespace fdem
                            const std::vector<RandomVariable> &variables)
           : model(model)
           , strengths(model, variables)
+          , loads(model, variables)
           , on_sliding_surface(model.pairs_on_sliding_surface())
           , quiet(nullptr)
         {
@@ -55,41 +57,6 @@ namespace fdem
             model.get_parameters().contact.max_status_iterations;
           control.runaway_factor =
             model.get_parameters().contact.runaway_factor;
-          for (unsigned int v = 0; v < variables.size(); ++v)
-            if (variables[v].quantity ==
-                RandomVariable::Quantity::unit_weight_factor)
-              {
-                weight_variable = v;
-                // Solved once on the blocks' factorisations (collective).
-                weight_cases = model.body_force_cases(true);
-              }
-        }
-
-        /**
-         * The load of @p values: the weight times the unit weight factor,
-         * as the body-force cases combine it (Model::set_load_combination()).
-         */
-        void
-        set_load(const std::vector<double> &values)
-        {
-          if (weight_variable < 0)
-            return;
-          std::vector<double> coefficients(
-            *std::max_element(weight_cases.begin(), weight_cases.end()) + 1,
-            0.0);
-          for (unsigned int d = 0; d < dim; ++d)
-            coefficients[weight_cases[d]] =
-              (values[weight_variable] - 1) *
-              model.get_parameters().loads.gravity_direction[d];
-          model.set_load_combination(1, coefficients);
-        }
-
-        /** Back to the model's own load. */
-        void
-        restore_load()
-        {
-          if (weight_variable >= 0)
-            model.set_load_combination(1, {});
         }
 
         /**
@@ -114,8 +81,16 @@ namespace fdem
         }
 
 
+        /**
+         * K of @p values; with the water level random, its load case @p water
+         * if given (SampleLoads::water_case()), else computed here
+         * (collective).
+         */
         Evaluation
-        evaluate(const std::vector<double> &values, Result *full = nullptr)
+        evaluate(
+          const std::vector<double>                          &values,
+          Result                                             *full  = nullptr,
+          const typename contact::MixedSystem<dim>::LoadCase *water = nullptr)
         {
           Evaluation evaluation;
           if (!strengths.physical(values))
@@ -123,7 +98,7 @@ namespace fdem
           // The same start for every sample: its state, K and a fresh
           // factorisation, whatever was solved before.
           model.forget_mixed_factorization();
-          set_load(values);
+          loads.set(values, water);
           std::vector<contact::PairState<dim>> states = start_states;
           last_states.clear();
           const auto solve = [&](const double K) {
@@ -167,15 +142,12 @@ namespace fdem
 
         Model<dim>                          &model;
         SampleStrengths<dim>                 strengths;
+        SampleLoads<dim>                     loads;
         const std::vector<bool>              on_sliding_surface;
         contact::StatusIterationControl      control;
         parameters::SafetyFactorParameters   parameters;
         std::vector<contact::PairState<dim>> start_states, last_states;
         std::ostream                         quiet; // no output per sample
-        /** The unit weight factor's variable (-1: none) and the body-force
-         * cases. */
-        int                       weight_variable = -1;
-        std::vector<unsigned int> weight_cases;
       };
 
       /**
@@ -329,15 +301,28 @@ namespace fdem
         split ? Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) : 0;
       const unsigned int first = std::size_t(p.n_samples) * rank / n_ranks;
       const unsigned int last = std::size_t(p.n_samples) * (rank + 1) / n_ranks;
+      const auto         sample = [&](const unsigned int s) {
+        return std::vector<double>(values.begin() +
+                                     std::size_t(s) * n_variables,
+                                   values.begin() +
+                                     std::size_t(s + 1) * n_variables);
+      };
       std::vector<double>
             local; // K, status, steps, status iterations per sample
       Timer sample_timer;
+      // A random water level: the samples' water load cases first, on every
+      // rank (the blocks' solves are collective), then each rank's slice.
+      std::vector<typename contact::MixedSystem<dim>::LoadCase> water_cases;
+      if (evaluator.loads.varies_water())
+        for (unsigned int s = 0; s < p.n_samples; ++s)
+          water_cases.push_back(evaluator.loads.water_case(sample(s)));
+      const double water_seconds = sample_timer.wall_time();
       for (unsigned int s = first; s < last; ++s)
         {
-          const Evaluation e = evaluator.evaluate(
-            std::vector<double>(values.begin() + std::size_t(s) * n_variables,
-                                values.begin() +
-                                  std::size_t(s + 1) * n_variables));
+          const Evaluation e =
+            evaluator.evaluate(sample(s),
+                               nullptr,
+                               water_cases.empty() ? nullptr : &water_cases[s]);
           local.insert(local.end(),
                        {e.K,
                         double(e.status),
@@ -388,13 +373,14 @@ namespace fdem
         result["point_estimate"] =
           point_estimate(evaluator, p, means, std_devs);
 
-      evaluator.restore_load();
+      evaluator.loads.restore();
       // Cost: this rank's samples, the run's mean per sample.
       const unsigned int n_local = last - first;
       result["cost"]             = {
                     {"wall_seconds", timer.wall_time()},
                     {"samples_wall_seconds", sample_seconds},
                     {"seconds_per_sample", n_local > 0 ? sample_seconds / n_local : 0.0},
+                    {"water_load_seconds", water_seconds},
                     {"seconds_K_at_means", mean_seconds},
                     {"mean_steps_per_sample", n_steps / p.n_samples},
                     {"mean_contact_solves_per_sample", n_status_iterations / p.n_samples},

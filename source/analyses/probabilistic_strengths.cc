@@ -23,7 +23,8 @@ namespace fdem
       for (unsigned int v = 0; v < variables.size(); ++v)
         {
           const RandomVariable &variable = variables[v];
-          if (variable.owner == RandomVariable::Owner::loads)
+          if (variable.owner == RandomVariable::Owner::loads ||
+              variable.owner == RandomVariable::Owner::water)
             continue; // not a strength
           const bool cohesion = variable.quantity == Quantity::cohesion;
           if (variable.owner == RandomVariable::Owner::interface)
@@ -157,6 +158,18 @@ namespace fdem
                 if (!(x > 0))
                   return false;
                 break;
+              case RandomVariable::Quantity::horizontal_seismic_coefficient:
+                // Either sign is a load (towards or away from the free
+                // face); one without equilibrium is a failure, not
+                // nonphysical.
+                if (!std::isfinite(x))
+                  return false;
+                break;
+              case RandomVariable::Quantity::water_level_shift:
+                // Any level: below the model, no water.
+                if (!std::isfinite(x))
+                  return false;
+                break;
             }
         }
       return true;
@@ -169,9 +182,18 @@ namespace fdem
       std::vector<double> values;
       for (const RandomVariable &variable : variables)
         {
+          if (variable.owner == RandomVariable::Owner::water)
+            {
+              values.push_back(0); // the line as given
+              continue;
+            }
           if (variable.owner == RandomVariable::Owner::loads)
             {
-              values.push_back(1); // the case's own weight
+              values.push_back(
+                variable.quantity ==
+                    RandomVariable::Quantity::unit_weight_factor ?
+                  1 : // the case's own weight
+                  model.get_parameters().loads.horizontal_seismic_coefficient);
               continue;
             }
           const bool interface =
@@ -198,6 +220,8 @@ namespace fdem
                 values.push_back(std::tan(phi * numbers::PI / 180));
                 break;
               case RandomVariable::Quantity::unit_weight_factor:
+              case RandomVariable::Quantity::horizontal_seismic_coefficient:
+              case RandomVariable::Quantity::water_level_shift:
                 break;
             }
         }
