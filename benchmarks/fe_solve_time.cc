@@ -21,20 +21,20 @@ namespace
   {
     using namespace fdem;
     std::ostringstream log;
-    Model<dim>         model(parameters, "", log);
+    Model<dim> model(parameters, log);
     model.make_geometry();
 
     std::vector<unsigned int>                              all_blocks;
     std::map<unsigned int, parameters::MaterialParameters> materials;
-    for (unsigned int b = 0; b < model.mesh.block_names.size(); ++b)
+    for (unsigned int b = 0; b < model.get_mesh().block_names.size(); ++b)
       {
         all_blocks.push_back(b);
-        materials[b] = parameters.materials.at(model.mesh.block_names[b]);
+        materials[b] = parameters.materials.at(model.get_mesh().block_names[b]);
       }
-    blocks::ElasticBlock<dim> merged("merged", model.mesh, all_blocks, materials,
+    blocks::ElasticBlock<dim> merged("merged", model.get_mesh(), all_blocks, materials,
                                      parameters.fe_degree);
     std::map<dealii::types::boundary_id, parameters::BoundaryParameters> conditions;
-    const auto &groups = model.mesh.face_group_names;
+    const auto &groups = model.get_mesh().face_group_names;
     for (const std::string &name : parameters.boundary_names)
       conditions[std::find(groups.begin(), groups.end(), name) - groups.begin()] =
         parameters.boundaries.at(name);

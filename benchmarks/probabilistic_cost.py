@@ -9,7 +9,7 @@ MPI ranks, and the cost of one sample against that of one deterministic K
 phases). Writes its table into doc/benchmarks.md.
 
     /usr/bin/python3 benchmarks/probabilistic_cost.py [--exe build/fdem-slope]
-        [--samples 10000] [--output doc/benchmarks.md]
+        [--samples 1000 10000] [--output doc/benchmarks.md]
 """
 import argparse
 import os
@@ -28,7 +28,7 @@ MPIRUN = ["mpirun", "-np", "2", "--oversubscribe"]
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--exe", default=common.DEFAULT_EXE)
-    parser.add_argument("--samples", type=int, default=10000)
+    parser.add_argument("--samples", type=int, nargs="+", default=[1000, 10000])
     parser.add_argument("--output", default=os.path.join(common.ROOT, "doc", "benchmarks.md"))
     args = parser.parse_args()
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
@@ -38,29 +38,38 @@ def main():
         sys.exit(f"probabilistic_cost.py: {deterministic.failure()}")
     t = deterministic.summary["timings"]
     one_K = t.get("contact", 0) + t.get("safety factor", 0)
-    settings = dict(base, **{"Probabilistic/Compute": "true",
-                             "Probabilistic/Number of samples": str(args.samples),
-                             "Probabilistic/Variables": VARIABLES,
-                             "Safety factor/Stiffness check": "false"})
     rows = []
-    for label, launcher in (("1 process", []), ("2 MPI ranks", MPIRUN)):
-        run = common.run_case(args.exe, "paper_slope.prm", settings, launcher=launcher, env=env)
-        if not run.ok:
-            sys.exit(f"probabilistic_cost.py: {label}: {run.failure()}")
-        p = run.summary["probabilistic"]
-        cost = p["cost"]
-        per_sample = cost["samples_wall_seconds"] / (args.samples / cost["n_ranks"])
-        rows.append([label, f"{run.wall:.2f}", f"{run.summary['timings'].get('probabilistic', 0):.2f}",
-                     f"{args.samples / cost['samples_wall_seconds']:.0f}",
-                     f"{1e3 * per_sample:.2f}", f"{cost['mean_steps_per_sample']:.2f}",
-                     f"{cost['mean_contact_solves_per_sample']:.1f}",
-                     f"{p['K_mean']:.4f}", f"{p['K_std']:.4f}", f"{p['P_failure']:.4f}"])
-        print(" | ".join(rows[-1]))
+    for n in args.samples:
+        settings = dict(base, **{"Probabilistic/Compute": "true",
+                                 "Probabilistic/Number of samples": str(n),
+                                 "Probabilistic/Variables": VARIABLES,
+                                 "Safety factor/Stiffness check": "false"})
+        for label, launcher in (("1 process", []), ("2 MPI ranks", MPIRUN)):
+            run = common.run_case(args.exe, "paper_slope.prm", settings, launcher=launcher, env=env)
+            if not run.ok:
+                sys.exit(f"probabilistic_cost.py: {label}: {run.failure()}")
+            p = run.summary["probabilistic"]
+            cost = p["cost"]
+            per_sample = cost["samples_wall_seconds"] / (n / cost["n_ranks"])
+            # Rank 0's factorisations and reused solves of the mixed system
+            # (its samples and the evaluations every rank makes: K at the
+            # means, FOSM, point estimates), per sample of rank 0.
+            n_rank0 = n // cost["n_ranks"]
+            rows.append([str(n), label, f"{run.wall:.2f}",
+                         f"{run.summary['timings'].get('probabilistic', 0):.2f}",
+                         f"{n / cost['samples_wall_seconds']:.0f}",
+                         f"{1e3 * per_sample:.2f}", f"{cost['mean_steps_per_sample']:.2f}",
+                         f"{cost['mean_contact_solves_per_sample']:.1f}",
+                         f"{cost['factorizations_rank0'] / n_rank0:.2f}",
+                         f"{cost['reused_solves_rank0'] / n_rank0:.1f}",
+                         f"{p['K_mean']:.4f}", f"{p['K_std']:.4f}", f"{p['P_failure']:.4f}"])
+            print(" | ".join(rows[-1]), flush=True)
     lines = [
         "<!-- probabilistic-cost: written by benchmarks/probabilistic_cost.py; do not edit by hand -->",
         "## Probabilistic safety factor: cost of 10^4 samples",
         "",
-        f"The paper's slope at its default mesh (h = 1), {args.samples} Monte Carlo samples of c "
+        f"The paper's slope at its default mesh (h = 1), {' and '.join(map(str, args.samples))} "
+        "Monte Carlo samples of c "
         "(lognormal, COV 0.3) and phi (normal, COV 0.1) on its sliding surface, with FOSM and "
         "point estimates; stiffness check, VTU and report off. Wall time of the whole process "
         "from its start (mesh, factorisation, the deterministic K, the samples, output); "
@@ -71,8 +80,14 @@ def main():
         "cores shared with other work.",
         "",
     ] + common.markdown_table(
-        ["run", "process wall (s)", "probabilistic phase (s)", "samples / s", "ms per sample (per rank)",
-         "steps per sample", "contact solves per sample", "mean K", "std K", "P(K < 1)"], rows) + [
+        ["samples", "run", "process wall (s)", "probabilistic phase (s)", "samples / s",
+         "ms per sample (per rank)", "K steps per sample", "contact solves per sample",
+         "mixed-system factorisations per sample (rank 0)", "reused solves per sample (rank 0)",
+         "mean K", "std K", "P(K < 1)"], rows) + [
+        ""] + [
+        f"Target of the issue: 10^4 samples in under 10 s on 2 cores, the whole process: measured "
+        f"{r[2]} s ({r[1]}), {'met' if float(r[2]) < 10 else 'not met'}."
+        for r in rows if r[0] == "10000"] + [
         "",
         "<!-- /probabilistic-cost -->"]
     common.put_benchmarks_section(args.output, lines, "probabilistic-cost")

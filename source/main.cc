@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
-#include <fdem/model.h>
+#include <fdem/run/case_run.h>
 #include <fdem/parameters/parameters.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>

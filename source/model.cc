@@ -6,12 +6,6 @@
 #include <fdem/geometry/make_mesh.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/output_files.h>
-
-#include <fdem/analyses/anchors.h>
-#include <fdem/analyses/probabilistic.h>
-#include <fdem/analyses/safety_factor_analysis.h>
-#include <fdem/analyses/seismic.h>
-#include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_cost.h>
 
 #include <deal.II/base/mpi.h>
@@ -20,125 +14,21 @@
 #include <iomanip>
 #include <numeric>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <sstream>
 
 namespace fdem
 {
-  namespace
-  {
-    template <int dim>
-    std::size_t
-    n_pairs_of(const std::vector<contact::Interface<dim>> &interfaces)
-    {
-      std::size_t n = 0;
-      for (const auto &interface : interfaces)
-        n += interface.pairs.size();
-      return n;
-    }
-  } // namespace
-
   template <int dim>
   Model<dim>::Model(const parameters::Parameters &parameters,
-                    const std::string &           expanded_parameters,
                     std::ostream &                log,
                     std::ostream *                brief)
     : parameters(parameters)
-    , expanded_parameters(expanded_parameters)
     , log(log)
     , brief(brief != nullptr ? *brief : log)
-    , writes_files(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , is_writer(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(log, TimerOutput::never, TimerOutput::wall_times)
   {}
-
-  template <int dim>
-  void
-  Model<dim>::run()
-  {
-    const std::string directory = parameters.output_directory();
-    if (writes_files)
-      {
-        std::filesystem::create_directories(directory);
-        // A summary.json left from an earlier run must not pass for this one.
-        std::filesystem::remove(directory + "/summary.json");
-        std::ofstream out(directory + "/parameters.prm");
-        out << expanded_parameters;
-      }
-
-    // A progress line at the start of each phase: on a long run the screen
-    // says what the program is doing and how long it has taken so far.
-    progress("mesh");
-    make_geometry();
-    // Limit equilibrium on the generator's section: after the mesh, so that
-    // the generator's own checks of the surface come first; it needs only
-    // the parameters and takes a fraction of a second.
-    limit_equilibrium = analyses::model_limit_equilibrium(parameters);
-    progress("blocks: dofs, constraints, free rigid modes");
-    setup_blocks();
-    progress("assembly and factorisation");
-    assemble_and_factorize();
-    progress("node pairs of the interfaces");
-    build_interfaces();
-    progress("flexibility C of " + std::to_string(n_pairs_of(interfaces)) + " node pairs");
-    compute_flexibility();
-    // The anchors' load cases, before the seismic analyses (k_y with them).
-    analyses::add_anchor_loads(*this);
-    // The seismic load (and k_y, Newmark) before K: K is then that of the
-    // seismic load; without one the load stays the assembled one.
-    seismic = analyses::seismic_analyses(*this);
-    if (parameters.safety_factor.compute)
-      {
-        // With Output/Write steps, each step with a static solution can be
-        // looked at in ParaView, K as its time.
-        const std::function<void(double, double)> write_step = [this](const double K,
-                                                                        const double K_star) {
-          // The recovery is collective (the block solves): every rank comes here.
-          recover_block_displacements();
-          TimerOutput::Scope scope(timer, "output");
-          const unsigned int step = step_files.size() / (blocks.size() + interfaces.size());
-          std::ostringstream description;
-          description << "safety-factor step " << step << " with a static solution, K = "
-                      << std::setprecision(9) << K;
-          write_vtu("-step" + Utilities::int_to_string(step, 3),
-                    {K, K_star, description.str()},
-                    step_files);
-        };
-        safety_factor_result =
-          analyses::SafetyFactorAnalysis<dim>(*this,
-                                              parameters.output.write_vtu &&
-                                                  parameters.output.write_steps ?
-                                                write_step :
-                                                std::function<void(double, double)>())
-            .run();
-        // Beside K, the factor that stress-based programs report: one more
-        // solve on the same factorisations (after K, so as not to change
-        // the factors the iteration starts from).
-        fe_stress = analyses::fe_stress_factor(*mixed_system, pair_strengths(1.0), pairs_on_sliding_surface());
-        if (fe_stress.computed)
-          log << "FE-stress factor (every pair stuck, full strength): " << std::setprecision(8)
-              << fe_stress.factor << std::endl;
-        if (parameters.probabilistic.compute)
-          probabilistic = analyses::probabilistic_safety_factor(*this);
-      }
-    else
-      {
-        progress("contact problem");
-        solve_contact();
-      }
-    analyses::print_limit_equilibrium(limit_equilibrium, log);
-    if (contact_outcome.converged())
-      recover_block_displacements();
-    progress("output");
-    output_results();
-
-    progress("done");
-    timer.print_summary();
-    std::ostringstream memory; // not to leave the log's format changed
-    memory << std::fixed << std::setprecision(1) << postprocess::peak_memory_mib();
-    log << "Peak memory: " << memory.str() << " MiB" << std::endl;
-  }
 
   template <int dim>
   void
@@ -167,7 +57,7 @@ namespace fdem
   {
     TimerOutput::Scope scope(timer, "geometry");
     // Every rank makes the same mesh; rank 0 writes it.
-    const std::string  msh = writes_files && !validating ? parameters.output_directory() + "/mesh.msh" : "";
+    const std::string  msh = is_writer && !validating ? parameters.output_directory() + "/mesh.msh" : "";
     mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh,
                                     parameters.fe_degree, parameters.material_names);
 
@@ -370,7 +260,17 @@ namespace fdem
       n_dofs += block->dof_handler.n_dofs();
     brief << "Model: " << blocks.size() << (blocks.size() == 1 ? " block, " : " blocks, ") << n_dofs
           << " dofs; " << interfaces.size() << (interfaces.size() == 1 ? " interface, " : " interfaces, ")
-          << n_pairs_of(interfaces) << " node pairs" << std::endl;
+          << n_pairs() << " node pairs" << std::endl;
+  }
+
+  template <int dim>
+  std::size_t
+  Model<dim>::n_pairs() const
+  {
+    std::size_t n = 0;
+    for (const auto &interface : interfaces)
+      n += interface.pairs.size();
+    return n;
   }
 
   template <int dim>
@@ -468,8 +368,7 @@ namespace fdem
   Model<dim>::solve_contact(const std::vector<contact::PairStrength> &strengths,
                             const double                              strength_reduction_factor)
   {
-    if (strength_dependent_loads)
-      strength_dependent_loads(strength_reduction_factor);
+    apply_strength_dependent_loads(strength_reduction_factor);
     TimerOutput::Scope scope(timer, "contact");
     // Warm start from the last states with a static solution (Sec. 6).
     auto states = last_converged.states.size() == mixed_system->n_pairs() ?
@@ -535,8 +434,7 @@ namespace fdem
   {
     contact_outcome    = outcome;
     strength_reduction = K;
-    if (strength_dependent_loads)
-      strength_dependent_loads(K);
+    apply_strength_dependent_loads(K);
     if (outcome.converged())
       {
         last_converged   = outcome;
@@ -560,8 +458,7 @@ namespace fdem
       {
         contact_outcome    = last_converged;
         strength_reduction = last_converged_K;
-        if (strength_dependent_loads)
-          strength_dependent_loads(last_converged_K);
+        apply_strength_dependent_loads(last_converged_K);
       }
   }
 
@@ -575,7 +472,6 @@ namespace fdem
     for (const auto &block : blocks)
       block->assemble(parameters.loads);
     build_interfaces();
-    analyses::locate_anchors(*this);
   }
 
   template class Model<2>;

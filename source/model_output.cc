@@ -1,18 +1,14 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 
-// What a run of the Model writes: the blocks' displacements recovered from
-// the contact solution, VTU and PVD files, the interface CSV and
-// summary.json (postprocess/ holds the formats; this file only drives them).
+// The Model's state as output reads it: the blocks' displacements recovered
+// from the contact solution, the results per pair, the support reactions
+// and the VTU files of the current state (postprocess/ holds the formats).
 #include <fdem/model.h>
 #include <fdem/postprocess/block_output.h>
-#include <fdem/postprocess/hertz_reference.h>
-#include <fdem/postprocess/interface_csv.h>
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/interface_vtu.h>
 #include <fdem/postprocess/output_files.h>
-#include <fdem/postprocess/run_cost.h>
-#include <fdem/postprocess/summary.h>
 
 #include <algorithm>
 #include <cmath>
@@ -72,7 +68,7 @@ namespace fdem
   Model<dim>::write_vtu(const std::string                  &suffix,
                         const postprocess::OutputState     &state,
                         std::vector<postprocess::PvdEntry> &entries,
-                        const std::vector<Vector<double>>  *mechanism)
+                        const std::vector<Vector<double>>  *mechanism) const
   {
     const std::string directory = parameters.output_directory();
     const auto        results   = interface_results();
@@ -126,118 +122,43 @@ namespace fdem
   }
 
   template <int dim>
-  void
-  Model<dim>::output_results()
+  std::vector<double>
+  Model<dim>::support_reactions() const
   {
-    const std::string  directory = parameters.output_directory();
-    TimerOutput::Scope scope(timer, "output");
-
-    auto                 results = interface_results();
-    const nlohmann::json hertz   = postprocess::hertz_reference(*this, results);
-
-    // Without equilibrium there is no field to show: only the summary says why.
-    const bool converged = contact_outcome.converged();
-    if (converged && writes_files)
-      {
-        // Each interface from its upper end: against gravity.
-        Tensor<1, dim> up;
-        for (unsigned int d = 0; d < dim; ++d)
-          up[d] = -parameters.loads.gravity_direction[d];
-        postprocess::write_interface_csv(directory + "/interfaces.csv",
-                                         interfaces,
-                                         results,
-                                         up);
-      }
-    if (converged && parameters.output.write_vtu)
-      {
-        postprocess::OutputState state;
-        state.K = strength_reduction;
-        // The mechanism: from the elastic state with every pair stuck (the
-        // FE-stress factor's, same loads) to this one: one more solve per
-        // block (collective), where the safety factor was computed.
-        std::vector<Vector<double>> mechanism;
-        const auto                 &all_stick = fe_stress.all_stick;
-        if (parameters.safety_factor.compute && all_stick.solved &&
-            all_stick.forces.size() == dim * mixed_system->n_pairs())
-          {
-            mechanism = block_displacements(all_stick);
-            for (unsigned int b = 0; b < blocks.size(); ++b)
-              mechanism[b].sadd(-1.0, 1.0, displacements[b]);
-          }
-        if (parameters.safety_factor.compute)
-          {
-            for (const auto &step : safety_factor_result.steps)
-              if (step.K == strength_reduction && step.solution.has_factor())
-                state.K_star = step.K_star;
-            state.description =
-              "final state: the last state of the safety-factor iteration "
-              "with a static solution";
-          }
-        else
-          state.description =
-            "final state: the contact problem at full strength";
-        std::vector<postprocess::PvdEntry> entries;
-        write_vtu("", state, entries, mechanism.empty() ? nullptr : &mechanism);
-        if (writes_files)
-          postprocess::write_pvd(directory + "/solution.pvd", entries);
-        // The steps' files if they were written, else the final state's.
-        if (parameters.safety_factor.compute && writes_files)
-          postprocess::write_pvd(directory + "/safety_factor_steps.pvd",
-                                 step_files.empty() ? entries : step_files);
-      }
-    // Reactions at the minimal support, zero at equilibrium: a pass over all
-    // cells, timed as output.
     std::vector<double> reactions(blocks.size(), 0.0);
-    if (converged)
-      for (unsigned int b = 0; b < blocks.size(); ++b)
-        {
-          Vector<double> residual = blocks[b]->nodal_residual(displacements[b]);
-          residual +=
-            load_change(b); // the assembled cells have the assembled load
-          for (const auto dof : blocks[b]->support_dofs)
-            reactions[b] = std::max(reactions[b], std::abs(residual[dof]));
-        }
-    scope.stop();
-
-    summary = postprocess::make_summary(*this,
-                                        results,
-                                        hertz,
-                                        reactions,
-                                        parameters.safety_factor.compute ?
-                                          &safety_factor_result :
-                                          nullptr);
-    if (seismic.active)
-      summary["seismic"] = analyses::to_json(seismic);
-    if (reinforcement_output)
-      summary["reinforcement"] = reinforcement_output();
-    if (!probabilistic.is_null())
-      summary["probabilistic"] = probabilistic;
-    // The only entries that differ between two runs of the same input.
-    summary["timings"] =
-      postprocess::section_wall_times(timer, run_timer.wall_time());
-    summary["peak_memory_MiB"] = postprocess::peak_memory_mib();
-    if (writes_files)
-      postprocess::write_json(directory + "/summary.json", summary);
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      {
+        Vector<double> residual = blocks[b]->nodal_residual(displacements[b]);
+        residual +=
+          load_change(b); // the assembled cells have the assembled load
+        for (const auto dof : blocks[b]->support_dofs)
+          reactions[b] = std::max(reactions[b], std::abs(residual[dof]));
+      }
+    return reactions;
   }
 
   template void
   Model<2>::recover_block_displacements();
   template void
   Model<3>::recover_block_displacements();
-  template void
-  Model<2>::output_results();
-  template void
-  Model<3>::output_results();
+  template std::vector<double>
+  Model<2>::support_reactions() const;
+  template std::vector<double>
+  Model<3>::support_reactions() const;
+  template std::vector<std::vector<postprocess::PairResult<2>>>
+  Model<2>::interface_results() const;
+  template std::vector<std::vector<postprocess::PairResult<3>>>
+  Model<3>::interface_results() const;
   template void
   Model<2>::write_vtu(const std::string &,
                       const postprocess::OutputState &,
                       std::vector<postprocess::PvdEntry> &,
-                      const std::vector<Vector<double>> *);
+                      const std::vector<Vector<double>> *) const;
   template void
   Model<3>::write_vtu(const std::string &,
                       const postprocess::OutputState &,
                       std::vector<postprocess::PvdEntry> &,
-                      const std::vector<Vector<double>> *);
+                      const std::vector<Vector<double>> *) const;
   template std::vector<Vector<double>>
   Model<2>::block_displacements(const contact::ContactSolution &) const;
   template std::vector<Vector<double>>

@@ -71,16 +71,16 @@ namespace
   {
     parameters.solver.direct_solver = solver;
     static std::ostringstream log;
-    auto model = std::make_unique<Model<dim>>(parameters, "", log);
+    auto model = std::make_unique<Model<dim>>(parameters, log);
     model->make_geometry();
     model->setup_blocks();
     if (extra_constraint)
       {
-        const auto &groups = model->mesh.face_group_names;
+        const auto &groups = model->get_mesh().face_group_names;
         const dealii::types::boundary_id group =
           std::find(groups.begin(), groups.end(), parameters.interface_names.at(0)) -
           groups.begin();
-        for (auto &block : model->blocks)
+        for (auto &block : model->get_blocks())
           constrain_one_interface_dof(*block, group);
       }
     model->assemble_and_factorize();
@@ -116,15 +116,15 @@ namespace
     const auto mumps     = factorised_model<dim>(parameters, parameters::DirectSolverType::mumps, extra_constraint);
     const auto umfpack   = factorised_model<dim>(parameters, parameters::DirectSolverType::umfpack, extra_constraint);
     const auto cholmod   = factorised_model<dim>(parameters, parameters::DirectSolverType::cholmod, extra_constraint);
-    ASSERT_EQ(reference->blocks.size(), schur->blocks.size());
+    ASSERT_EQ(reference->get_blocks().size(), schur->get_blocks().size());
 
     unsigned int n_floating = 0, n_constrained_pair_dofs = 0;
-    for (unsigned int b = 0; b < reference->blocks.size(); ++b)
+    for (unsigned int b = 0; b < reference->get_blocks().size(); ++b)
       {
-        const auto &block = *reference->blocks[b];
+        const auto &block = *reference->get_blocks()[b];
         n_floating += block.n_free_rigid_modes() > 0;
         std::vector<dealii::types::global_dof_index> dofs;
-        for (const auto &interface : reference->interfaces)
+        for (const auto &interface : reference->get_interfaces())
           for (const auto &pair : interface.pairs)
             {
               if (interface.block_I == b)
@@ -142,15 +142,15 @@ namespace
 
         const dealii::FullMatrix<double> C_reference = block.flexibility(dofs);
         dealii::FullMatrix<double>       C_schur(dofs.size(), dofs.size());
-        ASSERT_TRUE(schur->blocks[b]->flexibility_from_schur(dofs, C_schur)) << block.name;
+        ASSERT_TRUE(schur->get_blocks()[b]->flexibility_from_schur(dofs, C_schur)) << block.name;
         // Two exact factorisations of the same K (condition ~1e6 here):
         // they agree to round-off times the condition, far below 1e-10.
         EXPECT_LT(relative_difference(C_schur, C_reference), 1e-10) << block.name;
-        EXPECT_LT(relative_difference(mumps->blocks[b]->flexibility(dofs), C_reference), 1e-10)
+        EXPECT_LT(relative_difference(mumps->get_blocks()[b]->flexibility(dofs), C_reference), 1e-10)
           << block.name;
-        EXPECT_LT(relative_difference(umfpack->blocks[b]->flexibility(dofs), C_reference), 1e-10)
+        EXPECT_LT(relative_difference(umfpack->get_blocks()[b]->flexibility(dofs), C_reference), 1e-10)
           << block.name;
-        EXPECT_LT(relative_difference(cholmod->blocks[b]->flexibility(dofs), C_reference), 1e-10)
+        EXPECT_LT(relative_difference(cholmod->get_blocks()[b]->flexibility(dofs), C_reference), 1e-10)
           << block.name;
         // Constrained dofs: a fixed or support dof has zero flexibility.
         for (unsigned int r = 0; r < dofs.size(); ++r)
@@ -170,17 +170,17 @@ namespace
           --interior;
         dofs.push_back(interior);
         dealii::FullMatrix<double> unused(dofs.size(), dofs.size());
-        EXPECT_FALSE(schur->blocks[b]->flexibility_from_schur(dofs, unused));
-        EXPECT_LT(relative_difference(schur->blocks[b]->flexibility(dofs), block.flexibility(dofs)),
+        EXPECT_FALSE(schur->get_blocks()[b]->flexibility_from_schur(dofs, unused));
+        EXPECT_LT(relative_difference(schur->get_blocks()[b]->flexibility(dofs), block.flexibility(dofs)),
                   1e-10)
           << block.name;
 
         // And a full solve through the Schur factors.
         const dealii::Vector<double> u_reference = block.solve(block.load_vector);
-        dealii::Vector<double>       u = schur->blocks[b]->solve(block.load_vector);
+        dealii::Vector<double>       u = schur->get_blocks()[b]->solve(block.load_vector);
         u -= u_reference;
         EXPECT_LT(u.linfty_norm(), 1e-10 * u_reference.linfty_norm()) << block.name;
-        u = cholmod->blocks[b]->solve(block.load_vector);
+        u = cholmod->get_blocks()[b]->solve(block.load_vector);
         u -= u_reference;
         EXPECT_LT(u.linfty_norm(), 1e-10 * u_reference.linfty_norm()) << block.name;
       }
@@ -224,10 +224,10 @@ TEST(Flexibility, PaperSlopeSafetyFactorUnchanged)
       parameters.solver.direct_solver = s == 0 ? parameters::DirectSolverType::amesos_klu :
                                                  parameters::DirectSolverType::mumps_schur;
       std::ostringstream log;
-      Model<2>           model(parameters, "", log);
+      CaseRun<2>           model(parameters, "", log);
       model.run();
-      ASSERT_EQ(model.summary["status"], "completed");
-      K[s] = model.summary["safety_factor"];
+      ASSERT_EQ(model.summary()["status"], "completed");
+      K[s] = model.summary()["safety_factor"];
     }
   EXPECT_NEAR(K[1], K[0], 1e-10 * K[0]);
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/model.h>
+#include <fdem/run/case_run.h>
 
 #include <unistd.h>
 
@@ -45,7 +46,7 @@ namespace fdem
     std::unique_ptr<Model<dim>>
     factorised_model(const parameters::Parameters &parameters, std::ostream &log)
     {
-      auto model = std::make_unique<Model<dim>>(parameters, "", log);
+      auto model = std::make_unique<Model<dim>>(parameters, log);
       model->make_geometry();
       model->setup_blocks();
       model->assemble_and_factorize();

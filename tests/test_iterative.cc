@@ -59,36 +59,36 @@ namespace
     if (base.safety_factor.compute)
       {
         std::ostringstream dense_log, iterative_log;
-        Model<dim>         dense(with_solver(base, "dense"), "", dense_log);
-        Model<dim>         iterative(with_solver(base, "iterative"), "", iterative_log);
+        CaseRun<dim>         dense(with_solver(base, "dense"), "", dense_log);
+        CaseRun<dim>         iterative(with_solver(base, "iterative"), "", iterative_log);
         dense.run();
         iterative.run();
-        ASSERT_EQ(dense.summary["status"], "completed");
-        ASSERT_EQ(iterative.summary["status"], "completed") << iterative_log.str();
-        EXPECT_GT(iterative.summary["contact"]["n_gmres_iterations"].template get<unsigned long>(),
+        ASSERT_EQ(dense.summary()["status"], "completed");
+        ASSERT_EQ(iterative.summary()["status"], "completed") << iterative_log.str();
+        EXPECT_GT(iterative.summary()["contact"]["n_gmres_iterations"].template get<unsigned long>(),
                   0u);
-        EXPECT_EQ(iterative.summary["contact"]["n_factorizations"].template get<unsigned int>(),
+        EXPECT_EQ(iterative.summary()["contact"]["n_factorizations"].template get<unsigned int>(),
                   0u);
-        const double K_dense     = dense.summary["safety_factor"].template get<double>();
-        const double K_iterative = iterative.summary["safety_factor"].template get<double>();
+        const double K_dense     = dense.summary()["safety_factor"].template get<double>();
+        const double K_iterative = iterative.summary()["safety_factor"].template get<double>();
         EXPECT_NEAR(K_iterative, K_dense, 1e-9 * K_dense) << name;
       }
 
     std::ostringstream log;
     const auto dense     = test_support::solved_model<dim>(with_solver(base, "dense"), log);
     const auto iterative = test_support::solved_model<dim>(with_solver(base, "iterative"), log);
-    ASSERT_TRUE(dense->contact_outcome.converged());
-    ASSERT_TRUE(iterative->contact_outcome.converged());
-    EXPECT_TRUE(iterative->mixed_system->flexibility.empty()) << "C must not be formed";
-    const auto &states_dense     = dense->contact_outcome.states;
-    const auto &states_iterative = iterative->contact_outcome.states;
+    ASSERT_TRUE(dense->get_contact_outcome().converged());
+    ASSERT_TRUE(iterative->get_contact_outcome().converged());
+    EXPECT_TRUE(iterative->get_mixed_system().flexibility.empty()) << "C must not be formed";
+    const auto &states_dense     = dense->get_contact_outcome().states;
+    const auto &states_iterative = iterative->get_contact_outcome().states;
     ASSERT_EQ(states_dense.size(), states_iterative.size());
     unsigned int n_different = 0;
     for (unsigned int p = 0; p < states_dense.size(); ++p)
       n_different += states_dense[p].status != states_iterative[p].status;
     EXPECT_EQ(n_different, 0u) << name;
-    EXPECT_LT(relative_difference(dense->contact_outcome.solution.forces,
-                                  iterative->contact_outcome.solution.forces),
+    EXPECT_LT(relative_difference(dense->get_contact_outcome().solution.forces,
+                                  iterative->get_contact_outcome().solution.forces),
               1e-8)
       << name;
   }
@@ -129,13 +129,13 @@ TEST(IterativeMixedSystem, BlockOnPlaneThreeDExactLimit)
   // in 3D (the slip rows are nonsymmetric).
   check_same_as_dense<3>("block_on_plane_3d.prm");
   std::ostringstream log;
-  Model<3> model(with_solver(test_support::case_parameters("block_on_plane_3d.prm"), "iterative"),
+  CaseRun<3> model(with_solver(test_support::case_parameters("block_on_plane_3d.prm"), "iterative"),
                  "",
                  log);
   model.run();
   const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
   const double exact = (15.0 * 60 + W * std::cos(dip) * std::tan(PI / 6)) / (W * std::sin(dip));
-  EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
 }
 
 TEST(IterativeMixedSystem, InclinedBlockExactLimitForAnyStrength)
@@ -160,10 +160,10 @@ TEST(IterativeMixedSystem, InclinedBlockExactLimitForAnyStrength)
         (c * geometry.block_length + W * std::cos(theta) * std::tan(phi * PI / 180)) /
         (W * std::sin(theta));
       std::ostringstream log;
-      Model<2>           model(parameters, "", log);
+      CaseRun<2>           model(parameters, "", log);
       model.run();
-      ASSERT_EQ(model.summary["status"], "completed") << log.str();
-      EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
+      ASSERT_EQ(model.summary()["status"], "completed") << log.str();
+      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact)
         << "c = " << c << ", phi = " << phi;
     }
 }
@@ -177,9 +177,9 @@ TEST(IterativeMixedSystem, PairBlocksFromEntriesOfTheInverseAndTheirProjection)
   const parameters::Parameters base = test_support::case_parameters("block_on_plane_3d.prm");
   const auto dense     = test_support::solved_model<3>(with_solver(base, "dense"), log);
   const auto iterative = test_support::solved_model<3>(with_solver(base, "iterative"), log);
-  const auto &system   = *iterative->mixed_system;
-  const dealii::FullMatrix<double> &C = dense->mixed_system->flexibility;
-  const dealii::FullMatrix<double> &W = dense->mixed_system->rigid_coupling;
+  const auto &system   = iterative->get_mixed_system();
+  const dealii::FullMatrix<double> &C = dense->get_mixed_system().flexibility;
+  const dealii::FullMatrix<double> &W = dense->get_mixed_system().rigid_coupling;
   ASSERT_EQ(W.n(), 6u);
 
   dealii::FullMatrix<double> WtW(6, 6), P(C.m(), C.m()), PCP(C.m(), C.m()), CP(C.m(), C.m());
@@ -226,9 +226,9 @@ TEST(IterativeMixedSystem, NoEquilibriumIsFoundToo)
   for (const std::string solver : {"dense", "iterative"})
     {
       std::ostringstream log;
-      Model<2>           model(with_solver(parameters, solver), "", log);
+      CaseRun<2>           model(with_solver(parameters, solver), "", log);
       model.run();
-      EXPECT_FALSE(model.contact_outcome.converged()) << solver;
-      EXPECT_NE(model.summary["status"], "completed") << solver;
+      EXPECT_FALSE(model.model().get_contact_outcome().converged()) << solver;
+      EXPECT_NE(model.summary()["status"], "completed") << solver;
     }
 }

@@ -54,13 +54,13 @@ namespace
   }
 
   /** The model run through its safety factor. */
-  std::unique_ptr<Model<2>>
+  std::unique_ptr<CaseRun<2>>
   run(const parameters::Parameters &p)
   {
     std::ostringstream log;
-    auto               model = std::make_unique<Model<2>>(p, "", log);
+    auto               model = std::make_unique<CaseRun<2>>(p, "", log);
     model->run();
-    EXPECT_TRUE(model->safety_factor_result.converged) << log.str();
+    EXPECT_TRUE(model->results().safety_factor.converged) << log.str();
     return model;
   }
 
@@ -144,34 +144,40 @@ namespace
   compare_with_hand(const parameters::Parameters &p,
                     const bool                    same_friction_angle)
   {
-    const auto material           = run(p);
-    const auto by_hand            = run(interfaces_by_hand(p, material->mesh));
-    const auto strengths_material = material->pair_strengths(1.0);
-    const auto strengths_by_hand  = by_hand->pair_strengths(1.0);
+    const auto material = run(p);
+    const auto by_hand =
+      run(interfaces_by_hand(p, material->model().get_mesh()));
+    const auto strengths_material = material->model().pair_strengths(1.0);
+    const auto strengths_by_hand  = by_hand->model().pair_strengths(1.0);
     // The pairs of the hand model by position; junction nodes of two
     // segments are paired in the first and marked.
     std::map<std::pair<double, double>, std::pair<unsigned int, bool>>
                                                     by_position;
     std::set<std::pair<unsigned int, unsigned int>> shared;
-    for (const auto &interface : by_hand->interfaces)
+    for (const auto &interface : by_hand->model().get_interfaces())
       for (const auto &node : interface.shared_nodes)
         shared.emplace(node.interface, node.pair);
     unsigned int p_hand = 0;
-    for (unsigned int i = 0; i < by_hand->interfaces.size(); ++i)
-      for (unsigned int k = 0; k < by_hand->interfaces[i].pairs.size();
+    for (unsigned int i = 0; i < by_hand->model().get_interfaces().size(); ++i)
+      for (unsigned int k = 0;
+           k < by_hand->model().get_interfaces()[i].pairs.size();
            ++k, ++p_hand)
         {
-          const auto &x = by_hand->interfaces[i].pairs[k].position_J;
+          const auto &x =
+            by_hand->model().get_interfaces()[i].pairs[k].position_J;
           by_position[{std::round(x[0] * 1e6), std::round(x[1] * 1e6)}] = {
             p_hand, shared.count({i, k}) == 1};
         }
     EXPECT_EQ(by_position.size(), strengths_material.size());
     unsigned int n_junctions  = 0;
     double       max_cohesion = 0, cohesion_error = 0, friction_error = 0;
-    for (unsigned int k = 0; k < material->interfaces[0].pairs.size(); ++k)
+    for (unsigned int k = 0;
+         k < material->model().get_interfaces()[0].pairs.size();
+         ++k)
       {
-        const auto &x = material->interfaces[0].pairs[k].position_J;
-        const auto  it =
+        const auto &x =
+          material->model().get_interfaces()[0].pairs[k].position_J;
+        const auto it =
           by_position.find({std::round(x[0] * 1e6), std::round(x[1] * 1e6)});
         EXPECT_TRUE(it != by_position.end());
         if (it == by_position.end())
@@ -196,13 +202,13 @@ namespace
     EXPECT_LT(cohesion_error, 1e-12 * max_cohesion);
     EXPECT_LT(friction_error, 1e-14);
     std::cout << "  K material " << std::setprecision(12)
-              << material->safety_factor_result.safety_factor << ", by hand "
-              << by_hand->safety_factor_result.safety_factor << "; "
+              << material->results().safety_factor.safety_factor << ", by hand "
+              << by_hand->results().safety_factor.safety_factor << "; "
               << n_junctions << " junction pairs" << std::endl;
-    Comparison result{material->safety_factor_result.safety_factor,
-                      by_hand->safety_factor_result.safety_factor};
+    Comparison result{material->results().safety_factor.safety_factor,
+                      by_hand->results().safety_factor.safety_factor};
     for (unsigned int k = 0; k < strengths_material.size(); ++k)
-      if (material->contact_outcome.states[k].status ==
+      if (material->model().get_contact_outcome().states[k].status ==
           contact::PairStatus::open)
         result.open_cohesion += strengths_material[k].cohesion_force;
     return result;
@@ -277,11 +283,11 @@ TEST(Layers, MaterialStrengthEqualsOneInterfacePerLayerByHand)
   const double L_fill = start.distance(in) + out.distance(end),
                L_clay = in.distance(out);
   std::ostringstream log;
-  Model<2>           model(p, "", log);
+  Model<2>           model(p, log);
   model.make_geometry();
   model.setup_blocks();
   model.assemble_and_factorize();
-  const auto &mass = *model.blocks[0];
+  const auto &mass = *model.get_blocks()[0];
   ASSERT_EQ(mass.name, "sliding mass");
   double W = 0;
   // The y components: dofs come in component order at each support point.

@@ -33,15 +33,15 @@ TEST(LoadCases, DefaultCombinationIsTheAssembledLoadBitForBit)
   std::ostringstream log;
   auto               model = test_support::factorised_model<2>(
     test_support::case_parameters("inclined_block.prm"), log);
-  const Vector<double> gap   = model->mixed_system->external_gap;
-  const Vector<double> rigid = model->mixed_system->rigid_loads;
+  const Vector<double> gap   = model->get_mixed_system().external_gap;
+  const Vector<double> rigid = model->get_mixed_system().rigid_loads;
   const auto           cases = model->body_force_cases(false);
   ASSERT_EQ(cases.size(), 2u);
   model->set_load_combination(1, {0, 0});
   for (unsigned int i = 0; i < gap.size(); ++i)
-    ASSERT_EQ(model->mixed_system->external_gap[i], gap[i]);
+    ASSERT_EQ(model->get_mixed_system().external_gap[i], gap[i]);
   for (unsigned int i = 0; i < rigid.size(); ++i)
-    ASSERT_EQ(model->mixed_system->rigid_loads[i], rigid[i]);
+    ASSERT_EQ(model->get_mixed_system().rigid_loads[i], rigid[i]);
 }
 
 TEST(LoadCases, GravityIsTheCombinationOfTheBodyForceCases)
@@ -55,21 +55,24 @@ TEST(LoadCases, GravityIsTheCombinationOfTheBodyForceCases)
       auto               model =
         test_support::factorised_model<2>(test_support::case_parameters(name),
                                           log);
-      const auto          gap   = model->mixed_system->external_gap;
-      const auto          rigid = model->mixed_system->rigid_loads;
-      const auto          load  = model->blocks[0]->load_vector;
+      const auto          gap   = model->get_mixed_system().external_gap;
+      const auto          rigid = model->get_mixed_system().rigid_loads;
+      const auto          load  = model->get_blocks()[0]->load_vector;
       const auto          cases = model->body_force_cases(true);
       std::vector<double> c(2);
       for (unsigned int d = 0; d < 2; ++d)
-        c[cases[d]] = model->parameters.loads.gravity_direction[d];
+        c[cases[d]] = model->get_parameters().loads.gravity_direction[d];
       model->set_load_combination(0, c);
-      EXPECT_LT(relative_difference(model->mixed_system->external_gap, gap),
+      EXPECT_LT(relative_difference(model->get_mixed_system().external_gap,
+                                    gap),
                 1e-12)
         << name;
-      EXPECT_LT(relative_difference(model->mixed_system->rigid_loads, rigid),
+      EXPECT_LT(relative_difference(model->get_mixed_system().rigid_loads,
+                                    rigid),
                 1e-12)
         << name;
-      EXPECT_LT(relative_difference(model->blocks[0]->load_vector, load), 1e-12)
+      EXPECT_LT(relative_difference(model->get_blocks()[0]->load_vector, load),
+                1e-12)
         << name;
     }
 }

@@ -29,11 +29,11 @@ namespace
   free_modes_of(const std::string &prm)
   {
     std::ostringstream log;
-    Model<2>           model(test_support::case_parameters(prm), "", log);
+    Model<2>           model(test_support::case_parameters(prm), log);
     model.make_geometry();
     model.setup_blocks();
     std::vector<unsigned int> modes;
-    for (const auto &block : model.blocks)
+    for (const auto &block : model.get_blocks())
       modes.push_back(block->n_free_rigid_modes());
     return modes;
   }
@@ -62,26 +62,26 @@ namespace
     const parameters::Parameters parameters = unbreakable(input);
     std::ostringstream           log;
     const auto model = test_support::solved_model<2>(parameters, log);
-    ASSERT_TRUE(model->contact_outcome.converged());
-    for (const auto &state : model->contact_outcome.states)
+    ASSERT_TRUE(model->get_contact_outcome().converged());
+    for (const auto &state : model->get_contact_outcome().states)
       ASSERT_EQ(state.status, contact::PairStatus::stick);
 
     // The merged model: every block's cells in one mesh, nodes shared.
     // Its cells keep their material keys (block and material region).
     std::vector<unsigned int>                              all_blocks;
     std::map<unsigned int, parameters::MaterialParameters> materials;
-    for (unsigned int b = 0; b < model->blocks.size(); ++b)
+    for (unsigned int b = 0; b < model->get_blocks().size(); ++b)
       {
         all_blocks.push_back(b);
-        materials.merge(blocks::block_materials(model->mesh, parameters, b));
+        materials.merge(blocks::block_materials(model->get_mesh(), parameters, b));
       }
-    blocks::ElasticBlock<2> merged("merged", model->mesh, all_blocks, materials,
+    blocks::ElasticBlock<2> merged("merged", model->get_mesh(), all_blocks, materials,
                                    parameters.fe_degree);
-    merged.water_table = model->blocks[0]->water_table;
+    merged.water_table = model->get_blocks()[0]->water_table;
     std::map<dealii::types::boundary_id, parameters::BoundaryParameters> conditions;
     for (const std::string &name : parameters.boundary_names)
       {
-        const auto &groups = model->mesh.face_group_names;
+        const auto &groups = model->get_mesh().face_group_names;
         conditions[std::find(groups.begin(), groups.end(), name) - groups.begin()] =
           parameters.boundaries.at(name);
       }
@@ -116,13 +116,13 @@ namespace
       return dofs;
     };
 
-    const auto &interface = model->interfaces.at(0);
+    const auto &interface = model->get_interfaces().at(0);
     const unsigned int J  = interface.block_J;
     // Force of block I on block J at a node of J: K_J u - F_J over J's cells.
     // Summed over J's materials: the residual is additive over cells.
     Vector<double> force_on_J(merged.dof_handler.n_dofs());
     for (const auto &[key, material] : materials)
-      if (model->mesh.block_of_key(key) == J)
+      if (model->get_mesh().block_of_key(key) == J)
         force_on_J += merged.nodal_residual(u, key);
 
     double max_u = u.linfty_norm(), max_f = 0, error_u = 0, error_f = 0;
@@ -132,16 +132,16 @@ namespace
         const auto  dofs  = merged_dofs_at(pair.position_J);
         Tensor<1, 2> local;
         for (unsigned int d = 0; d < 2; ++d)
-          local[d] = model->contact_outcome.solution.forces[2 * k + d];
+          local[d] = model->get_contact_outcome().solution.forces[2 * k + d];
         const Tensor<1, 2> f = transpose(pair.frame) * local;
         for (unsigned int d = 0; d < 2; ++d)
           {
             // Both sides of the pair move with the merged node.
             error_u = std::max(error_u,
-                               std::abs(model->displacements[interface.block_I][pair.dofs_I[d]] -
+                               std::abs(model->get_displacements()[interface.block_I][pair.dofs_I[d]] -
                                         u[dofs[d]]));
             error_u = std::max(error_u,
-                               std::abs(model->displacements[J][pair.dofs_J[d]] - u[dofs[d]]));
+                               std::abs(model->get_displacements()[J][pair.dofs_J[d]] - u[dofs[d]]));
             error_f = std::max(error_f, std::abs(f[d] - force_on_J[dofs[d]]));
             max_f   = std::max(max_f, std::abs(force_on_J[dofs[d]]));
           }
@@ -211,7 +211,7 @@ TEST(Flexibility, IsSymmetricPositiveDefinite)
   auto               parameters       = test_support::case_parameters("paper_slope.prm");
   parameters.geometry.slope.mesh_size = 2.0;
   const auto model                    = test_support::solved_model<2>(unbreakable(parameters), log);
-  const auto &C                       = model->mixed_system->flexibility;
+  const auto &C                       = model->get_mixed_system().flexibility;
   double      max_entry = 0, asymmetry = 0;
   for (unsigned int i = 0; i < C.m(); ++i)
     for (unsigned int j = 0; j < C.n(); ++j)
@@ -243,13 +243,13 @@ TEST(MinimalSupport, ReactionsVanishAtEquilibrium)
       auto               parameters       = test_support::case_parameters(prm);
       parameters.geometry.slope.mesh_size = 2.0;
       const auto model = test_support::solved_model<2>(unbreakable(parameters), log);
-      for (unsigned int b = 0; b < model->blocks.size(); ++b)
+      for (unsigned int b = 0; b < model->get_blocks().size(); ++b)
         {
-          const auto &block = *model->blocks[b];
+          const auto &block = *model->get_blocks()[b];
           if (block.n_free_rigid_modes() == 0)
             continue;
           EXPECT_EQ(block.support_dofs.size(), block.n_free_rigid_modes());
-          const Vector<double> residual = block.nodal_residual(model->displacements[b]);
+          const Vector<double> residual = block.nodal_residual(model->get_displacements()[b]);
           for (const auto dof : block.support_dofs)
             EXPECT_LT(std::abs(residual[dof]), 1e-9 * block.load_vector.l1_norm())
               << prm << ", block " << block.name;

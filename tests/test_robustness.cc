@@ -64,9 +64,9 @@ namespace
     i.tensile_strength /= s * s;
 
     std::ostringstream log;
-    Model<2>           model(p, "", log);
+    CaseRun<2>           model(p, "", log);
     model.run();
-    const nlohmann::json &summary = model.summary;
+    const nlohmann::json &summary = model.summary();
     // Never a NaN where a number is reported.
     if (summary["safety_factor"].is_number())
       {
@@ -198,15 +198,15 @@ namespace
   double
   planar_factor_without_open(const Model<2> &model)
   {
-    const auto & p      = model.parameters;
+    const auto & p      = model.get_parameters();
     const auto & g      = p.geometry.inclined_block;
     const auto & i      = p.interfaces.at("sliding surface");
     const double theta  = g.inclination * PI / 180;
     const double W      = p.materials.at("block").unit_weight * g.block_length * g.block_height;
     double       closed = 0;
-    for (unsigned int k = 0; k < model.interfaces[0].pairs.size(); ++k)
-      if (model.contact_outcome.states[k].status != contact::PairStatus::open)
-        closed += model.interfaces[0].pairs[k].area;
+    for (unsigned int k = 0; k < model.get_interfaces()[0].pairs.size(); ++k)
+      if (model.get_contact_outcome().states[k].status != contact::PairStatus::open)
+        closed += model.get_interfaces()[0].pairs[k].area;
     return (i.cohesion * closed + W * std::cos(theta) * std::tan(i.friction_angle * PI / 180)) /
            (W * std::sin(theta));
   }
@@ -223,20 +223,20 @@ TEST(Robustness, StatusCycleIsDetectedAndBroken)
   // solve converge.
   std::ostringstream log;
   const auto p     = heel_case(10, 5, 35, 30);
-  auto       model = std::make_unique<Model<2>>(p, "", log);
+  auto       model = std::make_unique<Model<2>>(p, log);
   model->make_geometry();
   model->setup_blocks();
   model->assemble_and_factorize();
   model->build_interfaces();
   model->compute_flexibility();
   model->solve_contact(1.0);
-  ASSERT_TRUE(model->contact_outcome.converged()) << log.str();
+  ASSERT_TRUE(model->get_contact_outcome().converged()) << log.str();
   const double W = 25.0 * 10 * 5, theta = PI / 6;
   const double K_1 = (5 * (10 - 0.5) + W * std::cos(theta) * std::tan(35 * PI / 180)) /
                      (W * std::sin(theta));
   EXPECT_NEAR(planar_factor_without_open(*model), K_1, 1e-12 * K_1);
   model->solve_contact(K_1);
-  const auto &outcome = model->contact_outcome;
+  const auto &outcome = model->get_contact_outcome();
   ASSERT_TRUE(outcome.converged()) << log.str();
   EXPECT_GT(outcome.n_cycles_broken, 0u) << log.str();
   unsigned int n_at_cutoff = 0;
@@ -269,12 +269,12 @@ TEST(Robustness, SafetyFactorThroughStatusCyclesIsExact)
                                std::to_string(c.friction_angle) + ", theta " +
                                std::to_string(c.inclination);
       std::ostringstream log;
-      Model<2>           model(heel_case(c.n_along, c.cohesion, c.friction_angle, c.inclination), "", log);
+      CaseRun<2>           model(heel_case(c.n_along, c.cohesion, c.friction_angle, c.inclination), "", log);
       model.run();
       EXPECT_NE(log.str().find("status cycle"), std::string::npos) << name;
-      ASSERT_EQ(model.summary["status"], "completed") << name << "\n" << log.str();
-      ASSERT_TRUE(model.contact_outcome.converged()) << name;
-      const double exact = planar_factor_without_open(model);
-      EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact) << name;
+      ASSERT_EQ(model.summary()["status"], "completed") << name << "\n" << log.str();
+      ASSERT_TRUE(model.model().get_contact_outcome().converged()) << name;
+      const double exact = planar_factor_without_open(model.model());
+      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact) << name;
     }
 }

@@ -142,21 +142,21 @@ namespace
   }
 
   /** Runs the case: the model after run(), with its log on failure. */
-  std::unique_ptr<Model<2>>
+  std::unique_ptr<CaseRun<2>>
   run(const parameters::Parameters &p, std::ostringstream &log)
   {
-    auto model = std::make_unique<Model<2>>(p, "", log);
+    auto model = std::make_unique<CaseRun<2>>(p, "", log);
     model->run();
     // Never a NaN where a number is reported, and a converged K only from a
     // contact problem that converged.
-    const auto &summary = model->summary;
+    const auto &summary = model->summary();
     if (summary["safety_factor"].is_number())
       {
         EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>()));
       }
     if (summary["converged"].get<bool>())
       {
-        EXPECT_TRUE(model->contact_outcome.converged());
+        EXPECT_TRUE(model->model().get_contact_outcome().converged());
       }
     return model;
   }
@@ -167,9 +167,9 @@ namespace
    * exact answer.
    */
   bool
-  exact_or_clear_failure(const Model<2> &model, const double exact, const std::string &name)
+  exact_or_clear_failure(const CaseRun<2> &model, const double exact, const std::string &name)
   {
-    const auto &summary = model.summary;
+    const auto &summary = model.summary();
     if (summary["status"] == "completed")
       {
         EXPECT_TRUE(summary["converged"].get<bool>()) << name;
@@ -194,7 +194,7 @@ namespace
 namespace
 {
   /** The block floating delta above the plane: every pair starts open. */
-  std::unique_ptr<Model<2>>
+  std::unique_ptr<CaseRun<2>>
   run_uniform_gap(const double delta, std::ostringstream &log, double *exact)
   {
     const std::vector<double> gaps(11, delta);
@@ -215,11 +215,11 @@ TEST(RobustnessGaps, UniformGapClosesUnderGravity)
       std::ostringstream log;
       double             exact = 0;
       const auto model = run_uniform_gap(delta, log, &exact);
-      ASSERT_EQ(model->summary["status"], "completed") << "delta " << delta << "\n" << log.str();
-      for (const auto &state : model->contact_outcome.states)
+      ASSERT_EQ(model->summary()["status"], "completed") << "delta " << delta << "\n" << log.str();
+      for (const auto &state : model->model().get_contact_outcome().states)
         EXPECT_NE(state.status, contact::PairStatus::open) << "delta " << delta;
       // Equilibrium fixes sum f_n and sum f_t: round-off only.
-      EXPECT_NEAR(model->summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
+      EXPECT_NEAR(model->summary()["safety_factor"].get<double>(), exact, 1e-8 * exact)
         << "delta " << delta;
     }
 }
@@ -234,23 +234,23 @@ TEST(RobustnessGaps, RecessStaysOpen)
   const std::vector<double> gaps = {0, 0, 0, delta, delta, delta, delta, delta, 0, 0, 0};
   std::ostringstream log;
   const auto model = run(profile_case("recess", gaps, 1e6), log);
-  ASSERT_EQ(model->summary["status"], "completed") << log.str();
-  const auto &pairs = model->interfaces[0].pairs;
+  ASSERT_EQ(model->summary()["status"], "completed") << log.str();
+  const auto &pairs = model->model().get_interfaces()[0].pairs;
   ASSERT_EQ(pairs.size(), gaps.size());
   double closed_area = 0;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     {
       const double x      = pairs[k].position_J[0];
       const double gap    = gaps[std::lround(x)];
-      const auto   status = model->contact_outcome.states[k].status;
+      const auto   status = model->model().get_contact_outcome().states[k].status;
       EXPECT_NEAR(pairs[k].initial_gap, gap, 1e-12) << "x = " << x;
       if (gap > 0)
         {
           EXPECT_EQ(status, contact::PairStatus::open) << "x = " << x;
-          EXPECT_EQ(model->contact_outcome.solution.forces[2 * k], 0.0) << "x = " << x;
-          EXPECT_EQ(model->contact_outcome.solution.forces[2 * k + 1], 0.0) << "x = " << x;
+          EXPECT_EQ(model->model().get_contact_outcome().solution.forces[2 * k], 0.0) << "x = " << x;
+          EXPECT_EQ(model->model().get_contact_outcome().solution.forces[2 * k + 1], 0.0) << "x = " << x;
           // Still open by more than half the recess: the sag is ~1e-4 m.
-          EXPECT_GT(model->contact_outcome.solution.relative_displacements[2 * k], delta / 2)
+          EXPECT_GT(model->model().get_contact_outcome().solution.relative_displacements[2 * k], delta / 2)
             << "x = " << x;
         }
       else
@@ -261,7 +261,7 @@ TEST(RobustnessGaps, RecessStaysOpen)
     }
   EXPECT_DOUBLE_EQ(closed_area, 5.0);
   const double exact = planar_factor(block_weight(gaps), closed_area);
-  EXPECT_NEAR(model->summary["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
 }
 
 TEST(RobustnessGaps, SlidesOnAFootOfTwoPairs)
@@ -275,24 +275,24 @@ TEST(RobustnessGaps, SlidesOnAFootOfTwoPairs)
   gaps[6] = gaps[7] = 0;
   std::ostringstream log;
   const auto model = run(profile_case("foot", gaps, 1e6), log);
-  ASSERT_EQ(model->summary["status"], "completed") << log.str();
+  ASSERT_EQ(model->summary()["status"], "completed") << log.str();
   unsigned int n_closed = 0;
-  for (unsigned int k = 0; k < model->interfaces[0].pairs.size(); ++k)
+  for (unsigned int k = 0; k < model->model().get_interfaces()[0].pairs.size(); ++k)
     {
-      const double x      = model->interfaces[0].pairs[k].position_J[0];
-      const bool   closed = model->contact_outcome.states[k].status != contact::PairStatus::open;
+      const double x      = model->model().get_interfaces()[0].pairs[k].position_J[0];
+      const bool   closed = model->model().get_contact_outcome().states[k].status != contact::PairStatus::open;
       EXPECT_EQ(closed, x == 6 || x == 7) << "x = " << x;
       n_closed += closed;
     }
   EXPECT_EQ(n_closed, 2u);
   const double exact = planar_factor(block_weight(gaps), 2);
-  EXPECT_NEAR(model->summary["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
 }
 
 namespace
 {
   /** One pair touches (x = 6), every other pair is 5 cm above the plane. */
-  std::unique_ptr<Model<2>>
+  std::unique_ptr<CaseRun<2>>
   run_tip(std::ostringstream &log, double *exact)
   {
     std::vector<double> gaps(11, 0.05);
@@ -303,12 +303,12 @@ namespace
 
   /** The block rests on the pairs at x = 6 and 7, and no other. */
   void
-  expect_on_pairs_6_and_7(const Model<2> &model)
+  expect_on_pairs_6_and_7(const CaseRun<2> &model)
   {
-    for (unsigned int k = 0; k < model.interfaces[0].pairs.size(); ++k)
+    for (unsigned int k = 0; k < model.model().get_interfaces()[0].pairs.size(); ++k)
       {
-        const double x      = model.interfaces[0].pairs[k].position_J[0];
-        const bool   closed = model.contact_outcome.states[k].status != contact::PairStatus::open;
+        const double x      = model.model().get_interfaces()[0].pairs[k].position_J[0];
+        const bool   closed = model.model().get_contact_outcome().states[k].status != contact::PairStatus::open;
         EXPECT_EQ(closed, x == 6 || x == 7) << "x = " << x;
       }
   }
@@ -339,7 +339,7 @@ TEST(RobustnessGaps, DISABLED_TipsOntoAPairThatWasOpenExactly)
   std::ostringstream log;
   double             exact = 0;
   const auto         model = run_tip(log, &exact);
-  ASSERT_EQ(model->summary["status"], "completed") << log.str();
+  ASSERT_EQ(model->summary()["status"], "completed") << log.str();
   expect_on_pairs_6_and_7(*model);
-  EXPECT_NEAR(model->summary["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
 }

@@ -27,13 +27,13 @@ namespace
   run(const parameters::Parameters &p)
   {
     std::ostringstream log;
-    Model<dim>         model(p, "", log);
+    CaseRun<dim>         model(p, "", log);
     model.run();
-    if (model.summary["converged"].template get<bool>())
+    if (model.summary()["converged"].template get<bool>())
       {
-        EXPECT_TRUE(model.contact_outcome.converged());
+        EXPECT_TRUE(model.model().get_contact_outcome().converged());
       }
-    return model.summary;
+    return model.summary();
   }
 } // namespace
 

@@ -28,9 +28,9 @@ namespace
   run(const parameters::Parameters &parameters)
   {
     std::ostringstream log;
-    Model<2>           model(parameters, "", log);
+    CaseRun<2>           model(parameters, "", log);
     model.run();
-    return model.summary;
+    return model.summary();
   }
 
   double
@@ -106,14 +106,14 @@ TEST(PlanarSlidingSurface, ExactOnTriangles)
       c.parameters.geometry.inclined_block.element_shape =
         parameters::GeometryParameters::ElementShape::simplex;
       std::ostringstream log;
-      Model<2>           model(c.parameters, "", log);
+      CaseRun<2>           model(c.parameters, "", log);
       model.run();
-      ASSERT_EQ(model.summary["status"], "completed") << model.summary["safety_factor_reason"];
-      EXPECT_TRUE(model.blocks[0]->element_family.simplex);
+      ASSERT_EQ(model.summary()["status"], "completed") << model.summary()["safety_factor_reason"];
+      EXPECT_TRUE(model.model().get_blocks()[0]->element_family.simplex);
       // 10 elements along the block: 11 vertices, and 10 midside nodes at
       // degree 2, all paired.
-      EXPECT_EQ(model.interfaces[0].pairs.size(), degree == 1 ? 11u : 21u);
-      EXPECT_NEAR(model.summary["safety_factor"].get<double>(), c.exact, 1e-8 * c.exact)
+      EXPECT_EQ(model.model().get_interfaces()[0].pairs.size(), degree == 1 ? 11u : 21u);
+      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), c.exact, 1e-8 * c.exact)
         << "degree " << degree;
     }
 }
@@ -177,19 +177,19 @@ TEST(PaperSlope, SafetyFactorAndCircularSurfaceOracle)
       auto               parameters = test_support::case_parameters("paper_slope.prm");
       parameters.geometry.slope.element_shape = shape;
       std::ostringstream log;
-      Model<2>           model(parameters, "", log);
+      CaseRun<2>           model(parameters, "", log);
       model.run();
-      ASSERT_EQ(model.summary["status"], "completed");
-      EXPECT_EQ(model.blocks[0]->element_family.simplex,
+      ASSERT_EQ(model.summary()["status"], "completed");
+      EXPECT_EQ(model.model().get_blocks()[0]->element_family.simplex,
                 shape == Shape::simplex);
-      const double K = model.summary["safety_factor"];
+      const double K = model.summary()["safety_factor"];
       // Mesh study (doc/paper_slope.md): 1.3172 to 1.3176 from h = 2 to 0.25 m;
       // Bishop 1.31, elastic stress-based 1.29-1.33 (design/formulation.md).
       EXPECT_NEAR(K, 1.3176, 1e-3);
 
       // Sum f_t = (moment of the driving loads about the centre) / R, whatever
       // K: the normal forces of a circle pass through its centre.
-      const auto &mass = *model.blocks[model.interfaces[0].block_I];
+      const auto &mass = *model.model().get_blocks()[model.model().get_interfaces()[0].block_I];
       const dealii::Point<2> centre(19.61, 46.32);
       const double           R = 21.32;
       std::vector<dealii::Point<2>> points(mass.dof_handler.n_dofs());
@@ -202,7 +202,7 @@ TEST(PaperSlope, SafetyFactorAndCircularSurfaceOracle)
       // measured 2e-5 relative at h = 1 m on quadrilaterals, bound 2e-4;
       // 2.1e-4 on the triangles' polygon, bound 5e-4.
       const double bound = (shape == Shape::simplex) ? 5e-4 : 2e-4;
-      for (const auto &step : model.summary["iterations"])
+      for (const auto &step : model.summary()["iterations"])
         EXPECT_NEAR(step["F_tau"].get<double>(), std::abs(moment) / R, bound * std::abs(moment) / R);
     }
 }

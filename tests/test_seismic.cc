@@ -121,7 +121,7 @@ TEST(Seismic, BlockOnPlanePseudoStaticK2D)
       std::ostringstream log;
       auto               model =
         test_support::factorised_model<2>(inclined_block(c, phi), log);
-      const auto  &geometry = model->parameters.geometry.inclined_block;
+      const auto  &geometry = model->get_parameters().geometry.inclined_block;
       const double theta    = geometry.inclination * PI / 180;
       const double W = 25 * geometry.block_length * geometry.block_height;
       for (const auto &[kh, kv] : coefficients)
@@ -163,7 +163,7 @@ TEST(Seismic, YieldAccelerationOfTheBlockOnPlane)
         std::ostringstream log;
         auto               model =
           test_support::factorised_model<2>(inclined_block(c, phi), log);
-        const auto  &geometry = model->parameters.geometry.inclined_block;
+        const auto  &geometry = model->get_parameters().geometry.inclined_block;
         const double theta    = geometry.inclination * PI / 180;
         const double W = 25 * geometry.block_length * geometry.block_height;
         analyses::SeismicLoad<2> load;

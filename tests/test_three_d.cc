@@ -56,11 +56,11 @@ namespace
 TEST(ThreeD, FreeBlockHasSixRigidModes)
 {
   std::ostringstream log;
-  Model<3>           model(block_on_plane(30, 120, 35, 0), "", log);
+  Model<3>           model(block_on_plane(30, 120, 35, 0), log);
   model.make_geometry();
   model.setup_blocks();
-  EXPECT_EQ(model.blocks[0]->n_free_rigid_modes(), 6u);
-  EXPECT_EQ(model.blocks[1]->n_free_rigid_modes(), 0u);
+  EXPECT_EQ(model.get_blocks()[0]->n_free_rigid_modes(), 6u);
+  EXPECT_EQ(model.get_blocks()[1]->n_free_rigid_modes(), 0u);
 }
 
 TEST(ThreeD, BlockOnPlaneMatchesThePlanarFormula)
@@ -69,15 +69,15 @@ TEST(ThreeD, BlockOnPlaneMatchesThePlanarFormula)
   for (const auto &[phi, cohesion] : {std::pair{35.0, 0.0}, std::pair{25.0, 15.0}})
     {
       std::ostringstream log;
-      Model<3>           model(block_on_plane(30, 120, phi, cohesion), "", log);
+      CaseRun<3>           model(block_on_plane(30, 120, phi, cohesion), "", log);
       model.run();
-      ASSERT_EQ(model.summary["status"], "completed") << model.summary["safety_factor_reason"];
+      ASSERT_EQ(model.summary()["status"], "completed") << model.summary()["safety_factor_reason"];
       const double W     = 25.0 * 10 * 6 * 5, dip = PI / 6;
       const double exact = (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
                            (W * std::sin(dip));
       // Sums of normal and tangential forces are fixed by equilibrium:
       // round-off only.
-      EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
+      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact)
         << "phi = " << phi << ", c = " << cohesion;
     }
 }
@@ -96,26 +96,26 @@ TEST(ThreeD, BlockOnPlaneOfTetrahedraMatchesThePlanarFormula)
         parameters::Parameters p =
           block_on_plane(30, 120, phi, cohesion, "block_on_plane_3d_tet.geo");
         p.fe_degree = degree;
-        Model<3> model(p, "", log);
+        CaseRun<3> model(p, "", log);
         model.run();
-        ASSERT_EQ(model.summary["status"], "completed")
-          << model.summary["safety_factor_reason"];
-        EXPECT_TRUE(model.blocks[0]->element_family.simplex);
-        EXPECT_EQ(model.blocks[0]->n_free_rigid_modes(), 6u);
+        ASSERT_EQ(model.summary()["status"], "completed")
+          << model.summary()["safety_factor_reason"];
+        EXPECT_TRUE(model.model().get_blocks()[0]->element_family.simplex);
+        EXPECT_EQ(model.model().get_blocks()[0]->n_free_rigid_modes(), 6u);
         // The block's footprint, a 5 x 3 grid of squares each split into
         // two triangles: degree 1 pairs its 6 x 4 vertices, degree 2 the
         // nodes on the 5 x 4 + 6 x 3 edges of the grid and the 15
         // diagonals (not the vertices, of zero weight). None unpaired.
-        EXPECT_EQ(model.interfaces[0].pairs.size(), degree == 1 ? 24u : 53u);
-        EXPECT_EQ(model.summary["interfaces"][0]["n_unpaired_nodes"], 0);
+        EXPECT_EQ(model.model().get_interfaces()[0].pairs.size(), degree == 1 ? 24u : 53u);
+        EXPECT_EQ(model.summary()["interfaces"][0]["n_unpaired_nodes"], 0);
         // The interface's area is the footprint's, 10 x 6.
-        EXPECT_NEAR(model.summary["interfaces"][0]["area"].get<double>(), 60, 1e-10);
+        EXPECT_NEAR(model.summary()["interfaces"][0]["area"].get<double>(), 60, 1e-10);
         const double W     = 25.0 * 10 * 6 * 5, dip = PI / 6;
         const double exact = (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
                              (W * std::sin(dip));
         // As for hexahedra: the sums of normal and tangential forces are
         // fixed by equilibrium, so round-off only.
-        EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
+        EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact)
           << "degree " << degree << ", phi = " << phi << ", c = " << cohesion;
       }
 }
@@ -128,23 +128,23 @@ TEST(ThreeD, BlockOnPlaneCaseOfPrmFolder)
   // must stop on two agreeing K* without solving at it, and certify K* by
   // one solve just below it: at most four solves.
   std::ostringstream log;
-  Model<3> model(test_support::case_parameters("block_on_plane_3d.prm"), "", log);
+  CaseRun<3> model(test_support::case_parameters("block_on_plane_3d.prm"), "", log);
   model.run();
-  ASSERT_EQ(model.summary["status"], "completed") << model.summary["safety_factor_reason"];
+  ASSERT_EQ(model.summary()["status"], "completed") << model.summary()["safety_factor_reason"];
   const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
   const double exact = (15.0 * 60 + W * std::cos(dip) * std::tan(PI / 6)) / (W * std::sin(dip));
-  EXPECT_NEAR(model.summary["safety_factor"].get<double>(), exact, 1e-8 * exact);
-  EXPECT_LE(model.summary["iterations"].size(), 4u);
+  EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_LE(model.summary()["iterations"].size(), 4u);
 }
 
 TEST(ThreeD, HertzSphereContactRadiusAndPeakPressure)
 {
   // prm/hertz_sphere.prm: Hertz point contact, quarter model, frictionless.
   std::ostringstream log;
-  Model<3> model(test_support::case_parameters("hertz_sphere.prm"), "", log);
+  CaseRun<3> model(test_support::case_parameters("hertz_sphere.prm"), "", log);
   model.run();
-  ASSERT_EQ(model.summary["status"], "completed");
-  const auto  &hertz   = model.summary["hertz"];
+  ASSERT_EQ(model.summary()["status"], "completed");
+  const auto  &hertz   = model.summary()["hertz"];
   const double P       = hertz["load"];
   const double a_exact = hertz["contact_radius_exact"];
   const double p_exact = hertz["max_pressure_exact"];
@@ -166,10 +166,10 @@ TEST(ThreeD, HertzSphereContactRadiusAndPeakPressure)
   // zone holds the whole contact (pairs beyond 1.2 a are open), and the
   // solution is symmetric under x <-> y like the mesh (frictionless pairs:
   // the tangent frames, which differ, carry no force).
-  const auto  &interface = model.interfaces[0];
-  const auto  &states    = model.contact_outcome.states;
+  const auto  &interface = model.model().get_interfaces()[0];
+  const auto  &states    = model.model().get_contact_outcome().states;
   std::map<std::pair<long, long>, double> pressure;
-  const auto  &sphere  = model.parameters.geometry.hertz_sphere;
+  const auto  &sphere  = model.model().get_parameters().geometry.hertz_sphere;
   const double spacing = sphere.contact_zone_width / sphere.n_contact_zone_elements;
   double       worst   = 0;
   unsigned int n_inner = 0;
@@ -178,7 +178,7 @@ TEST(ThreeD, HertzSphereContactRadiusAndPeakPressure)
       const dealii::Point<3> &x = interface.pairs[k].position_J;
       const double    rho = std::hypot(x[0], x[1]);
       const double    p =
-        -model.contact_outcome.solution.forces[3 * k] / interface.pairs[k].area;
+        -model.model().get_contact_outcome().solution.forces[3 * k] / interface.pairs[k].area;
       pressure[{std::lround(x[0] / spacing), std::lround(x[1] / spacing)}] = p;
       if (rho < 0.8 * a_exact)
         {

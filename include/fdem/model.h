@@ -13,15 +13,9 @@
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/run_log.h>
 #include <fdem/postprocess/vtu_writer.h>
-#include <fdem/analyses/fe_stress_factor.h>
-#include <fdem/analyses/limit_equilibrium_model.h>
-#include <fdem/analyses/seismic_results.h>
-#include <fdem/analyses/safety_factor_iteration.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-
-#include <nlohmann/json.hpp>
 
 #include <functional>
 #include <memory>
@@ -34,9 +28,13 @@ namespace fdem
 
   /**
    * A slope model of the mixed FEM-DEM method (Liu et al. 2012): elastic
-   * blocks meshed with finite elements, joined by interfaces of node pairs.
-   * run() follows the paper's steps; the steps are public so that tests can
-   * drive them one by one.
+   * blocks meshed with finite elements, joined by interfaces of node pairs,
+   * and the mixed system of eq. (9) on their factorisations. The model only:
+   * the analyses (analyses/) solve its contact problem for the strengths,
+   * loads and water they choose and read its state through the get_*()
+   * functions; CaseRun runs them in the paper's order and writes the
+   * results. The steps below are public so that a caller (and a test) can
+   * take the model through them one by one.
    */
   template <int dim>
   class Model
@@ -49,13 +47,8 @@ namespace fdem
      * (postprocess::RunLog sends each where it belongs).
      */
     Model(const parameters::Parameters &parameters,
-          const std::string &           expanded_parameters,
           std::ostream &                log,
           std::ostream *                brief = nullptr);
-
-    /** Everything, as the paper does it, then the output files. */
-    void
-    run();
 
     /**
      * The checks of --validate: the mesh, the blocks (with their loads,
@@ -136,6 +129,20 @@ namespace fdem
     set_load_combination(const double base_factor, const std::vector<double> &coefficients);
 
     /**
+     * Replaces load case @p index in the mixed system by @p parts
+     * (contact::MixedSystem::load_case()): a load that changes from one
+     * solve to the next (a probabilistic sample's water) without a new
+     * case. The contact problem sees it; the blocks' load vectors keep the
+     * case as it was added, so set its coefficient back to zero before a
+     * recovery or output.
+     */
+    void
+    replace_load_case(const unsigned int index, const typename contact::MixedSystem<dim>::LoadCase &parts)
+    {
+      mixed_system->replace_load_case(index, parts);
+    }
+
+    /**
      * The assembled load of block @p b minus its current load (zero
      * without a load combination): what the assembled cells' residual
      * (ElasticBlock::nodal_residual()) must be corrected by.
@@ -145,11 +152,28 @@ namespace fdem
 
     /**
      * Loads that depend on K (the anchors' shear reduced by K,
-     * analyses/anchors.h): called with K before each contact solve and
-     * when a state solved at K is restored, to set the load combination of
-     * that K. Empty: none.
+     * analyses/anchors.h): @p loads is called with K before each contact
+     * solve of solve_contact() and when a state solved at K becomes the
+     * model's (set_contact_state(), restore_last_static_state()), to set
+     * the load combination of that K.
      */
-    std::function<void(double K)> strength_dependent_loads;
+    void
+    set_strength_dependent_loads(std::function<void(double K)> loads)
+    {
+      strength_dependent_loads = std::move(loads);
+    }
+
+    /**
+     * Sets the loads of @p K (set_strength_dependent_loads(); nothing
+     * without them): for an analysis that solves with
+     * solve_contact_from().
+     */
+    void
+    apply_strength_dependent_loads(const double K)
+    {
+      if (strength_dependent_loads)
+        strength_dependent_loads(K);
+    }
     ///@}
 
     /**
@@ -177,6 +201,42 @@ namespace fdem
      */
     blocks::SoilStrength
     soil_strength(const unsigned int i, const contact::NodePair<dim> &pair) const;
+
+    /**
+     * Solves eq. (9) for @p strengths from the statuses @p states with
+     * @p control (contact::solve_contact_problem()), its log to @p out,
+     * without changing the model's contact state or warm start: for an
+     * analysis that keeps its own states (a probabilistic sample).
+     */
+    contact::ContactOutcome<dim>
+    solve_contact_from(const std::vector<contact::PairStrength> &strengths,
+                       const std::vector<contact::PairState<dim>> &states,
+                       const contact::StatusIterationControl &   control,
+                       std::ostream &                            out)
+    {
+      return contact::solve_contact_problem(*mixed_system, strengths, states, control, out);
+    }
+
+    /**
+     * Solves eq. (9) with every pair stuck at the model's load (the elastic
+     * state of the FE-stress factor), without changing the contact state.
+     */
+    contact::ContactSolution
+    solve_all_stick()
+    {
+      return mixed_system->solve_all_stick();
+    }
+
+    /**
+     * The next contact solve factorises the mixed system afresh, so that its
+     * result does not depend on the solves before it (the factors are
+     * reused between solves with the same rows).
+     */
+    void
+    forget_mixed_factorization()
+    {
+      mixed_system->forget_factorization();
+    }
 
     /** Per pair of all interfaces: on a sliding surface? */
     std::vector<bool>
@@ -211,6 +271,17 @@ namespace fdem
       last_converged = contact::ContactOutcome<dim>();
     }
 
+    /**
+     * Scales the compliance of the moving blocks in C by @p scale, without
+     * a new C or factorisation (the stiffness check of the safety factor);
+     * 1 restores the model.
+     */
+    void
+    set_moving_compliance_scale(const double scale)
+    {
+      mixed_system->set_moving_compliance_scale(scale);
+    }
+
     /** Sets the contact state to @p outcome, solved at K = @p K. */
     void
     set_contact_state(const contact::ContactOutcome<dim> &outcome, const double K);
@@ -223,77 +294,101 @@ namespace fdem
     warn(const std::string &warning);
 
     /**
+     * @name The model's state, read only
+     *
+     * What the analyses and the output read; only the model's steps and
+     * set_contact_state() change it.
+     */
+    ///@{
+    const parameters::Parameters &
+    get_parameters() const
+    {
+      return parameters;
+    }
+    const geometry::MeshDescription<dim> &
+    get_mesh() const
+    {
+      return mesh;
+    }
+    const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &
+    get_blocks() const
+    {
+      return blocks;
+    }
+    const std::vector<contact::Interface<dim>> &
+    get_interfaces() const
+    {
+      return interfaces;
+    }
+    /** The number of node pairs of all interfaces (after build_interfaces()). */
+    std::size_t
+    n_pairs() const;
+
+    /** Whether compute_flexibility() has made the mixed system. */
+    bool
+    has_mixed_system() const
+    {
+      return mixed_system != nullptr;
+    }
+    /** The mixed system of eq. (9), after compute_flexibility(). */
+    const contact::MixedSystem<dim> &
+    get_mixed_system() const
+    {
+      Assert(mixed_system != nullptr, ExcMessage("compute_flexibility() has not been called."));
+      return *mixed_system;
+    }
+    /** The last contact solution (of get_strength_reduction()'s strengths). */
+    const contact::ContactOutcome<dim> &
+    get_contact_outcome() const
+    {
+      return contact_outcome;
+    }
+    /** K of get_contact_outcome()'s strengths (1: full strength). */
+    double
+    get_strength_reduction() const
+    {
+      return strength_reduction;
+    }
+    /** Block displacements of the last recover_block_displacements(). */
+    const std::vector<Vector<double>> &
+    get_displacements() const
+    {
+      return displacements;
+    }
+    /**
      * The warnings of the run so far: of the layout checks
      * (doc/layout_checks.md) and of the analyses, for summary.json.
      */
-    std::vector<std::string> warnings;
-
+    const std::vector<std::string> &
+    get_warnings() const
+    {
+      return warnings;
+    }
     /**
      * Conditioning notes of the contact solves (postprocess::note_text(),
      * id "ill-conditioned"): for the log file and summary.json, and for the
      * screen only where postprocess::conditioning_changes_answer() says so.
      */
-    std::vector<std::string> conditioning_notes;
+    const std::vector<std::string> &
+    get_conditioning_notes() const
+    {
+      return conditioning_notes;
+    }
     /** The most significant digits of the contact forces a note said may be lost. */
-    int max_digits_lost = 0;
+    int
+    get_max_digits_lost() const
+    {
+      return max_digits_lost;
+    }
+    ///@}
 
     /** Block displacements u = K^{-1}(F + contact forces) + omega gamma. */
     void
     recover_block_displacements();
-    /**
-     * VTU/PVD, interface CSV, summary.json (with the wall time of each phase
-     * and the peak memory, of rank 0, and the number of MPI ranks). Only
-     * rank 0 writes; every rank gets the summary.
-     */
-    void
-    output_results();
 
-    const parameters::Parameters                        parameters;
-    geometry::MeshDescription<dim>                      mesh;
-    std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> blocks;
-    std::vector<contact::Interface<dim>>                interfaces;
-    /**
-     * Per interface with Strength = material: the soil strength at each
-     * node of its side I, by the node's x dof (empty for the others).
-     */
-    std::vector<std::map<types::global_dof_index, blocks::SoilStrength>> soil_strengths;
-    std::vector<Vector<double>>                         external_displacements;
-    std::unique_ptr<contact::MixedSystem<dim>>          mixed_system;
-    contact::ContactOutcome<dim>                        contact_outcome;
-    /** K of contact_outcome's strengths (1: full strength). */
-    double                                              strength_reduction = 1;
-    analyses::Result                                    safety_factor_result;
-    /** The FE-stress factor of the sliding surface (computed with the safety factor). */
-    analyses::FeStressFactor                            fe_stress;
-    /** Limit equilibrium on the same sliding surface (slope generator only). */
-    analyses::LimitEquilibriumResults                   limit_equilibrium;
-    /** The seismic load, the yield acceleration and the Newmark displacement (analyses/seismic.h). */
-    analyses::SeismicResults                            seismic;
-    std::vector<Vector<double>>                         displacements;
-    /**
-     * Writes the reinforcement's own output files and returns summary.json's
-     * "reinforcement" for the current state (analyses/anchors.h). Empty: no
-     * reinforcement.
-     */
-    std::function<nlohmann::json()> reinforcement_output;
-    /** summary.json's "probabilistic" (analyses/probabilistic.h), if computed. */
-    nlohmann::json                                      probabilistic;
-    nlohmann::json                                      summary;
-
-  private:
-    /** Set by validate(): make_geometry() writes no mesh.msh. */
-    bool validating = false;
-    /** The last contact solution that converged, and its K. */
-    contact::ContactOutcome<dim> last_converged;
-    double                       last_converged_K = 1;
-    /** The assembled load vectors and displacements of the blocks (the base of the load cases). */
-    std::vector<Vector<double>> base_load_vectors, base_external_displacements;
-    /** Per load case, per block: its nodal forces and displacements. */
-    std::vector<std::vector<Vector<double>>> case_loads, case_displacements;
-    /** Indices of the body-force cases: [0] without, [1] with the saturated weight. */
-    std::vector<unsigned int> body_force_case_indices[2];
-    /** VTU/PVD files of the steps of the safety-factor iteration. */
-    std::vector<postprocess::PvdEntry> step_files;
+    /** Block displacements of the contact solution @p solution (see recover_block_displacements()). */
+    std::vector<Vector<double>>
+    block_displacements(const contact::ContactSolution &solution) const;
 
     /** Results per interface for the current contact state. */
     std::vector<std::vector<postprocess::PairResult<dim>>>
@@ -302,21 +397,19 @@ namespace fdem
     /**
      * Block and interface VTU files of the current state, described by
      * @p state, listed in @p entries with K as their time; with the
-     * mechanism displacement of each block if @p mechanism is given.
+     * mechanism displacement of each block if @p mechanism is given. Only
+     * rank 0 writes; not collective.
      */
     void
     write_vtu(const std::string &                 suffix,
               const postprocess::OutputState &    state,
               std::vector<postprocess::PvdEntry> &entries,
-              const std::vector<Vector<double>> * mechanism = nullptr);
+              const std::vector<Vector<double>> * mechanism = nullptr) const;
 
-    /** Block displacements of the contact solution @p solution (see recover_block_displacements()). */
-    std::vector<Vector<double>>
-    block_displacements(const contact::ContactSolution &solution) const;
+    /** The largest reaction at each block's minimal support: zero at equilibrium. */
+    std::vector<double>
+    support_reactions() const;
 
-    std::string   expanded_parameters;
-
-  public:
     /** The run's full log (the log file; the screen with --verbose); only rank 0's reaches it. */
     std::ostream &log;
     /** The lines of the default screen (and the log file). */
@@ -333,13 +426,59 @@ namespace fdem
       return timer;
     }
 
-  private:
+    /** Wall time since the model was made (s): the "total" of the timings. */
+    double
+    wall_time() const
+    {
+      return run_timer.wall_time();
+    }
+
     /**
      * Whether this process writes the output files: rank 0 of
      * MPI_COMM_WORLD. The other ranks compute the same results and write
      * nothing.
      */
-    const bool writes_files;
+    bool
+    writes_files() const
+    {
+      return is_writer;
+    }
+
+  private:
+    /** The loads that depend on K (set_strength_dependent_loads()). */
+    std::function<void(double K)> strength_dependent_loads;
+    const parameters::Parameters                        parameters;
+    geometry::MeshDescription<dim>                      mesh;
+    std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> blocks;
+    std::vector<contact::Interface<dim>>                interfaces;
+    /**
+     * Per interface with Strength = material: the soil strength at each
+     * node of its side I, by the node's x dof (empty for the others).
+     */
+    std::vector<std::map<types::global_dof_index, blocks::SoilStrength>> soil_strengths;
+    std::vector<Vector<double>>                         external_displacements;
+    std::unique_ptr<contact::MixedSystem<dim>>          mixed_system;
+    contact::ContactOutcome<dim>                        contact_outcome;
+    double                                              strength_reduction = 1;
+    std::vector<Vector<double>>                         displacements;
+    std::vector<std::string>                            warnings;
+    std::vector<std::string>                            conditioning_notes;
+    int                                                 max_digits_lost = 0;
+
+    /** Set by validate(): make_geometry() writes no mesh.msh. */
+    bool validating = false;
+    /** The last contact solution that converged, and its K. */
+    contact::ContactOutcome<dim> last_converged;
+    double                       last_converged_K = 1;
+    /** The assembled load vectors and displacements of the blocks (the base of the load cases). */
+    std::vector<Vector<double>> base_load_vectors, base_external_displacements;
+    /** Per load case, per block: its nodal forces and displacements. */
+    std::vector<std::vector<Vector<double>>> case_loads, case_displacements;
+    /** Indices of the body-force cases: [0] without, [1] with the saturated weight. */
+    std::vector<unsigned int> body_force_case_indices[2];
+
+    /** See writes_files(). */
+    const bool is_writer;
     /**
      * Wall time of the phases of a run, one section each and none nested so
      * that they add up: summary.json's "timings" and the table at the end.
@@ -352,22 +491,4 @@ namespace fdem
     types::boundary_id
     face_group(const std::string &name, const std::string &what) const;
   };
-
-  /**
-   * Reads the .prm file and runs the case in its dimension; returns the
-   * summary. Its "status" is "completed", or says why the contact problem
-   * has no solution. The full log goes to log.txt in the results folder
-   * as well as to @p log's screen; the run ends with the result block
-   * (postprocess::result_block()).
-   */
-  nlohmann::json
-  run_case(const std::string &prm_file, postprocess::RunLog &log);
-
-  /**
-   * Reads the .prm file and makes the model up to its node pairs, with the
-   * layout checks (Model::validate()); throws at the first error, returns
-   * the warnings.
-   */
-  std::vector<std::string>
-  validate_case(const std::string &prm_file, std::ostream &log);
 } // namespace fdem

@@ -77,7 +77,7 @@ namespace fdem
         explicit PointLocator(const Model<dim> &model)
           : model(model)
         {
-          for (const auto &block : model.blocks)
+          for (const auto &block : model.get_blocks())
             caches.push_back(
               std::make_unique<GridTools::Cache<dim>>(block->triangulation,
                                                       block->mapping));
@@ -93,7 +93,7 @@ namespace fdem
               const auto found =
                 GridTools::find_active_cell_around_point(*caches[b], p);
               if (found.first.state() == IteratorState::valid &&
-                  found.first != model.blocks[b]->triangulation.end())
+                  found.first != model.get_blocks()[b]->triangulation.end())
                 return found;
             }
           catch (...)
@@ -128,7 +128,7 @@ namespace fdem
                         const Tensor<1, dim> &force,
                         Vector<double>       &load) const
         {
-          const auto &block = *model.blocks[b];
+          const auto &block = *model.get_blocks()[b];
           const auto  found = find(b, p);
           Assert(found.first.state() == IteratorState::valid,
                  ExcInternalError());
@@ -164,13 +164,20 @@ namespace fdem
           x.push_back(p[d]);
         return x;
       }
+
+      /** How the anchors' force enters, as the screen and summary.json say. */
+      std::string
+      anchor_convention(const bool reduced)
+      {
+        return reduced ? "shear component reduced by K" : "unreduced loads";
+      }
     } // namespace
 
     template <int dim>
     std::vector<Anchor<dim>>
     locate_anchors(const Model<dim> &model)
     {
-      const AnchorParameters  &given = model.parameters.anchors;
+      const AnchorParameters  &given = model.get_parameters().anchors;
       std::vector<Anchor<dim>> anchors;
       if (given.n_anchors() == 0)
         return anchors;
@@ -180,10 +187,10 @@ namespace fdem
           const std::string name = anchor_name(k);
           Anchor<dim>       a;
           a.force      = given.forces[k];
-          a.head       = transformed<dim>(model.parameters.geometry,
+          a.head       = transformed<dim>(model.get_parameters().geometry,
                                     given.heads[k],
                                     name + ": its head");
-          a.bond       = transformed<dim>(model.parameters.geometry,
+          a.bond       = transformed<dim>(model.get_parameters().geometry,
                                     given.bond_points[k],
                                     name + ": its bond point");
           a.head_block = locator.block_of(a.head);
@@ -194,14 +201,14 @@ namespace fdem
               " lies in no block of the mesh; give Reinforcement/Anchor "
               "heads on the sliding mass."));
           AssertThrow(
-            model.blocks[a.head_block]->n_free_rigid_modes() > 0,
+            model.get_blocks()[a.head_block]->n_free_rigid_modes() > 0,
             ExcMessage(
               name + ": its head " + text(a.head) + " lies in block '" +
-              model.blocks[a.head_block]->name +
+              model.get_blocks()[a.head_block]->name +
               "', which is supported and cannot slide; the head must be "
               "on the sliding mass (a block without supports)."));
           a.bond_block = numbers::invalid_unsigned_int;
-          for (unsigned int b = 0; b < model.blocks.size(); ++b)
+          for (unsigned int b = 0; b < model.get_blocks().size(); ++b)
             if (b != a.head_block && locator.inside(b, a.bond))
               {
                 a.bond_block = b;
@@ -213,7 +220,7 @@ namespace fdem
                         name + ": its bond point " + text(a.bond) +
                         (locator.inside(a.head_block, a.bond) ?
                            " lies in the head's block '" +
-                             model.blocks[a.head_block]->name + "'" :
+                             model.get_blocks()[a.head_block]->name + "'" :
                            std::string(" lies in no block of the mesh")) +
                         "; give Reinforcement/Anchor bond points in the stable "
                         "ground beyond the sliding surface."));
@@ -237,8 +244,9 @@ namespace fdem
           Assert(cell.state() == IteratorState::valid, ExcInternalError());
           const double reach   = cell->diameter();
           double       nearest = std::numeric_limits<double>::infinity();
-          for (const auto &interface : model.interfaces)
-            if (model.parameters.interfaces.at(interface.name)
+          for (const auto &interface : model.get_interfaces())
+            if (model.get_parameters()
+                  .interfaces.at(interface.name)
                   .sliding_surface &&
                 (interface.block_I == a.head_block ||
                  interface.block_J == a.head_block))
@@ -258,7 +266,8 @@ namespace fdem
             nearest <= reach,
             ExcMessage(
               name + " does not cross a sliding surface: it leaves block '" +
-              model.blocks[a.head_block]->name + "' at " + text(a.crossing) +
+              model.get_blocks()[a.head_block]->name + "' at " +
+              text(a.crossing) +
               ", where no interface with 'Sliding surface = true' is."));
           if (a.normal * a.direction < 0)
             a.normal = -a.normal;
@@ -275,18 +284,21 @@ namespace fdem
     }
 
     template <int dim>
-    void
+    AnchorLoads<dim>
     add_anchor_loads(Model<dim> &model)
     {
-      const std::vector<Anchor<dim>> anchors = locate_anchors(model);
+      AnchorLoads<dim> placed;
+      placed.anchors                          = locate_anchors(model);
+      const std::vector<Anchor<dim>> &anchors = placed.anchors;
       if (anchors.empty())
-        return;
-      const bool              reduced = model.parameters.anchors.reduced_by_K;
+        return placed;
+      const bool reduced  = model.get_parameters().anchors.reduced_by_K;
+      placed.reduced_by_K = reduced;
       const PointLocator<dim> locator(model);
       // Case 0: the normal components, case 1: the shear components.
       std::vector<std::vector<Vector<double>>> loads(2);
       for (auto &l : loads)
-        for (const auto &block : model.blocks)
+        for (const auto &block : model.get_blocks())
           l.emplace_back(block->dof_handler.n_dofs());
       // Unreduced, the prestress acts at the head. Reduced by K, the anchor
       // is a resistance mobilised where it crosses the surface, as limit
@@ -313,23 +325,25 @@ namespace fdem
         }
       const unsigned int normal_case = model.add_load_case(loads[0]);
       const unsigned int shear_case  = model.add_load_case(loads[1]);
-      model.strength_dependent_loads =
+      // The model keeps the combination it is given (a seismic load, a
+      // sample's) and this sets the anchors' two coefficients in it.
+      model.set_strength_dependent_loads(
         [&model, normal_case, shear_case, reduced](const double K) {
-          std::vector<double> c = model.mixed_system->get_load_coefficients();
-          c.resize(model.mixed_system->n_load_cases(), 0.0);
+          std::vector<double> c =
+            model.get_mixed_system().get_load_coefficients();
+          c.resize(model.get_mixed_system().n_load_cases(), 0.0);
           const double shear = reduced ? 1 / K : 1.0;
           if (c[normal_case] == 1 && c[shear_case] == shear)
             return;
           c[normal_case] = 1;
           c[shear_case]  = shear;
-          model.set_load_combination(model.mixed_system->get_base_load_factor(),
-                                     c);
-        };
-      model.strength_dependent_loads(1.0);
+          model.set_load_combination(
+            model.get_mixed_system().get_base_load_factor(), c);
+        });
+      model.apply_strength_dependent_loads(1.0);
 
-      const std::string convention =
-        reduced ? "shear component reduced by K" : "unreduced loads";
-      double total = 0;
+      const std::string convention = anchor_convention(reduced);
+      double            total      = 0;
       for (const auto &a : anchors)
         total += a.force;
       model.brief << "Anchors: " << anchors.size() << ", total force "
@@ -340,61 +354,68 @@ namespace fdem
           const Anchor<dim> &a = anchors[k];
           model.log << "  anchor " << k + 1 << ": T = " << a.force << " from "
                     << text(a.head) << " in '"
-                    << model.blocks[a.head_block]->name << "' to "
+                    << model.get_blocks()[a.head_block]->name << "' to "
                     << text(a.bond) << " in '"
-                    << model.blocks[a.bond_block]->name << "', across '"
+                    << model.get_blocks()[a.bond_block]->name << "', across '"
                     << a.interface << "' at " << text(a.crossing) << ": normal "
                     << a.normal_force << ", shear " << a.shear_force
                     << std::endl;
         }
+      return placed;
+    }
 
-      model.reinforcement_output = [&model, anchors, reduced, convention]() {
-        const double   K    = model.strength_reduction;
-        nlohmann::json list = nlohmann::json::array();
-        for (const Anchor<dim> &a : anchors)
-          list.push_back({{"head", coordinates(a.head)},
-                          {"bond_point", coordinates(a.bond)},
-                          {"crossing", coordinates(a.crossing)},
-                          {"interface", a.interface},
-                          {"head_block", model.blocks[a.head_block]->name},
-                          {"bond_block", model.blocks[a.bond_block]->name},
-                          {"force", a.force},
-                          {"normal_force", a.normal_force},
-                          {"shear_force", a.shear_force},
-                          {"applied_shear_force",
-                           reduced ? a.shear_force / K : a.shear_force}});
-        const std::string directory = model.parameters.output_directory();
-        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 &&
-            std::filesystem::is_directory(directory))
-          {
-            std::ofstream out(directory + "/anchors.csv");
-            const char   *axes[] = {"x", "y", "z"};
-            out << "anchor";
-            for (const std::string what : {"head", "bond", "crossing"})
-              for (unsigned int d = 0; d < dim; ++d)
-                out << ',' << what << '_' << axes[d];
-            out
-              << ",force,normal_force,shear_force,applied_shear_force,interface\n"
-              << std::setprecision(12);
-            for (unsigned int k = 0; k < anchors.size(); ++k)
-              {
-                const Anchor<dim> &a = anchors[k];
-                out << k + 1;
-                for (const Point<dim> *p : {&a.head, &a.bond, &a.crossing})
-                  for (unsigned int d = 0; d < dim; ++d)
-                    out << ',' << (*p)[d];
-                out << ',' << a.force << ',' << a.normal_force << ','
-                    << a.shear_force << ','
-                    << (reduced ? a.shear_force / K : a.shear_force) << ','
-                    << a.interface << '\n';
-              }
-          }
-        return nlohmann::json{{"convention", convention},
-                              {"reduced_by_K", reduced},
-                              {"K_of_state", K},
-                              {"anchors", list},
-                              {"csv", "anchors.csv"}};
-      };
+    template <int dim>
+    nlohmann::json
+    reinforcement_output(const Model<dim>       &model,
+                         const AnchorLoads<dim> &placed)
+    {
+      const std::vector<Anchor<dim>> &anchors    = placed.anchors;
+      const bool                      reduced    = placed.reduced_by_K;
+      const std::string               convention = anchor_convention(reduced);
+      const double                    K    = model.get_strength_reduction();
+      nlohmann::json                  list = nlohmann::json::array();
+      for (const Anchor<dim> &a : anchors)
+        list.push_back({{"head", coordinates(a.head)},
+                        {"bond_point", coordinates(a.bond)},
+                        {"crossing", coordinates(a.crossing)},
+                        {"interface", a.interface},
+                        {"head_block", model.get_blocks()[a.head_block]->name},
+                        {"bond_block", model.get_blocks()[a.bond_block]->name},
+                        {"force", a.force},
+                        {"normal_force", a.normal_force},
+                        {"shear_force", a.shear_force},
+                        {"applied_shear_force",
+                         reduced ? a.shear_force / K : a.shear_force}});
+      const std::string directory = model.get_parameters().output_directory();
+      if (model.writes_files() && std::filesystem::is_directory(directory))
+        {
+          std::ofstream out(directory + "/anchors.csv");
+          const char   *axes[] = {"x", "y", "z"};
+          out << "anchor";
+          for (const std::string what : {"head", "bond", "crossing"})
+            for (unsigned int d = 0; d < dim; ++d)
+              out << ',' << what << '_' << axes[d];
+          out
+            << ",force,normal_force,shear_force,applied_shear_force,interface\n"
+            << std::setprecision(12);
+          for (unsigned int k = 0; k < anchors.size(); ++k)
+            {
+              const Anchor<dim> &a = anchors[k];
+              out << k + 1;
+              for (const Point<dim> *p : {&a.head, &a.bond, &a.crossing})
+                for (unsigned int d = 0; d < dim; ++d)
+                  out << ',' << (*p)[d];
+              out << ',' << a.force << ',' << a.normal_force << ','
+                  << a.shear_force << ','
+                  << (reduced ? a.shear_force / K : a.shear_force) << ','
+                  << a.interface << '\n';
+            }
+        }
+      return nlohmann::json{{"convention", convention},
+                            {"reduced_by_K", reduced},
+                            {"K_of_state", K},
+                            {"anchors", list},
+                            {"csv", "anchors.csv"}};
     }
 
     std::vector<std::pair<std::string, std::string>>
@@ -421,9 +442,13 @@ namespace fdem
     locate_anchors(const Model<2> &);
     template std::vector<Anchor<3>>
     locate_anchors(const Model<3> &);
-    template void
+    template AnchorLoads<2>
     add_anchor_loads(Model<2> &);
-    template void
+    template AnchorLoads<3>
     add_anchor_loads(Model<3> &);
+    template nlohmann::json
+    reinforcement_output(const Model<2> &, const AnchorLoads<2> &);
+    template nlohmann::json
+    reinforcement_output(const Model<3> &, const AnchorLoads<3> &);
   } // namespace analyses
 } // namespace fdem

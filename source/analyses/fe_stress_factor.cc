@@ -9,14 +9,19 @@ namespace fdem
   {
     template <int dim>
     FeStressFactor
-    fe_stress_factor(contact::MixedSystem<dim>                &system,
-                     const std::vector<contact::PairStrength> &strengths,
-                     const std::vector<bool> &on_sliding_surface)
+    fe_stress_factor(Model<dim> &model)
     {
+      const contact::MixedSystem<dim> &system = model.get_mixed_system();
+      const std::vector<bool>          on_sliding_surface =
+        model.pairs_on_sliding_surface();
       FeStressFactor               result;
       contact::ContactOutcome<dim> stuck;
       stuck.states.resize(system.n_pairs()); // a default state sticks
-      stuck.solution = system.solve_all_stick();
+      // At full strength: the loads that depend on K (the anchors) at K = 1,
+      // then back to the model's K.
+      model.apply_strength_dependent_loads(1.0);
+      stuck.solution = model.solve_all_stick();
+      model.apply_strength_dependent_loads(model.get_strength_reduction());
       if (!stuck.solution.solved)
         {
           result.not_computed = "the all-stick state has no solution";
@@ -25,7 +30,7 @@ namespace fdem
       result.all_stick = stuck.solution;
       // The same sums as eq. (11), at full strength.
       const ReducedStrengthSolution sums = resisting_and_sliding_forces(
-        system, stuck, strengths, on_sliding_surface);
+        system, stuck, model.pair_strengths(1.0), on_sliding_surface);
       for (unsigned int p = 0; p < on_sliding_surface.size(); ++p)
         result.n_pairs_in_tension +=
           on_sliding_surface[p] && stuck.solution.forces[dim * p] > 0;
@@ -43,12 +48,8 @@ namespace fdem
     }
 
     template FeStressFactor
-    fe_stress_factor(contact::MixedSystem<2> &,
-                     const std::vector<contact::PairStrength> &,
-                     const std::vector<bool> &);
+    fe_stress_factor(Model<2> &);
     template FeStressFactor
-    fe_stress_factor(contact::MixedSystem<3> &,
-                     const std::vector<contact::PairStrength> &,
-                     const std::vector<bool> &);
+    fe_stress_factor(Model<3> &);
   } // namespace analyses
 } // namespace fdem

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/probabilistic.h>
+#include <fdem/analyses/probabilistic_loads.h>
 #include <fdem/analyses/probabilistic_sampling.h>
 #include <fdem/analyses/probabilistic_strengths.h>
 #include <fdem/analyses/safety_factor_iteration.h>
@@ -48,49 +49,14 @@ namespace fdem
                            const std::vector<RandomVariable> &variables)
           : model(model)
           , strengths(model, variables)
+          , loads(model, variables)
           , on_sliding_surface(model.pairs_on_sliding_surface())
           , quiet(nullptr)
         {
           control.max_iterations =
-            model.parameters.contact.max_status_iterations;
-          control.runaway_factor = model.parameters.contact.runaway_factor;
-          for (unsigned int v = 0; v < variables.size(); ++v)
-            if (variables[v].quantity ==
-                RandomVariable::Quantity::unit_weight_factor)
-              {
-                weight_variable = v;
-                // Solved once on the blocks' factorisations (collective).
-                weight_cases = model.body_force_cases(true);
-              }
-        }
-
-        /**
-         * The load of @p values: the weight times the unit weight factor,
-         * as the body-force cases combine it (Model::set_load_combination()).
-         */
-        void
-        set_load(const std::vector<double> &values)
-        {
-          if (weight_variable < 0)
-            return;
-          std::vector<double> coefficients(
-            *std::max_element(weight_cases.begin(), weight_cases.end()) + 1,
-            0.0);
-          for (unsigned int d = 0; d < dim; ++d)
-            coefficients[weight_cases[d]] =
-              (values[weight_variable] - 1) *
-              model.parameters.loads.gravity_direction[d];
-          model.set_load_combination(1, coefficients);
-        }
-
-        /** Back to the model's own load. */
-        void
-        restore_load()
-        {
-          if (weight_variable >= 0)
-            model.set_load_combination(1, {});
-          if (model.strength_dependent_loads)
-            model.strength_dependent_loads(model.strength_reduction);
+            model.get_parameters().contact.max_status_iterations;
+          control.runaway_factor =
+            model.get_parameters().contact.runaway_factor;
         }
 
         /**
@@ -101,7 +67,7 @@ namespace fdem
         set_start(const std::vector<double> &values)
         {
           start_states.clear();
-          parameters = model.parameters.safety_factor;
+          parameters = model.get_parameters().safety_factor;
           Result result;
           evaluate(values, &result);
           // Each sample starts from the initial states (as the first solve
@@ -115,33 +81,40 @@ namespace fdem
         }
 
 
+        /**
+         * K of @p values; with the water level random, its load case @p water
+         * if given (SampleLoads::water_case()), else computed here
+         * (collective).
+         */
         Evaluation
-        evaluate(const std::vector<double> &values, Result *full = nullptr)
+        evaluate(
+          const std::vector<double>                          &values,
+          Result                                             *full  = nullptr,
+          const typename contact::MixedSystem<dim>::LoadCase *water = nullptr)
         {
           Evaluation evaluation;
           if (!strengths.physical(values))
             return evaluation;
           // The same start for every sample: its state, K and a fresh
           // factorisation, whatever was solved before.
-          model.mixed_system->forget_factorization();
-          set_load(values);
+          model.forget_mixed_factorization();
+          loads.set(values, water);
           std::vector<contact::PairState<dim>> states = start_states;
           last_states.clear();
           const auto solve = [&](const double K) {
             const std::vector<contact::PairStrength> reduced =
               strengths(values, K);
             if (states.empty())
-              states = contact::initial_states(*model.mixed_system, reduced);
-            // The anchors' shear reduced by K (analyses/anchors.h), and
-            // their cases back after set_load().
-            if (model.strength_dependent_loads)
-              model.strength_dependent_loads(K);
+              states =
+                contact::initial_states(model.get_mixed_system(), reduced);
+            // The anchors' shear reduced by K (analyses/anchors.h), on top
+            // of the sample's load.
+            model.apply_strength_dependent_loads(K);
             const contact::ContactOutcome<dim> outcome =
-              contact::solve_contact_problem(
-                *model.mixed_system, reduced, states, control, quiet);
+              model.solve_contact_from(reduced, states, control, quiet);
             evaluation.n_status_iterations += outcome.iterations.size();
             const ReducedStrengthSolution solution =
-              resisting_and_sliding_forces(*model.mixed_system,
+              resisting_and_sliding_forces(model.get_mixed_system(),
                                            outcome,
                                            reduced,
                                            on_sliding_surface);
@@ -172,15 +145,12 @@ namespace fdem
 
         Model<dim>                          &model;
         SampleStrengths<dim>                 strengths;
+        SampleLoads<dim>                     loads;
         const std::vector<bool>              on_sliding_surface;
         contact::StatusIterationControl      control;
         parameters::SafetyFactorParameters   parameters;
         std::vector<contact::PairState<dim>> start_states, last_states;
         std::ostream                         quiet; // no output per sample
-        /** The unit weight factor's variable (-1: none) and the body-force
-         * cases. */
-        int                       weight_variable = -1;
-        std::vector<unsigned int> weight_cases;
       };
 
       /**
@@ -272,9 +242,9 @@ namespace fdem
 
     template <int dim>
     nlohmann::json
-    probabilistic_safety_factor(Model<dim> &model)
+    probabilistic_safety_factor(Model<dim> &model, const double deterministic_K)
     {
-      const ProbabilisticParameters &p = model.parameters.probabilistic;
+      const ProbabilisticParameters &p = model.get_parameters().probabilistic;
       TimerOutput::Scope scope(model.phase_timer(), "probabilistic");
       Timer              timer;
       model.progress("probabilistic: " + std::to_string(p.n_samples) +
@@ -290,9 +260,9 @@ namespace fdem
       nlohmann::json          result;
       SampleSafetyFactor<dim> evaluator(model, p.variables);
       const unsigned int      factorized_before =
-        model.mixed_system->dense_solver().n_factorizations;
+        model.get_mixed_system().dense_solver().n_factorizations;
       const unsigned int reused_before =
-        model.mixed_system->dense_solver().n_reused_solves;
+        model.get_mixed_system().dense_solver().n_reused_solves;
       Timer        mean_timer;
       const Result at_means     = evaluator.set_start(means);
       const double mean_seconds = mean_timer.wall_time();
@@ -327,22 +297,35 @@ namespace fdem
       // The iterative mixed solver's block solves are collective: there every
       // rank solves every sample.
       const bool split =
-        model.mixed_system->solver() == contact::MixedSystemSolver::dense;
+        model.get_mixed_system().solver() == contact::MixedSystemSolver::dense;
       const unsigned int n_ranks =
         split ? Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
       const unsigned int rank =
         split ? Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) : 0;
       const unsigned int first = std::size_t(p.n_samples) * rank / n_ranks;
       const unsigned int last = std::size_t(p.n_samples) * (rank + 1) / n_ranks;
+      const auto         sample = [&](const unsigned int s) {
+        return std::vector<double>(values.begin() +
+                                     std::size_t(s) * n_variables,
+                                   values.begin() +
+                                     std::size_t(s + 1) * n_variables);
+      };
       std::vector<double>
             local; // K, status, steps, status iterations per sample
       Timer sample_timer;
+      // A random water level: the samples' water load cases first, on every
+      // rank (the blocks' solves are collective), then each rank's slice.
+      std::vector<typename contact::MixedSystem<dim>::LoadCase> water_cases;
+      if (evaluator.loads.varies_water())
+        for (unsigned int s = 0; s < p.n_samples; ++s)
+          water_cases.push_back(evaluator.loads.water_case(sample(s)));
+      const double water_seconds = sample_timer.wall_time();
       for (unsigned int s = first; s < last; ++s)
         {
-          const Evaluation e = evaluator.evaluate(
-            std::vector<double>(values.begin() + std::size_t(s) * n_variables,
-                                values.begin() +
-                                  std::size_t(s + 1) * n_variables));
+          const Evaluation e =
+            evaluator.evaluate(sample(s),
+                               nullptr,
+                               water_cases.empty() ? nullptr : &water_cases[s]);
           local.insert(local.end(),
                        {e.K,
                         double(e.status),
@@ -377,9 +360,8 @@ namespace fdem
       result["seed"] = p.seed;
       result["sampling"] =
         p.latin_hypercube ? "Latin hypercube" : "Monte Carlo";
-      result["deterministic_K"] =
-        number(model.safety_factor_result.safety_factor);
-      nlohmann::json variables = nlohmann::json::array();
+      result["deterministic_K"] = number(deterministic_K);
+      nlohmann::json variables  = nlohmann::json::array();
       for (unsigned int v = 0; v < n_variables; ++v)
         variables.push_back({{"target", p.variables[v].target},
                              {"distribution",
@@ -394,26 +376,28 @@ namespace fdem
         result["point_estimate"] =
           point_estimate(evaluator, p, means, std_devs);
 
-      evaluator.restore_load();
+      evaluator.loads.restore();
       // Cost: this rank's samples, the run's mean per sample.
       const unsigned int n_local = last - first;
       result["cost"]             = {
                     {"wall_seconds", timer.wall_time()},
                     {"samples_wall_seconds", sample_seconds},
                     {"seconds_per_sample", n_local > 0 ? sample_seconds / n_local : 0.0},
+                    {"water_load_seconds", water_seconds},
                     {"seconds_K_at_means", mean_seconds},
                     {"mean_steps_per_sample", n_steps / p.n_samples},
                     {"mean_contact_solves_per_sample", n_status_iterations / p.n_samples},
                     {"factorizations_rank0",
-                     model.mixed_system->dense_solver().n_factorizations -
+                     model.get_mixed_system().dense_solver().n_factorizations -
                        factorized_before},
                     {"reused_solves_rank0",
-                     model.mixed_system->dense_solver().n_reused_solves - reused_before},
+                     model.get_mixed_system().dense_solver().n_reused_solves -
+                       reused_before},
                     {"n_ranks", n_ranks}};
 
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
-          std::ofstream out(model.parameters.output_directory() +
+          std::ofstream out(model.get_parameters().output_directory() +
                             "/samples.csv");
           out << "sample";
           for (const RandomVariable &v : p.variables)
@@ -446,8 +430,8 @@ namespace fdem
     }
 
     template nlohmann::json
-    probabilistic_safety_factor(Model<2> &);
+    probabilistic_safety_factor(Model<2> &, const double);
     template nlohmann::json
-    probabilistic_safety_factor(Model<3> &);
+    probabilistic_safety_factor(Model<3> &, const double);
   } // namespace analyses
 } // namespace fdem

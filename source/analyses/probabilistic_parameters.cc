@@ -62,6 +62,17 @@ namespace fdem
             variable.owner    = RandomVariable::Owner::loads;
             variable.quantity = RandomVariable::Quantity::unit_weight_factor;
           }
+        else if (target == "Water/Piezometric line shift")
+          {
+            variable.owner    = RandomVariable::Owner::water;
+            variable.quantity = RandomVariable::Quantity::water_level_shift;
+          }
+        else if (target == "Loads/Horizontal seismic coefficient")
+          {
+            variable.owner = RandomVariable::Owner::loads;
+            variable.quantity =
+              RandomVariable::Quantity::horizontal_seismic_coefficient;
+          }
         else
           {
             AssertThrow(
@@ -69,7 +80,9 @@ namespace fdem
               ExcMessage(
                 where + ": the target must be Interfaces/<name>/<quantity>, "
                         "Materials/<name>/<quantity>, Blocks/<name>/<quantity> "
-                        "or Loads/Unit weight factor."));
+                        "Loads/Unit weight factor, Loads/Horizontal "
+                        "seismic coefficient or Water/Piezometric line "
+                        "shift."));
             const std::string owner    = target.substr(0, first),
                               quantity = target.substr(last + 1);
             variable.name = target.substr(first + 1, last - first - 1);
@@ -249,8 +262,14 @@ namespace fdem
         "Friction angle (degrees) or tan(phi) (dimensionless). Distribution: normal, lognormal, "
         "uniform or truncated normal. Also Loads/Unit weight factor (dimensionless, > 0): a factor "
         "on the weight of every block and material (their unit weights, saturated ones below "
-        "the water table, and densities), e.g. normal, mean 1, cov 0.05. Values not listed keep "
-        "those of the case.");
+        "the water table, and densities), e.g. normal, mean 1, cov 0.05; and Loads/Horizontal "
+        "seismic coefficient (dimensionless): the sample's pseudo-static kh in place of the "
+        "case's, towards Loads/Seismic direction (or the free face), with the case's Vertical "
+        "seismic coefficient and Seismic on pore water, without a new factorisation; and "
+        "Water/Piezometric line shift (length, positive up): every point of Water/Piezometric "
+        "line raised by the sample's value, with the pore pressures ('piezometric') and the "
+        "saturated weights below it, a new right-hand side on the same factorisations "
+        "(e.g. normal, mean 0, sd 1). Values not listed keep those of the case.");
       prm.declare_entry(
         "Correlations",
         "",
@@ -374,15 +393,23 @@ namespace fdem
           const std::string     where    = variables_entry + ", variable " +
                                     std::to_string(v + 1) + " ('" +
                                     variable.target + "')";
+          // c and phi (or tan(phi)) of one owner are two quantities; each
+          // load is one.
+          const auto same = [&](const RandomVariable &other) {
+            if (other.owner != variable.owner || other.name != variable.name)
+              return false;
+            if (variable.owner == RandomVariable::Owner::loads ||
+                variable.owner == RandomVariable::Owner::water)
+              return other.quantity == variable.quantity;
+            return (other.quantity == RandomVariable::Quantity::cohesion) ==
+                   (variable.quantity == RandomVariable::Quantity::cohesion);
+          };
           for (unsigned int w = 0; w < v; ++w)
-            AssertThrow(
-              variables[w].owner != variable.owner ||
-                variables[w].name != variable.name ||
-                (variables[w].quantity == RandomVariable::Quantity::cohesion) !=
-                  (variable.quantity == RandomVariable::Quantity::cohesion),
-              ExcMessage(where + ": the same quantity as variable " +
-                         std::to_string(w + 1) + "."));
-          if (variable.owner == RandomVariable::Owner::loads)
+            AssertThrow(!same(variables[w]),
+                        ExcMessage(where + ": the same quantity as variable " +
+                                   std::to_string(w + 1) + "."));
+          if (variable.owner == RandomVariable::Owner::loads ||
+              variable.owner == RandomVariable::Owner::water)
             continue;
           if (variable.owner == RandomVariable::Owner::interface)
             {

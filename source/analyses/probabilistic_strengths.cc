@@ -15,21 +15,22 @@ namespace fdem
       const std::vector<RandomVariable> &variables)
       : model(model)
       , variables(variables)
-      , interface_cohesion(model.interfaces.size(), -1)
-      , interface_friction(model.interfaces.size(), -1)
-      , weights(model.interfaces.size())
+      , interface_cohesion(model.get_interfaces().size(), -1)
+      , interface_friction(model.get_interfaces().size(), -1)
+      , weights(model.get_interfaces().size())
     {
       using Quantity = RandomVariable::Quantity;
       for (unsigned int v = 0; v < variables.size(); ++v)
         {
           const RandomVariable &variable = variables[v];
-          if (variable.owner == RandomVariable::Owner::loads)
+          if (variable.owner == RandomVariable::Owner::loads ||
+              variable.owner == RandomVariable::Owner::water)
             continue; // not a strength
           const bool cohesion = variable.quantity == Quantity::cohesion;
           if (variable.owner == RandomVariable::Owner::interface)
             {
-              for (unsigned int i = 0; i < model.interfaces.size(); ++i)
-                if (model.interfaces[i].name == variable.name)
+              for (unsigned int i = 0; i < model.get_interfaces().size(); ++i)
+                if (model.get_interfaces()[i].name == variable.name)
                   (cohesion ? interface_cohesion : interface_friction)[i] = v;
               continue;
             }
@@ -39,7 +40,7 @@ namespace fdem
           if (m == materials.size())
             {
               const parameters::MaterialParameters &p =
-                model.parameters.materials.at(variable.name);
+                model.get_parameters().materials.at(variable.name);
               materials.push_back(
                 {variable.name,
                  p.cohesion,
@@ -53,22 +54,27 @@ namespace fdem
 
       // Each random material's weight at the nodes of every interface with
       // Strength = material: its c set to 1, every other material's to 0.
-      for (unsigned int i = 0; i < model.interfaces.size(); ++i)
+      for (unsigned int i = 0; i < model.get_interfaces().size(); ++i)
         {
-          const auto &interface = model.interfaces[i];
-          if (!model.parameters.interfaces.at(interface.name)
+          const auto &interface = model.get_interfaces()[i];
+          if (!model.get_parameters()
+                 .interfaces.at(interface.name)
                  .strength_from_material)
             continue;
-          auto      &block = *model.blocks[interface.block_I];
+          auto      &block = *model.get_blocks()[interface.block_I];
           const auto saved = block.materials;
           for (unsigned int m = 0; m < materials.size(); ++m)
             {
               for (auto &[key, material] : block.materials)
                 material.cohesion =
-                  model.mesh.material_key_name(key) == materials[m].name ? 1 :
-                                                                           0;
-              for (const auto &[dof, strength] : blocks::soil_strength_at_nodes(
-                     block, interface.face_group, model.mesh, interface.name))
+                  model.get_mesh().material_key_name(key) == materials[m].name ?
+                    1 :
+                    0;
+              for (const auto &[dof, strength] :
+                   blocks::soil_strength_at_nodes(block,
+                                                  interface.face_group,
+                                                  model.get_mesh(),
+                                                  interface.name))
                 if (strength.cohesion != 0)
                   weights[i][dof].emplace_back(m, strength.cohesion);
             }
@@ -152,6 +158,18 @@ namespace fdem
                 if (!(x > 0))
                   return false;
                 break;
+              case RandomVariable::Quantity::horizontal_seismic_coefficient:
+                // Either sign is a load (towards or away from the free
+                // face); one without equilibrium is a failure, not
+                // nonphysical.
+                if (!std::isfinite(x))
+                  return false;
+                break;
+              case RandomVariable::Quantity::water_level_shift:
+                // Any level: below the model, no water.
+                if (!std::isfinite(x))
+                  return false;
+                break;
             }
         }
       return true;
@@ -164,20 +182,32 @@ namespace fdem
       std::vector<double> values;
       for (const RandomVariable &variable : variables)
         {
+          if (variable.owner == RandomVariable::Owner::water)
+            {
+              values.push_back(0); // the line as given
+              continue;
+            }
           if (variable.owner == RandomVariable::Owner::loads)
             {
-              values.push_back(1); // the case's own weight
+              values.push_back(
+                variable.quantity ==
+                    RandomVariable::Quantity::unit_weight_factor ?
+                  1 : // the case's own weight
+                  model.get_parameters().loads.horizontal_seismic_coefficient);
               continue;
             }
           const bool interface =
             variable.owner == RandomVariable::Owner::interface;
           const double c =
-            interface ? model.parameters.interfaces.at(variable.name).cohesion :
-                        model.parameters.materials.at(variable.name).cohesion;
+            interface ?
+              model.get_parameters().interfaces.at(variable.name).cohesion :
+              model.get_parameters().materials.at(variable.name).cohesion;
           const double phi =
             interface ?
-              model.parameters.interfaces.at(variable.name).friction_angle :
-              model.parameters.materials.at(variable.name).friction_angle;
+              model.get_parameters()
+                .interfaces.at(variable.name)
+                .friction_angle :
+              model.get_parameters().materials.at(variable.name).friction_angle;
           switch (variable.quantity)
             {
               case RandomVariable::Quantity::cohesion:
@@ -190,6 +220,8 @@ namespace fdem
                 values.push_back(std::tan(phi * numbers::PI / 180));
                 break;
               case RandomVariable::Quantity::unit_weight_factor:
+              case RandomVariable::Quantity::horizontal_seismic_coefficient:
+              case RandomVariable::Quantity::water_level_shift:
                 break;
             }
         }

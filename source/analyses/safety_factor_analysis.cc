@@ -43,7 +43,7 @@ namespace fdem
       ReducedStrengthSolution solution;
       {
         TimerOutput::Scope scope(model.phase_timer(), "safety factor");
-        solution = resisting_and_sliding_forces(*model.mixed_system, model.contact_outcome,
+        solution = resisting_and_sliding_forces(model.get_mixed_system(), model.get_contact_outcome(),
                                                 strengths, on_sliding_surface); // eq. (11)
       }
       if (solution.has_factor())
@@ -68,7 +68,7 @@ namespace fdem
     {
       model.brief << "Safety factor iteration (eqs. 10-13):" << std::endl;
       Result result = iterate([this](const double K) { return solve(K); },
-                              model.parameters.safety_factor, model.brief);
+                              model.get_parameters().safety_factor, model.brief);
       model.restore_last_static_state();
       model.log << "Safety factor: ";
       if (result.converged)
@@ -91,7 +91,7 @@ namespace fdem
         }
       result.stiffness = stiffness_sensitivity(result);
       const StiffnessSensitivity &check = result.stiffness;
-      if (check.computed && !(check.relative_change <= model.parameters.safety_factor.stiffness_check_warning))
+      if (check.computed && !(check.relative_change <= model.get_parameters().safety_factor.stiffness_check_warning))
         {
           std::ostringstream warning;
           if (std::isinf(check.relative_change))
@@ -112,14 +112,14 @@ namespace fdem
     StiffnessSensitivity
     SafetyFactorAnalysis<dim>::stiffness_sensitivity(const Result &base)
     {
-      const auto &         parameters = model.parameters.safety_factor;
+      const auto &         parameters = model.get_parameters().safety_factor;
       StiffnessSensitivity check;
       check.factor = parameters.stiffness_check_factor;
       if (!parameters.stiffness_check)
         check.not_computed = "Safety factor/Stiffness check = false";
       else if (!base.converged)
         check.not_computed = "no certified safety factor to compare with";
-      else if (!model.mixed_system->can_scale_moving_compliance())
+      else if (!model.get_mixed_system().can_scale_moving_compliance())
         check.not_computed = "the iterative mixed system does not keep the moving blocks' part of C";
       if (!check.not_computed.empty())
         return check;
@@ -128,8 +128,8 @@ namespace fdem
       // mechanism the fixed point is not unique (every K at which all pairs
       // can slip has K* = K), and only the same path compares alike.
       Timer                              timer; // its share of the run: summary.json
-      const contact::ContactOutcome<dim> state = model.contact_outcome;
-      const double                       K     = model.strength_reduction;
+      const contact::ContactOutcome<dim> state = model.get_contact_outcome();
+      const double                       K     = model.get_strength_reduction();
       const auto step_files = std::move(on_solved_step); // no VTU of these steps
       check.computed        = true;
       check.relative_change = 0;
@@ -138,7 +138,7 @@ namespace fdem
           const double scale = stiffer ? 1 / check.factor : check.factor;
           model.log << "Stiffness check: the moving blocks " << check.factor << " times "
                     << (stiffer ? "stiffer" : "softer") << std::endl;
-          model.mixed_system->set_moving_compliance_scale(scale);
+          model.set_moving_compliance_scale(scale);
           model.forget_warm_start();
           const Result r =
             iterate([this](const double K) { return solve(K); }, parameters, model.log);
@@ -154,7 +154,7 @@ namespace fdem
                                    std::abs(r.safety_factor - base.safety_factor) / base.safety_factor) :
                           std::numeric_limits<double>::infinity();
         }
-      model.mixed_system->set_moving_compliance_scale(1);
+      model.set_moving_compliance_scale(1);
       model.set_contact_state(state, K);
       on_solved_step     = step_files;
       check.wall_seconds = timer.wall_time();

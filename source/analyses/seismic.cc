@@ -19,7 +19,7 @@ namespace fdem
     Tensor<1, dim>
     seismic_direction(const Model<dim> &model, std::string &from)
     {
-      const parameters::LoadParameters &loads = model.parameters.loads;
+      const parameters::LoadParameters &loads = model.get_parameters().loads;
       Tensor<1, dim>                    g, h;
       for (unsigned int d = 0; d < dim; ++d)
         g[d] = loads.gravity_direction[d];
@@ -35,8 +35,10 @@ namespace fdem
       // slip surface the way the mass slides (the steep rear part outweighs
       // the rising toe). Its sign only matters; it rotates with the model.
       double area = 0;
-      for (const auto &interface : model.interfaces)
-        if (model.parameters.interfaces.at(interface.name).sliding_surface)
+      for (const auto &interface : model.get_interfaces())
+        if (model.get_parameters()
+              .interfaces.at(interface.name)
+              .sliding_surface)
           for (const auto &pair : interface.pairs)
             {
               Tensor<1, dim> n;
@@ -63,14 +65,12 @@ namespace fdem
       // load plus the body-force cases with coefficients kh h_d - kv g_d.
       const std::vector<unsigned int> cases =
         model.body_force_cases(load.on_pore_water);
-      // The other cases (the anchors) keep their coefficients.
-      std::vector<double> coefficients =
-        model.mixed_system->get_load_coefficients();
-      coefficients.resize(model.mixed_system->n_load_cases(), 0.0);
+      std::vector<double> coefficients(model.get_mixed_system().n_load_cases(),
+                                       0.0);
       for (unsigned int d = 0; d < dim; ++d)
         coefficients[cases[d]] =
           load.kh * load.direction[d] -
-          load.kv * model.parameters.loads.gravity_direction[d];
+          load.kv * model.get_parameters().loads.gravity_direction[d];
       model.set_load_combination(1, coefficients);
     }
 
@@ -109,9 +109,9 @@ namespace fdem
     SeismicResults
     seismic_analyses(Model<dim> &model)
     {
-      const parameters::LoadParameters  &loads = model.parameters.loads;
+      const parameters::LoadParameters  &loads = model.get_parameters().loads;
       const YieldAccelerationParameters &yield =
-        model.parameters.yield_acceleration;
+        model.get_parameters().yield_acceleration;
       SeismicResults results;
       results.kh            = loads.horizontal_seismic_coefficient;
       results.kv            = loads.vertical_seismic_coefficient;
@@ -122,11 +122,11 @@ namespace fdem
       // The record is read first: a bad file is an error before any work.
       AccelerationRecord record;
       if (!yield.acceleration_record.empty())
-        record = read_acceleration_record((std::filesystem::path(
-                                             model.parameters.prm_directory) /
-                                           yield.acceleration_record)
-                                            .string(),
-                                          yield.acceleration_unit);
+        record = read_acceleration_record(
+          (std::filesystem::path(model.get_parameters().prm_directory) /
+           yield.acceleration_record)
+            .string(),
+          yield.acceleration_unit);
       SeismicLoad<dim> load;
       load.kv            = results.kv;
       load.on_pore_water = results.on_pore_water;
@@ -139,8 +139,9 @@ namespace fdem
                   << std::endl;
       if (yield.compute)
         {
-          results.yield               = yield_acceleration(model, load, yield);
-          const std::string directory = model.parameters.output_directory();
+          results.yield = yield_acceleration(model, load, yield);
+          const std::string directory =
+            model.get_parameters().output_directory();
           if (writes_files() && std::filesystem::is_directory(directory))
             write_curve_csv(directory + "/yield_acceleration.csv",
                             results.yield);

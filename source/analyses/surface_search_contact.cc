@@ -75,7 +75,7 @@ namespace fdem
         std::ostringstream sink;
         try
           {
-            Model<2> model(p, "", sink, &sink);
+            Model<2> model(p, sink, &sink);
             model.make_geometry();
             model.setup_blocks();
             model.assemble_and_factorize();

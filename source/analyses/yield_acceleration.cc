@@ -63,7 +63,7 @@ namespace fdem
           SafetyFactorAnalysis<dim> steps(model);
           const Result              r =
             iterate([&steps](const double K) { return steps.solve(K); },
-                    model.parameters.safety_factor,
+                    model.get_parameters().safety_factor,
                     model.log);
           double K = r.safety_factor;
           if (!r.converged)

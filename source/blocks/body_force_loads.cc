@@ -67,9 +67,93 @@ namespace fdem
       return result;
     }
 
+    template <int dim>
+    std::vector<Vector<double>>
+    ElasticBlock<dim>::water_loads(
+      const Function<dim>                &table,
+      const std::set<types::boundary_id> &faces) const
+    {
+      const MPI_Comm              comm = triangulation.get_communicator();
+      std::vector<Vector<double>> result(dim + 1,
+                                         Vector<double>(dof_handler.n_dofs()));
+      // assemble_cell()'s quadratures.
+      FEValues<dim>                        fe_values(mapping,
+                              fe,
+                              element_family.cell_quadrature(fe.degree + 1),
+                              update_values | update_quadrature_points |
+                                update_JxW_values);
+      FEFaceValues<dim>                    fe_face_values(mapping,
+                                       fe,
+                                       element_family.face_quadrature(
+                                         fe.degree + 2),
+                                       update_values | update_normal_vectors |
+                                         update_quadrature_points |
+                                         update_JxW_values);
+      const FEValuesExtractors::Vector     displacement(0);
+      const unsigned int                   n = fe.n_dofs_per_cell();
+      std::vector<types::global_dof_index> dofs(n);
+      std::vector<Vector<double>> cell_loads(dim + 1, Vector<double>(n));
+      const double                g = loads.gravitational_acceleration;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            for (auto &c : cell_loads)
+              c = 0;
+            const parameters::MaterialParameters &material =
+              materials.at(cell->material_id());
+            const double excess =
+              material.saturated_weight(g) - material.weight(g);
+            if (excess != 0)
+              {
+                fe_values.reinit(cell);
+                for (const unsigned int q :
+                     fe_values.quadrature_point_indices())
+                  if (table.value(fe_values.quadrature_point(q)) > 0)
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        const Tensor<1, dim> N_i =
+                          fe_values[displacement].value(i, q);
+                        for (unsigned int d = 0; d < dim; ++d)
+                          cell_loads[1 + d](i) +=
+                            N_i[d] * excess * fe_values.JxW(q);
+                      }
+              }
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() && faces.count(face->boundary_id()))
+                {
+                  fe_face_values.reinit(cell, face);
+                  for (const unsigned int q :
+                       fe_face_values.quadrature_point_indices())
+                    {
+                      // A pressure pushes against the outward normal.
+                      const Tensor<1, dim> traction =
+                        -table.value(fe_face_values.quadrature_point(q)) *
+                        fe_face_values.normal_vector(q);
+                      for (unsigned int i = 0; i < n; ++i)
+                        cell_loads[0](i) +=
+                          fe_face_values[displacement].value(i, q) * traction *
+                          fe_face_values.JxW(q);
+                    }
+                }
+            cell->get_dof_indices(dofs);
+            for (unsigned int k = 0; k <= dim; ++k)
+              result[k].add(dofs, cell_loads[k]);
+          }
+      if (Utilities::MPI::n_mpi_processes(comm) > 1)
+        for (auto &load : result)
+          Utilities::MPI::sum(load, comm, load);
+      return result;
+    }
+
     template std::vector<Vector<double>>
     ElasticBlock<2>::unit_body_force_loads(const bool) const;
     template std::vector<Vector<double>>
     ElasticBlock<3>::unit_body_force_loads(const bool) const;
+    template std::vector<Vector<double>>
+    ElasticBlock<2>::water_loads(const Function<2> &,
+                                 const std::set<types::boundary_id> &) const;
+    template std::vector<Vector<double>>
+    ElasticBlock<3>::water_loads(const Function<3> &,
+                                 const std::set<types::boundary_id> &) const;
   } // namespace blocks
 } // namespace fdem

@@ -260,9 +260,9 @@ namespace fdem
     }
 
     template <int dim>
-    unsigned int
-    MixedSystem<dim>::add_load_case(const std::vector<Vector<double>> &displacements,
-                                    const std::vector<Vector<double>> &loads)
+    typename MixedSystem<dim>::LoadCase
+    MixedSystem<dim>::load_case(const std::vector<Vector<double>> &displacements,
+                                const std::vector<Vector<double>> &loads) const
     {
       AssertDimension(displacements.size(), blocks.size());
       AssertDimension(loads.size(), blocks.size());
@@ -289,10 +289,31 @@ namespace fdem
           for (unsigned int m = 0; m < blocks[b]->n_free_rigid_modes(); ++m)
             loads_on_modes[first_rigid_unknown[b] + m] = blocks[b]->free_mode_load(m, loads[b]);
         }
-      case_gaps.push_back(std::move(gap));
-      case_moving_gaps.push_back(std::move(moving_gap));
-      case_rigid_loads.push_back(std::move(loads_on_modes));
+      return {std::move(gap), std::move(moving_gap), std::move(loads_on_modes)};
+    }
+
+    template <int dim>
+    unsigned int
+    MixedSystem<dim>::add_load_case(const std::vector<Vector<double>> &displacements,
+                                    const std::vector<Vector<double>> &loads)
+    {
+      LoadCase parts = load_case(displacements, loads);
+      case_gaps.push_back(std::move(parts.gap));
+      case_moving_gaps.push_back(std::move(parts.moving_gap));
+      case_rigid_loads.push_back(std::move(parts.rigid_loads));
       return case_gaps.size() - 1;
+    }
+
+    template <int dim>
+    void
+    MixedSystem<dim>::replace_load_case(const unsigned int index, const LoadCase &parts)
+    {
+      AssertIndexRange(index, case_gaps.size());
+      AssertDimension(parts.gap.size(), case_gaps[index].size());
+      case_gaps[index]        = parts.gap;
+      case_moving_gaps[index] = parts.moving_gap;
+      case_rigid_loads[index] = parts.rigid_loads;
+      combine_loads();
     }
 
     template <int dim>

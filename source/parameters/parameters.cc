@@ -236,6 +236,11 @@ namespace fdem
       for (const auto &[name, material] : materials)
         materials_with_strength[name] = material.has_strength;
       probabilistic.check_targets(interfaces_without_own_strength, materials_with_strength);
+      for (const auto &variable : probabilistic.variables)
+        AssertThrow(variable.owner != analyses::RandomVariable::Owner::water ||
+                      water.piezometric_line.size() >= 2,
+                    ExcMessage("Probabilistic/Variables: '" + variable.target +
+                               "' shifts Water/Piezometric line, but no line is given."));
       AssertThrow(!probabilistic.compute || safety_factor.compute,
                   ExcMessage("Probabilistic/Compute: needs Safety factor/Compute = true (the "
                              "samples start from the safety factor's state)."));

@@ -20,21 +20,21 @@ namespace fdem
       // so p is twice the normal force on its interface. In 3D, the Hertz
       // sphere generator's quarter model: see postprocess/hertz_sphere.h.
       using Source = parameters::GeometryParameters::Source;
-      if (model.parameters.geometry.source != (dim == 2 ? Source::hertz : Source::hertz_sphere) ||
-          model.interfaces.size() != 1 || !model.contact_outcome.converged())
+      if (model.get_parameters().geometry.source != (dim == 2 ? Source::hertz : Source::hertz_sphere) ||
+          model.get_interfaces().size() != 1 || !model.get_contact_outcome().converged())
         return {};
-      const auto &cylinder   = model.parameters.materials.at(model.blocks[model.interfaces[0].block_I]->name);
-      const auto &foundation = model.parameters.materials.at(model.blocks[model.interfaces[0].block_J]->name);
+      const auto &cylinder   = model.get_parameters().materials.at(model.get_blocks()[model.get_interfaces()[0].block_I]->name);
+      const auto &foundation = model.get_parameters().materials.at(model.get_blocks()[model.get_interfaces()[0].block_J]->name);
       const double inverse_E = (1 - std::pow(cylinder.poissons_ratio, 2)) / cylinder.youngs_modulus +
                                (1 - std::pow(foundation.poissons_ratio, 2)) / foundation.youngs_modulus;
       if constexpr (dim == 3)
         return hertz_sphere_reference(
           results[0], inverse_E,
-          model.parameters.geometry.hertz_sphere.radius * model.parameters.geometry.scale_factor);
+          model.get_parameters().geometry.hertz_sphere.radius * model.get_parameters().geometry.scale_factor);
       double half_load = 0;
       for (const auto &r : results[0])
         half_load -= r.normal_force;
-      const double p = 2 * half_load, r = model.parameters.geometry.hertz.radius * model.parameters.geometry.scale_factor;
+      const double p = 2 * half_load, r = model.get_parameters().geometry.hertz.radius * model.get_parameters().geometry.scale_factor;
       const double a_exact = std::sqrt(4 * p * r * inverse_E / numbers::PI);
       const double q_exact = 2 * p / (numbers::PI * a_exact);
       // Distance from the symmetry axis: the pair that touches before loading.

@@ -43,7 +43,7 @@ namespace fdem
       std::string
       status(const Model<dim> &model, const analyses::Result *safety_factor)
       {
-        const auto &outcome = model.contact_outcome;
+        const auto &outcome = model.get_contact_outcome();
         if (safety_factor != nullptr)
           {
             if (safety_factor->converged)
@@ -63,21 +63,23 @@ namespace fdem
     template <int dim>
     nlohmann::json
     make_summary(const Model<dim> &                                   model,
+                 const analyses::AnalysisResults &                    analyses_results,
                  const std::vector<std::vector<PairResult<dim>>> &results,
                  const nlohmann::json &                               hertz,
-                 const std::vector<double> &                          reactions,
-                 const analyses::Result *                             safety_factor)
+                 const std::vector<double> &                          reactions)
     {
+    const analyses::Result *safety_factor =
+      analyses_results.has_safety_factor ? &analyses_results.safety_factor : nullptr;
     nlohmann::json summary = nlohmann::json::object();
-    summary["case"]        = model.parameters.case_name;
+    summary["case"]        = model.get_parameters().case_name;
     summary["dimension"]   = dim;
-    summary["fe_degree"]   = model.parameters.fe_degree;
+    summary["fe_degree"]   = model.get_parameters().fe_degree;
     summary["n_mpi_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     unsigned int n_dofs    = 0;
     summary["blocks"]      = nlohmann::json::array();
-    for (unsigned int b = 0; b < model.blocks.size(); ++b)
+    for (unsigned int b = 0; b < model.get_blocks().size(); ++b)
       {
-        const auto &block = *model.blocks[b];
+        const auto &block = *model.get_blocks()[b];
         n_dofs += block.dof_handler.n_dofs();
         double volume = 0;
         for (const auto &cell : block.triangulation.active_cell_iterators())
@@ -92,7 +94,7 @@ namespace fdem
       }
     summary["n_dofs"]     = n_dofs;
     summary["interfaces"] = nlohmann::json::array();
-    for (unsigned int i = 0; i < model.interfaces.size(); ++i)
+    for (unsigned int i = 0; i < model.get_interfaces().size(); ++i)
       {
         unsigned int n_status[3] = {0, 0, 0};
         double max_pressure = 0, normal_force = 0, tangential_force = 0;
@@ -105,7 +107,7 @@ namespace fdem
             normal_force += r.normal_force;
             tangential_force += r.tangential_force[0];
             for (unsigned int t = 0; t + 1 < dim; ++t)
-              tangential_resultant += r.tangential_force[t] * model.interfaces[i].pairs[k].frame[t + 1];
+              tangential_resultant += r.tangential_force[t] * model.get_interfaces()[i].pairs[k].frame[t + 1];
           }
         // In 3D the pairs' tangents differ: the magnitude of the resultant.
         if (dim == 3)
@@ -134,17 +136,17 @@ namespace fdem
             entry["area"]    = entry["area"].template get<double>() + r.area;
           }
         summary["interfaces"].push_back(
-          {{"name", model.interfaces[i].name},
-           {"block_I", model.blocks[model.interfaces[i].block_I]->name},
-           {"block_J", model.blocks[model.interfaces[i].block_J]->name},
-           {"n_pairs", model.interfaces[i].pairs.size()},
+          {{"name", model.get_interfaces()[i].name},
+           {"block_I", model.get_blocks()[model.get_interfaces()[i].block_I]->name},
+           {"block_J", model.get_blocks()[model.get_interfaces()[i].block_J]->name},
+           {"n_pairs", model.get_interfaces()[i].pairs.size()},
            {"area", std::accumulate(results[i].begin(), results[i].end(), 0.0,
                                     [](const double a, const auto &r) { return a + r.area; }) +
-                      std::accumulate(model.interfaces[i].shared_nodes.begin(),
-                                      model.interfaces[i].shared_nodes.end(), 0.0,
+                      std::accumulate(model.get_interfaces()[i].shared_nodes.begin(),
+                                      model.get_interfaces()[i].shared_nodes.end(), 0.0,
                                       [](const double a, const auto &n) { return a + n.area; })},
-           {"n_unpaired_nodes", model.interfaces[i].n_unpaired_I + model.interfaces[i].n_unpaired_J},
-           {"n_nodes_paired_in_an_earlier_interface", model.interfaces[i].n_shared_nodes},
+           {"n_unpaired_nodes", model.get_interfaces()[i].n_unpaired_I + model.get_interfaces()[i].n_unpaired_J},
+           {"n_nodes_paired_in_an_earlier_interface", model.get_interfaces()[i].n_shared_nodes},
            {"n_stick", n_status[0]},
            {"n_slip", n_status[1]},
            {"n_open", n_status[2]},
@@ -156,7 +158,7 @@ namespace fdem
       }
     if (!hertz.empty())
       summary["hertz"] = hertz;
-    summary["model.strength_reduction"] = model.strength_reduction;
+    summary["model.strength_reduction"] = model.get_strength_reduction();
     if (safety_factor != nullptr)
       {
         const auto &sf = *safety_factor;
@@ -178,7 +180,7 @@ namespace fdem
                            {"n_contact_iterations", step.solution.n_contact_iterations},
                            {"contact_result", step.solution.result}});
         summary["iterations"] = steps;
-        const auto &fe_stress = model.fe_stress;
+        const auto &fe_stress = analyses_results.fe_stress;
         summary["fe_stress_factor"] = {{"computed", fe_stress.computed},
                                        {"not_computed", fe_stress.not_computed},
                                        {"factor", number_or_null(fe_stress.factor)},
@@ -191,7 +193,7 @@ namespace fdem
                                             {"not_computed", check.not_computed},
                                             {"factor", check.factor},
                                             {"warning_above",
-                                             model.parameters.safety_factor.stiffness_check_warning},
+                                             model.get_parameters().safety_factor.stiffness_check_warning},
                                             {"wall_seconds", check.wall_seconds},
                                             {"K_stiffer", number_or_null(check.K_stiffer)},
                                             {"K_softer", number_or_null(check.K_softer)},
@@ -200,11 +202,11 @@ namespace fdem
                                                nlohmann::json("not certified") :
                                                number_or_null(check.relative_change)}};
       }
-    summary["limit_equilibrium"] = analyses::to_json(model.limit_equilibrium);
-    summary["rigid_motions"] = std::vector<double>(model.contact_outcome.solution.rigid_motions.begin(),
-                                                   model.contact_outcome.solution.rigid_motions.end());
+    summary["limit_equilibrium"] = analyses::to_json(analyses_results.limit_equilibrium);
+    summary["rigid_motions"] = std::vector<double>(model.get_contact_outcome().solution.rigid_motions.begin(),
+                                                   model.get_contact_outcome().solution.rigid_motions.end());
     nlohmann::json iterations = nlohmann::json::array();
-    for (const auto &record : model.contact_outcome.iterations)
+    for (const auto &record : model.get_contact_outcome().iterations)
       iterations.push_back({{"n_stick", record.n_stick},
                             {"n_slip", record.n_slip},
                             {"n_open", record.n_open},
@@ -212,38 +214,40 @@ namespace fdem
                             {"n_changes", record.n_changes},
                             {"reciprocal_condition", record.reciprocal_condition},
                             {"factorized", record.factorized}});
-    summary["contact"] = {{"result", contact::result_description(model.contact_outcome.result)},
-                          {"converged", model.contact_outcome.converged()},
-                          {"n_solves", model.contact_outcome.iterations.size()},
-                          {"n_cycles_broken", model.contact_outcome.n_cycles_broken},
-                          {"max_slip_angle_degrees", model.contact_outcome.max_slip_angle},
+    summary["contact"] = {{"result", contact::result_description(model.get_contact_outcome().result)},
+                          {"converged", model.get_contact_outcome().converged()},
+                          {"n_solves", model.get_contact_outcome().iterations.size()},
+                          {"n_cycles_broken", model.get_contact_outcome().n_cycles_broken},
+                          {"max_slip_angle_degrees", model.get_contact_outcome().max_slip_angle},
                           {"reciprocal_condition",
-                           model.contact_outcome.iterations.empty() ?
+                           model.get_contact_outcome().iterations.empty() ?
                              1.0 :
-                             model.contact_outcome.iterations.back().reciprocal_condition},
+                             model.get_contact_outcome().iterations.back().reciprocal_condition},
                           {"n_factorizations",
-                           model.mixed_system ? model.mixed_system->dense_solver().n_factorizations : 0},
+                           model.has_mixed_system() ? model.get_mixed_system().dense_solver().n_factorizations : 0},
                           {"n_reused_solves",
-                           model.mixed_system ? model.mixed_system->dense_solver().n_reused_solves : 0},
-                          {"mixed_system", model.parameters.solver.mixed_system},
+                           model.has_mixed_system() ? model.get_mixed_system().dense_solver().n_reused_solves : 0},
+                          {"mixed_system", model.get_parameters().solver.mixed_system},
                           {"n_gmres_iterations",
-                           model.mixed_system ? model.mixed_system->n_krylov_iterations : 0},
+                           model.has_mixed_system() ? model.get_mixed_system().n_krylov_iterations : 0},
                           {"n_flexibility_products",
-                           model.mixed_system ? model.mixed_system->n_flexibility_products : 0},
+                           model.has_mixed_system() ? model.get_mixed_system().n_flexibility_products : 0},
                           {"iterations", iterations}};
-    summary["warnings"] = model.warnings;
+    summary["warnings"] = model.get_warnings();
     // For the log file and here, not the screen (postprocess/result_block.h).
-    summary["conditioning"] = {{"notes", model.conditioning_notes},
-                               {"max_digits_lost", model.max_digits_lost}};
+    summary["conditioning"] = {{"notes", model.get_conditioning_notes()},
+                               {"max_digits_lost", model.get_max_digits_lost()}};
     summary["status"]   = status(model, safety_factor);
     return summary;
     }
 
     template nlohmann::json
-    make_summary(const Model<2> &, const std::vector<std::vector<PairResult<2>>> &,
-                 const nlohmann::json &, const std::vector<double> &, const analyses::Result *);
+    make_summary(const Model<2> &, const analyses::AnalysisResults &,
+                 const std::vector<std::vector<PairResult<2>>> &, const nlohmann::json &,
+                 const std::vector<double> &);
     template nlohmann::json
-    make_summary(const Model<3> &, const std::vector<std::vector<PairResult<3>>> &,
-                 const nlohmann::json &, const std::vector<double> &, const analyses::Result *);
+    make_summary(const Model<3> &, const analyses::AnalysisResults &,
+                 const std::vector<std::vector<PairResult<3>>> &, const nlohmann::json &,
+                 const std::vector<double> &);
   } // namespace postprocess
 } // namespace fdem

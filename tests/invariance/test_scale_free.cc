@@ -129,12 +129,12 @@ TEST(ScaleFree, CommonModulusChangesNothingButDisplacements)
         material.youngs_modulus = E;
       std::ostringstream log;
       const auto         model = test_support::solved_model<2>(parameters, log);
-      ASSERT_TRUE(model->contact_outcome.converged())
-        << "E = " << E << ": " << contact::result_description(model->contact_outcome.result);
+      ASSERT_TRUE(model->get_contact_outcome().converged())
+        << "E = " << E << ": " << contact::result_description(model->get_contact_outcome().result);
       std::string statuses;
-      for (const auto &state : model->contact_outcome.states)
+      for (const auto &state : model->get_contact_outcome().states)
         statuses += contact::status_name(state.status)[1];
-      const Vector<double> &f = model->contact_outcome.solution.forces;
+      const Vector<double> &f = model->get_contact_outcome().solution.forces;
       if (reference_forces.empty())
         {
           reference_forces.assign(f.begin(), f.end());

@@ -12,6 +12,14 @@
       the point estimates are exact for a linear K of normal variables
       (with a random Loads/Unit weight factor lambda: each sample's K against
       (c L + lambda W cos(theta) tan(phi)) / (lambda W sin(theta)))
+      With a random kh or water level (block_kh.prm, block_water.prm)
+      each sample's K against the planar K under that load, and the
+      moments and P(K < 1) against one-dimensional quadratures over the
+      load variable (given it, K is normal): check_load_moments()
+  probabilistic_checks.py water EXE CASE.prm
+      a water line that crosses the block: each sample's K against the
+      deterministic K of the case with the line shifted by the sample's
+      value (check_water())
   probabilistic_checks.py determinism EXE CASE.prm
       the same seed gives the same samples.csv bit for bit, run twice, and
       with 2 MPI ranks the same samples and statuses, with the same K
@@ -61,20 +69,41 @@ def check_exact(exe, prm):
     names = [k for k in rows[0] if k not in ("sample", "K", "status", "steps")]
     c_name, t_name = names[0], names[1]
     weight = "Loads/Unit weight factor"
+    kh_name, shift = "Loads/Horizontal seismic coefficient", "Water/Piezometric line shift"
+    kh_case = float(parameters.get("Loads/Horizontal seismic coefficient", 0))
+    # The water: a level line at y_w over the whole surface, the pore
+    # pressure on it gamma_w (y_w + delta - y); the surface runs from the
+    # origin up the plane, its middle at y = L sin(theta) / 2.
+    line = parameters.get("Water/Piezometric line", "").strip()
+    y_w = float(line.split(";")[0].split(",")[1]) if line else None
+    gamma_w = float(parameters.get("Water/Unit weight of water", 9.81))
+    watered = parameters.get("Interfaces/sliding surface/Pore pressure", "0") == "piezometric"
+
+    def A_and_D(lam, kh, delta):
+        """K = (c L + A tan(phi)) / D for a weight factor, kh and a shift."""
+        U = gamma_w * L * (y_w + delta - L * math.sin(theta) / 2) if watered else 0
+        return (lam * W * (math.cos(theta) - kh * math.sin(theta)) - U,
+                lam * W * (math.sin(theta) + kh * math.cos(theta)))
+
     N = p["n_samples"]
     assert p["n_certified"] == N, f"{N - p['n_certified']} samples without a certified K"
-    # Each sample's K is the planar one, with its weight factor lambda if
-    # it has one (the weight lambda W): the iteration's tolerance is 1e-9.
+    # Each sample's K is the planar one, with its weight factor lambda (the
+    # weight lambda W), its kh (the force kh lambda W) and its water level
+    # if it has them: the iteration's tolerance is 1e-9.
     worst = 0
     for r in rows:
-        lam = float(r[weight]) if weight in r else 1.0
-        exact = (L * float(r[c_name]) + lam * W * math.cos(theta) * float(r[t_name])) / \
-            (lam * W * math.sin(theta))
+        A, D = A_and_D(float(r[weight]) if weight in r else 1.0,
+                       float(r[kh_name]) if kh_name in r else kh_case,
+                       float(r[shift]) if shift in r else 0.0)
+        exact = (L * float(r[c_name]) + A * float(r[t_name])) / D
         worst = max(worst, abs(float(r["K"]) - exact) / exact)
     print(f"largest relative difference of a sample's K from the exact one: {worst:.1e}")
     assert worst <= 1e-7, "a sample's K is not the exact planar K"
     if weight in rows[0]:
         return  # K is not linear in lambda: the moments below are for linear K
+    if kh_name in rows[0] or shift in rows[0]:
+        check_load_moments(p, names, A_and_D, L, N)
+        return
     (mc, sc), (mt, st) = [(v["mean"], v["std"]) for v in p["variables"]]
     rho = p["correlation"][1]
     mean = a * mc + b * mt
@@ -104,6 +133,51 @@ def check_exact(exe, prm):
     bins = p["fragility"]["bins"]
     assert sum(b["n"] for b in bins) == N
     assert all(b["lower"] <= b["P_failure"] <= b["upper"] for b in bins)
+
+
+def check_load_moments(p, names, A_and_D, L, N):
+    """c, tan(phi) normal and a load variable x (kh or the water's shift),
+    normal and uncorrelated with them: given x, K = (c L + A(x) tan(phi)) /
+    D(x) is normal, with mean mu(x) and standard deviation s(x), so E K =
+    E mu, Var K = E (s^2 + mu^2) - (E K)^2 and P(K < 1) = E Phi((1 - mu) /
+    s), integrals over x by 80-point Gauss-Hermite quadrature (exact for
+    polynomials of degree 159; mu and s are smooth over the +-8 standard
+    deviations its nodes span: measured by the change from 60 points)."""
+    import numpy
+    (mc, sc), (mt, st), (mx, sx) = [(v["mean"], v["std"]) for v in p["variables"]]
+    R = p["correlation"]
+    assert R[2] == R[5] == 0, "the load variable must be uncorrelated with c and tan(phi)"
+    rho = R[1]
+    x_name = names[2]
+
+    def moments(n):
+        z, w = numpy.polynomial.hermite_e.hermegauss(n)
+        w = w / math.sqrt(2 * math.pi)
+        m1 = m2 = P = 0.0
+        for zi, wi in zip(z, w):
+            x = mx + sx * zi
+            A, D = A_and_D(1.0, x, 0.0) if x_name.startswith("Loads/") else A_and_D(1.0, 0.0, x)
+            mu = (L * mc + A * mt) / D
+            s2 = ((L * sc) ** 2 + (A * st) ** 2 + 2 * rho * L * A * sc * st) / D ** 2
+            m1 += wi * mu
+            m2 += wi * (s2 + mu * mu)
+            P += wi * phi((1 - mu) / math.sqrt(s2))
+        return m1, math.sqrt(m2 - m1 * m1), P
+
+    mean, std, P = moments(80)
+    change = max(abs(a - b) for a, b in zip(moments(60), (mean, std, P)))
+    print(f"exact (quadrature over {x_name}, 80 points; change from 60: {change:.1e}): "
+          f"mean K {mean:.6f}, std {std:.6f}, P(K < 1) {P:.5f}; {N} samples")
+    assert change <= 1e-10
+    checks = [("mean", p["K_mean"], mean, 4 * std / math.sqrt(N)),
+              ("std", p["K_std"], std, 4 * std / math.sqrt(2 * (N - 1))),
+              ("P(K < 1)", p["P_failure"], P, 4 * math.sqrt(P * (1 - P) / N))]
+    for name, got, want, tolerance in checks:
+        print(f"{name:9s} sampled {got:.6f}, exact {want:.6f}, difference {got - want:+.2e} "
+              f"(tolerance {tolerance:.2e}, four standard errors)")
+        assert abs(got - want) <= tolerance, name
+    bins = p["fragility"]["bins"]
+    assert sum(b["n"] for b in bins) == N
 
 
 def check_determinism(exe, prm):
@@ -182,9 +256,36 @@ def check_paper(exe, prm):
     assert abs(p["K_std"] / p["fosm"]["K_std"] - 1) <= 0.2, "the COV of K disagrees with FOSM's"
 
 
+def check_water(exe, prm):
+    """Each sample's K with a shifted water line against the deterministic K
+    of the case with the line itself shifted: the same loads by another
+    path (the whole assembly), so the same K to the iteration's tolerance
+    (1e-9; 1e-7 allows the two runs' different round-off)."""
+    with fdem_run.temporary_run(exe, prm) as result:
+        assert result.returncode == 0, result.stdout + result.stderr
+        parameters = result.parameters
+        _, rows = samples_of(result)
+    line = [[float(v) for v in point.split(",")]
+            for point in parameters["Water/Piezometric line"].split(";")]
+    shift = "Water/Piezometric line shift"
+    for r in rows[:3]:
+        delta = float(r[shift])
+        shifted = "; ".join(f"{x!r}, {y + delta!r}" for x, y in line)
+        with fdem_run.temporary_run(exe, prm, settings={
+                "Water/Piezometric line": shifted, "Probabilistic/Compute": "false"}) as run:
+            assert run.returncode == 0, run.stdout + run.stderr
+            K = run.summary["safety_factor"]
+        assert r["status"] == "certified", r
+        difference = float(r["K"]) / K - 1
+        print(f"shift {delta:+.4f} m: sampled K {float(r['K']):.9f}, the shifted case's "
+              f"{K:.9f} ({difference:+.1e})")
+        assert abs(difference) <= 1e-7, "a sample's water load is not the shifted line's"
+
+
 def main():
     mode, exe, prm = sys.argv[1:4]
-    {"exact": check_exact, "determinism": check_determinism, "paper": check_paper}[mode](exe, prm)
+    {"exact": check_exact, "determinism": check_determinism, "paper": check_paper,
+     "water": check_water}[mode](exe, prm)
 
 
 if __name__ == "__main__":

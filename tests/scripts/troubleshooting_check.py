@@ -22,7 +22,7 @@ import sys
 
 ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
 # Where a tagged warning is printed with a "warning:" prefix.
-PRINTERS = {"source/model.cc", "source/checks/layout_checks.cc", "source/main.cc", "source/run_case.cc"}
+PRINTERS = {"source/model.cc", "source/checks/layout_checks.cc", "source/main.cc", "source/run/run_case.cc"}
 
 
 def sources():

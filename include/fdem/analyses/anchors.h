@@ -60,19 +60,37 @@ namespace fdem
     std::vector<Anchor<dim>>
     locate_anchors(const Model<dim> &model);
 
+    /** The anchors placed in the model and how their force enters it. */
+    template <int dim>
+    struct AnchorLoads
+    {
+      std::vector<Anchor<dim>> anchors;
+      /** Reinforcement/Reduced by K: the shear component divided by K. */
+      bool reduced_by_K = false;
+    };
+
     /**
      * Adds the anchors' loads to the model (after compute_flexibility()),
      * as two load cases on the blocks' factorisations (no new
      * factorisation): the normal and the shear components of all anchors,
      * each a pair of opposite point forces at head and bond point shared by
-     * the cell's vertices through the shape functions. Sets
-     * Model::strength_dependent_loads (coefficient 1 on the normal case, 1 or
-     * 1/K on the shear case) and Model::reinforcement_output (anchors.csv,
-     * summary.json's "reinforcement"), and prints one line per anchor. Does
-     * nothing without anchors.
+     * the cell's vertices through the shape functions. Sets the model's
+     * strength-dependent loads (Model::set_strength_dependent_loads():
+     * coefficient 1 on the normal case, 1 or 1/K on the shear case) and
+     * prints one line per anchor. Returns the anchors placed (none without
+     * Reinforcement).
      */
     template <int dim>
-    void
+    AnchorLoads<dim>
     add_anchor_loads(Model<dim> &model);
+
+    /**
+     * Writes anchors.csv into the results folder (rank 0) and returns
+     * summary.json's "reinforcement" for the model's current state (its K).
+     */
+    template <int dim>
+    nlohmann::json
+    reinforcement_output(const Model<dim>       &model,
+                         const AnchorLoads<dim> &placed);
   } // namespace analyses
 } // namespace fdem

@@ -4,6 +4,7 @@
 
 #include <fdem/contact/contact_law.h>
 #include <fdem/contact/mixed_system.h>
+#include <fdem/model.h>
 
 #include <limits>
 #include <string>
@@ -39,13 +40,12 @@ namespace fdem
     };
 
     /**
-     * Solves @p system with every pair stuck and sums the sliding surface's
-     * forces (@p on_sliding_surface per pair) with the full @p strengths.
+     * Solves the model's mixed system with every pair stuck, at its current
+     * load, and sums the sliding surface's forces with the full strengths;
+     * the model's contact state does not change.
      */
     template <int dim>
     FeStressFactor
-    fe_stress_factor(contact::MixedSystem<dim>                &system,
-                     const std::vector<contact::PairStrength> &strengths,
-                     const std::vector<bool> &on_sliding_surface);
+    fe_stress_factor(Model<dim> &model);
   } // namespace analyses
 } // namespace fdem

@@ -55,21 +55,25 @@ namespace fdem
 
     /**
      * The probabilistic safety factor (Probabilistic subsection): after the
-     * model's safety factor, K of every sample of the random soil strengths
-     * by the iteration of eqs. (10)-(13) (iterate(), with its certificate)
-     * on the model's one factorisation: the blocks' stiffness, C, g_bar and
-     * the loads do not depend on c and phi, so a sample costs only its
-     * contact solves. Each sample starts from the state and K at the
-     * variables' means and from a fresh factorisation of the mixed system,
-     * so its result does not depend on which samples were solved before:
-     * the samples are split over the MPI ranks and gathered in order, and
-     * the results are the same bit for bit with any number of ranks. Also
-     * FOSM and Rosenblueth's point estimates, if asked. Rank 0 writes
-     * samples.csv into the results folder. Returns summary.json's
-     * "probabilistic".
+     * model's safety factor, K of every sample of the random variables by
+     * the iteration of eqs. (10)-(13) (iterate(), with its certificate) on
+     * the model's one factorisation: the blocks' stiffness, C and W do not
+     * depend on c and phi, nor on the weight, kh or the water level, which
+     * are right-hand sides (SampleLoads), so a sample costs its contact
+     * solves (and, with a random water level, one block solve of its
+     * water). Each sample starts as the deterministic K did, at Safety
+     * factor/Initial factor from the initial states, with a fresh
+     * factorisation of the mixed system, so its result does not depend on
+     * which samples were solved before: the samples are split over the MPI
+     * ranks and gathered in order, and the results are the same bit for
+     * bit with any number of ranks. Also FOSM and Rosenblueth's point
+     * estimates, if asked. Rank 0 writes samples.csv into the results
+     * folder. Returns summary.json's "probabilistic", with
+     * @p deterministic_K, the model's own K, beside the samples' statistics.
      */
     template <int dim>
     nlohmann::json
-    probabilistic_safety_factor(Model<dim> &model);
+    probabilistic_safety_factor(Model<dim>  &model,
+                                const double deterministic_K);
   } // namespace analyses
 } // namespace fdem

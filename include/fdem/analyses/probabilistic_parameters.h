@@ -23,8 +23,11 @@ namespace fdem
       {
         interface,
         material,
-        /** The loads: Loads/Unit weight factor. */
-        loads
+        /** The loads: Loads/Unit weight factor, Loads/Horizontal seismic
+           coefficient. */
+        loads,
+        /** The water: Water/Piezometric line shift. */
+        water
       };
       enum class Quantity
       {
@@ -33,7 +36,14 @@ namespace fdem
         tan_phi,
         /** A factor on the weight of every block (Model::body_force_cases()).
          */
-        unit_weight_factor
+        unit_weight_factor,
+        /** The pseudo-static kh (analyses/seismic.h): a body force kh W
+           towards the free face, a combination of the body-force cases. */
+        horizontal_seismic_coefficient,
+        /** A vertical shift (length, up) of every point of Water/Piezometric
+           line: new pore pressures and saturated weights, a right-hand side.
+         */
+        water_level_shift
       };
       /** As written: e.g. "Interfaces/sliding surface/Cohesion". */
       std::string target;

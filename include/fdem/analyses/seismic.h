@@ -47,7 +47,7 @@ namespace fdem
     set_seismic_load(Model<dim> &model, const SeismicLoad<dim> &load);
 
     /**
-     * The seismic analyses of a run, called once by Model::run() after
+     * The seismic analyses of a run, called once by CaseRun::run() after
      * compute_flexibility(): the yield acceleration (if asked) and the
      * Newmark displacement (if a record is given), then the load of
      * Loads/Horizontal and Vertical seismic coefficient set for the safety

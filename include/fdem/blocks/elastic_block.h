@@ -26,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <set>
 #include <vector>
 
 namespace fdem
@@ -242,6 +243,20 @@ namespace fdem
        */
       std::vector<Vector<double>>
       unit_body_force_loads(const bool saturated) const;
+
+      /**
+       * The nodal forces that a water table brings, given by its pressure
+       * @p water_table (as #water_table): [0] that pressure on the faces of
+       * the face groups @p faces, pushing into the block as assemble()
+       * applies a pressure; [1 + d] the saturated weight's excess over the
+       * weight where @p water_table is positive, per unit coefficient in
+       * direction d. The same quadratures as assemble(), so that with the
+       * block's own water table these are the parts of its F that the
+       * water makes. Collective.
+       */
+      std::vector<Vector<double>>
+      water_loads(const Function<dim>                  &water_table,
+                  const std::set<types::boundary_id> &faces) const;
 
       std::string                    name;
       parallel::shared::Triangulation<dim> triangulation;

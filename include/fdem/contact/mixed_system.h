@@ -172,6 +172,29 @@ namespace fdem
       add_load_case(const std::vector<Vector<double>> &displacements,
                     const std::vector<Vector<double>> &loads);
 
+      /** A load case's parts: its g_bar, its moving blocks' part, its omega^T F. */
+      struct LoadCase
+      {
+        Vector<double> gap, moving_gap, rigid_loads;
+      };
+
+      /**
+       * The parts of the load @p loads with displacements @p displacements,
+       * as add_load_case() computes them, without adding a case.
+       */
+      LoadCase
+      load_case(const std::vector<Vector<double>> &displacements,
+                const std::vector<Vector<double>> &loads) const;
+
+      /**
+       * Replaces load case @p index by @p parts (load_case()) and
+       * recombines the current load: a load that changes from one solve to
+       * the next without the number of cases growing (the water of a
+       * probabilistic sample).
+       */
+      void
+      replace_load_case(const unsigned int index, const LoadCase &parts);
+
       /** Number of load cases added. */
       unsigned int
       n_load_cases() const

@@ -2,7 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
-#include <fdem/analyses/safety_factor_iteration.h>
+#include <fdem/analyses/analysis_results.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/interface_output.h>
 
@@ -18,16 +18,17 @@ namespace fdem
      * The schema of summary.json (README, "What a run writes") for the
      * model's current contact state: case, blocks with their support
      * reactions @p reactions, interfaces from @p results, the Hertz
-     * reference @p hertz if any, the safety factor with its steps and
-     * certificate if @p safety_factor is given, the last contact solve, and
-     * "status". The run adds its timings and peak memory.
+     * reference @p hertz if any, what the analyses found (@p analyses_results:
+     * the safety factor with its steps and certificate, the FE-stress
+     * factor, limit equilibrium), the last contact solve, and "status". The
+     * run adds its timings and peak memory.
      */
     template <int dim>
     nlohmann::json
-    make_summary(const Model<dim> &                                   model,
+    make_summary(const Model<dim> &                                model,
+                 const analyses::AnalysisResults &                 analyses_results,
                  const std::vector<std::vector<PairResult<dim>>> &results,
-                 const nlohmann::json &                               hertz,
-                 const std::vector<double> &                          reactions,
-                 const analyses::Result *                             safety_factor);
+                 const nlohmann::json &                            hertz,
+                 const std::vector<double> &                       reactions);
   } // namespace postprocess
 } // namespace fdem

@@ -3,11 +3,12 @@
 //
 // The two ways main() runs a case: validate it (up to its node pairs, with
 // the layout checks) or run it into its results folder.
+#include <fdem/analyses/anchors.h>
 #include <fdem/analyses/surface_search.h>
-#include <fdem/model.h>
 #include <fdem/postprocess/report.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>
+#include <fdem/run/case_run.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -19,13 +20,15 @@ namespace fdem
     const parameters::Parameters parameters = parameters::read_parameters(prm_file);
     if (parameters.dimension == 2)
       {
-        Model<2> model(parameters, "", log);
+        Model<2> model(parameters, log);
         model.validate();
-        return model.warnings;
+        analyses::locate_anchors(model);
+        return model.get_warnings();
       }
-    Model<3> model(parameters, "", log);
+    Model<3> model(parameters, log);
     model.validate();
-    return model.warnings;
+    analyses::locate_anchors(model);
+    return model.get_warnings();
   }
 
   nlohmann::json
@@ -54,17 +57,17 @@ namespace fdem
                                                  log.brief());
     if (parameters.dimension == 2)
       {
-        Model<2> model(parameters, expanded, log.detail(), &log.brief());
-        model.run();
-        summary = model.summary;
+        CaseRun<2> case_run(parameters, expanded, log.detail(), &log.brief());
+        case_run.run();
+        summary = case_run.summary();
         if (search.performed && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
           analyses::write_surface_search(search, folder.staging(), summary);
       }
     else
       {
-        Model<3> model(parameters, expanded, log.detail(), &log.brief());
-        model.run();
-        summary = model.summary;
+        CaseRun<3> case_run(parameters, expanded, log.detail(), &log.brief());
+        case_run.run();
+        summary = case_run.summary();
       }
     // The report reads the finished files and goes into the folder before
     // it is committed (a folder with a report is whole).
