@@ -46,10 +46,11 @@ namespace fdem
       {
       public:
         SampleSafetyFactor(Model<dim>                        &model,
-                           const std::vector<RandomVariable> &variables)
+                           const std::vector<RandomVariable> &variables,
+                           const SeismicResults              &seismic)
           : model(model)
           , strengths(model, variables)
-          , loads(model, variables)
+          , loads(model, variables, seismic)
           , on_sliding_surface(model.pairs_on_sliding_surface())
           , quiet(nullptr)
         {
@@ -242,7 +243,9 @@ namespace fdem
 
     template <int dim>
     nlohmann::json
-    probabilistic_safety_factor(Model<dim> &model, const double deterministic_K)
+    probabilistic_safety_factor(Model<dim>           &model,
+                                const double          deterministic_K,
+                                const SeismicResults &seismic)
     {
       const ProbabilisticParameters &p = model.get_parameters().probabilistic;
       TimerOutput::Scope scope(model.phase_timer(), "probabilistic");
@@ -258,7 +261,7 @@ namespace fdem
         }
 
       nlohmann::json          result;
-      SampleSafetyFactor<dim> evaluator(model, p.variables);
+      SampleSafetyFactor<dim> evaluator(model, p.variables, seismic);
       const unsigned int      factorized_before =
         model.get_mixed_system().dense_solver().n_factorizations;
       const unsigned int reused_before =
@@ -430,8 +433,8 @@ namespace fdem
     }
 
     template nlohmann::json
-    probabilistic_safety_factor(Model<2> &, const double);
+    probabilistic_safety_factor(Model<2> &, const double, const SeismicResults &);
     template nlohmann::json
-    probabilistic_safety_factor(Model<3> &, const double);
+    probabilistic_safety_factor(Model<3> &, const double, const SeismicResults &);
   } // namespace analyses
 } // namespace fdem

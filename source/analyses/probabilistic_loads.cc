@@ -11,7 +11,8 @@ namespace fdem
   {
     template <int dim>
     SampleLoads<dim>::SampleLoads(Model<dim>                        &model,
-                                  const std::vector<RandomVariable> &variables)
+                                  const std::vector<RandomVariable> &variables,
+                                  const SeismicResults &model_seismic)
       : model(model)
     {
       using Quantity = RandomVariable::Quantity;
@@ -32,10 +33,10 @@ namespace fdem
       seismic.kh            = loads.horizontal_seismic_coefficient;
       seismic.kv            = loads.vertical_seismic_coefficient;
       seismic.on_pore_water = loads.seismic_on_pore_water;
-      model_is_seismic      = model.seismic.active;
-      if (model.seismic.active)
+      model_is_seismic      = model_seismic.active;
+      if (model_seismic.active)
         for (unsigned int d = 0; d < dim; ++d)
-          seismic.direction[d] = model.seismic.direction[d];
+          seismic.direction[d] = model_seismic.direction[d];
       else if (kh_variable >= 0)
         {
           std::string from;

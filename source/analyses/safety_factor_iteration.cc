@@ -51,6 +51,41 @@ namespace fdem
       }
 
       /**
+       * Narrows the bracket [K_low, K_high] by the solved @p step and sets
+       * its K_next (and distance_left): a step with a factor raises K_low,
+       * one without a static solution or with every pair slipping lowers
+       * K_high.
+       */
+      void
+      advance(Step &step, const Step *previous, const double previous_step, double &K_low,
+              double &K_high)
+      {
+        const ReducedStrengthSolution &s = step.solution;
+        const double                   K = step.K;
+        if (s.has_factor() && s.degenerate)
+          {
+            // Every pair in contact slips: K* = K whatever K is, which only
+            // says that the reduced strength is used up. The limit lies at
+            // or below K; go back to K* of the last informative step.
+            K_high      = std::min(K_high, K);
+            step.K_next = previous != nullptr && previous->K_star < K_high ? previous->K_star :
+                          std::isnan(K_low)                                ? 0.5 * K :
+                                                                             0.5 * (K_low + K_high);
+          }
+        else if (s.has_factor())
+          {
+            K_low              = std::isnan(K_low) ? K : std::max(K_low, K);
+            step.K_next        = next_factor(step, previous, K_low, K_high);
+            step.distance_left = distance_left(step, previous_step);
+          }
+        else if (!s.converged)
+          {
+            K_high      = std::min(K_high, K);
+            step.K_next = std::isnan(K_low) ? 0.5 * K : 0.5 * (K_low + K_high);
+          }
+      }
+
+      /**
        * K* independent of K, a planar surface (F_R and F_tau linear in the
        * reduced strengths): with K* = m K + q through the last two solved
        * steps, |m| below 1 % and the fixed point |m| |K* - K| / (1 - |m|)
@@ -113,27 +148,7 @@ namespace fdem
           const ReducedStrengthSolution &s = step.solution;
           if (s.has_factor())
             step.K_star = K * s.resisting_force / s.sliding_force; // eq. (12)
-          if (s.has_factor() && s.degenerate)
-            {
-              // Every pair in contact slips: K* = K whatever K is, which only
-              // says that the reduced strength is used up. The limit lies at
-              // or below K; go back to K* of the last informative step.
-              K_high      = std::min(K_high, K);
-              step.K_next = previous != nullptr && previous->K_star < K_high ? previous->K_star :
-                            std::isnan(K_low)                                ? 0.5 * K :
-                                                                               0.5 * (K_low + K_high);
-            }
-          else if (s.has_factor())
-            {
-              K_low              = std::isnan(K_low) ? K : std::max(K_low, K);
-              step.K_next        = next_factor(step, previous, K_low, K_high);
-              step.distance_left = distance_left(step, previous_step);
-            }
-          else if (!s.converged)
-            {
-              K_high      = std::min(K_high, K);
-              step.K_next = std::isnan(K_low) ? 0.5 * K : 0.5 * (K_low + K_high);
-            }
+          advance(step, previous, previous_step, K_low, K_high);
           result.steps.push_back(step);
           log_step(step, result.steps.size(), log);
 

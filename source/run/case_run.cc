@@ -93,7 +93,9 @@ namespace fdem
         if (parameters.probabilistic.compute)
           analysis_results.probabilistic =
             analyses::probabilistic_safety_factor(
-              model, analysis_results.safety_factor.safety_factor);
+              model,
+              analysis_results.safety_factor.safety_factor,
+              analysis_results.seismic);
       }
     else
       {

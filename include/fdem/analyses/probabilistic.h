@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/analyses/probabilistic_parameters.h>
+#include <fdem/analyses/seismic_results.h>
 #include <fdem/model.h>
 
 #include <nlohmann/json.hpp>
@@ -70,10 +71,12 @@ namespace fdem
      * estimates, if asked. Rank 0 writes samples.csv into the results
      * folder. Returns summary.json's "probabilistic", with
      * @p deterministic_K, the model's own K, beside the samples' statistics.
+     * @p seismic is the model's seismic load (seismic_analyses()).
      */
     template <int dim>
     nlohmann::json
-    probabilistic_safety_factor(Model<dim>  &model,
-                                const double deterministic_K);
+    probabilistic_safety_factor(Model<dim>           &model,
+                                const double          deterministic_K,
+                                const SeismicResults &seismic);
   } // namespace analyses
 } // namespace fdem

@@ -37,9 +37,14 @@ namespace fdem
     class SampleLoads
     {
     public:
-      /** Makes the load cases the variables need (collective). */
+      /**
+       * Makes the load cases the variables need (collective); @p seismic
+       * is the model's seismic load (seismic_analyses()), which a sample's
+       * kh or weight changes.
+       */
       SampleLoads(Model<dim>                        &model,
-                  const std::vector<RandomVariable> &variables);
+                  const std::vector<RandomVariable> &variables,
+                  const SeismicResults              &seismic);
 
       /** Whether a variable changes the load. */
       bool
