@@ -23,9 +23,9 @@ namespace fdem
   Model<dim>::Model(const parameters::Parameters &parameters,
                     std::ostream &                log,
                     std::ostream *                brief)
-    : parameters(parameters)
-    , log(log)
+    : log(log)
     , brief(brief != nullptr ? *brief : log)
+    , parameters(parameters)
     , is_writer(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     , timer(log, TimerOutput::never, TimerOutput::wall_times)
   {}

@@ -445,8 +445,6 @@ namespace fdem
     }
 
   private:
-    /** The loads that depend on K (set_strength_dependent_loads()). */
-    std::function<void(double K)> strength_dependent_loads;
     const parameters::Parameters                        parameters;
     geometry::MeshDescription<dim>                      mesh;
     std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> blocks;
@@ -456,6 +454,8 @@ namespace fdem
      * node of its side I, by the node's x dof (empty for the others).
      */
     std::vector<std::map<types::global_dof_index, blocks::SoilStrength>> soil_strengths;
+    /** The loads that depend on K (set_strength_dependent_loads()). */
+    std::function<void(double K)> strength_dependent_loads;
     std::vector<Vector<double>>                         external_displacements;
     std::unique_ptr<contact::MixedSystem<dim>>          mixed_system;
     contact::ContactOutcome<dim>                        contact_outcome;
