@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
-#include <fdem/run/case_run.h>
 #include <fdem/parameters/parameters.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>
 #include <fdem/postprocess/run_log.h>
+#include <fdem/run/case_run.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -62,11 +62,14 @@ main(int argc, char *argv[])
             validate = true;
           else if (argument == "--quiet" || argument == "--verbose")
             {
-              const auto level = argument == "--quiet" ? fdem::postprocess::Verbosity::quiet :
-                                                         fdem::postprocess::Verbosity::verbose;
-              if (verbosity != fdem::postprocess::Verbosity::normal && verbosity != level)
+              const auto level = argument == "--quiet" ?
+                                   fdem::postprocess::Verbosity::quiet :
+                                   fdem::postprocess::Verbosity::verbose;
+              if (verbosity != fdem::postprocess::Verbosity::normal &&
+                  verbosity != level)
                 {
-                  std::cerr << "fdem-slope: error: give --quiet or --verbose, not both; see --help.\n";
+                  std::cerr
+                    << "fdem-slope: error: give --quiet or --verbose, not both; see --help.\n";
                   return 2;
                 }
               verbosity = level;
@@ -90,7 +93,8 @@ main(int argc, char *argv[])
       if (print)
         {
           std::ostream nowhere(nullptr);
-          fdem::parameters::print_parameters(host ? std::cout : nowhere, prm_file);
+          fdem::parameters::print_parameters(host ? std::cout : nowhere,
+                                             prm_file);
           return 0;
         }
       if (prm_file.empty())
@@ -117,7 +121,7 @@ main(int argc, char *argv[])
       // whatever else would reach stdout (the announcement of a long mesh)
       // goes to the log file instead.
       fdem::postprocess::RunLog log(verbosity, host);
-      const bool     quiet  = verbosity == fdem::postprocess::Verbosity::quiet;
+      const bool      quiet = verbosity == fdem::postprocess::Verbosity::quiet;
       std::streambuf *stdout_buffer = std::cout.rdbuf();
       if (quiet)
         std::cout.rdbuf(log.detail().rdbuf());
@@ -146,14 +150,16 @@ main(int argc, char *argv[])
           // problem (summary.json holds the steps, the bracket and the
           // certificate's numbers).
           if (host)
-            std::cerr << "fdem-slope: " << status << " (see summary.json)." << std::endl;
+            std::cerr << "fdem-slope: " << status << " (see summary.json)."
+                      << std::endl;
           return status.rfind("no static equilibrium", 0) == 0 ? 3 : 4;
         }
     }
   catch (const std::exception &error)
     {
       if (host)
-        std::cerr << "fdem-slope: error: " << fdem::postprocess::one_line(error) << std::endl;
+        std::cerr << "fdem-slope: error: " << fdem::postprocess::one_line(error)
+                  << std::endl;
       return 1;
     }
   catch (...)

@@ -11,18 +11,18 @@
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
-#include <iomanip>
-#include <numeric>
 #include <cmath>
 #include <functional>
+#include <iomanip>
+#include <numeric>
 #include <sstream>
 
 namespace fdem
 {
   template <int dim>
   Model<dim>::Model(const parameters::Parameters &parameters,
-                    std::ostream &                log,
-                    std::ostream *                brief)
+                    std::ostream                 &log,
+                    std::ostream                 *brief)
     : log(log)
     , brief(brief != nullptr ? *brief : log)
     , parameters(parameters)
@@ -34,7 +34,8 @@ namespace fdem
   void
   Model<dim>::progress(const std::string &what) const
   {
-    log << postprocess::progress_stamp(run_timer.wall_time()) << what << std::endl;
+    log << postprocess::progress_stamp(run_timer.wall_time()) << what
+        << std::endl;
   }
 
   template <int dim>
@@ -47,7 +48,8 @@ namespace fdem
     AssertThrow(it != mesh.face_group_names.end(),
                 ExcMessage(what + ": '" + name + "' is not a face group " +
                            "(physical group of dimension " +
-                           std::to_string(dim - 1) + ") in " + mesh.source + "."));
+                           std::to_string(dim - 1) + ") in " + mesh.source +
+                           "."));
     return it - mesh.face_group_names.begin();
   }
 
@@ -57,9 +59,14 @@ namespace fdem
   {
     TimerOutput::Scope scope(timer, "geometry");
     // Every rank makes the same mesh; rank 0 writes it.
-    const std::string  msh = is_writer && !validating ? parameters.output_directory() + "/mesh.msh" : "";
-    mesh = geometry::make_mesh<dim>(parameters.geometry, parameters.prm_directory, msh,
-                                    parameters.fe_degree, parameters.material_names);
+    const std::string msh = is_writer && !validating ?
+                              parameters.output_directory() + "/mesh.msh" :
+                              "";
+    mesh                  = geometry::make_mesh<dim>(parameters.geometry,
+                                    parameters.prm_directory,
+                                    msh,
+                                    parameters.fe_degree,
+                                    parameters.material_names);
 
     // Every block of the mesh needs a material, and every name a block.
     for (const std::string &name : mesh.block_names)
@@ -69,18 +76,23 @@ namespace fdem
                              " has no material; list it and give it a "
                              "subsection with its Young's modulus."));
     for (const std::string &name : parameters.block_names)
-      AssertThrow(std::count(mesh.block_names.begin(), mesh.block_names.end(), name) == 1,
-                  ExcMessage("Blocks/Names: '" + name + "' is not a block " +
-                             "(physical group of dimension " + std::to_string(dim) +
-                             ") in " + mesh.source + "."));
+      AssertThrow(
+        std::count(mesh.block_names.begin(), mesh.block_names.end(), name) == 1,
+        ExcMessage("Blocks/Names: '" + name + "' is not a block " +
+                   "(physical group of dimension " + std::to_string(dim) +
+                   ") in " + mesh.source + "."));
     blocks::check_materials(mesh, parameters);
     for (const std::string &name : parameters.boundary_names)
       face_group(name, "Boundaries/Names");
     for (const std::string &name : parameters.interface_names)
       face_group(name, "Interfaces/Names");
-    brief << "Geometry: " << mesh.source << ", " << mesh.cells.size() << " cells, "
-        << mesh.block_names.size() << " blocks" << std::endl;
-    checks::report(checks::check_mesh_layout(mesh, parameters.interface_names, parameters.boundary_names), warnings, log);
+    brief << "Geometry: " << mesh.source << ", " << mesh.cells.size()
+          << " cells, " << mesh.block_names.size() << " blocks" << std::endl;
+    checks::report(checks::check_mesh_layout(mesh,
+                                             parameters.interface_names,
+                                             parameters.boundary_names),
+                   warnings,
+                   log);
   }
 
   template <int dim>
@@ -90,38 +102,44 @@ namespace fdem
     TimerOutput::Scope scope(timer, "setup");
     std::map<types::boundary_id, parameters::BoundaryParameters> conditions;
     for (const std::string &name : parameters.boundary_names)
-      conditions[face_group(name, "Boundaries/Names")] = parameters.boundaries.at(name);
+      conditions[face_group(name, "Boundaries/Names")] =
+        parameters.boundaries.at(name);
     std::vector<types::boundary_id> interface_ids;
     for (const std::string &name : parameters.interface_names)
       interface_ids.push_back(face_group(name, "Interfaces/Names"));
 
     // Surface loads: boundary pressures and tractions, and the pore pressure
     // of each interface, which pushes on both sides' faces.
-    std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> pressures, tractions;
+    std::map<types::boundary_id, std::shared_ptr<const Function<dim>>>
+      pressures, tractions;
     for (const std::string &name : parameters.boundary_names)
       {
         const auto &boundary = parameters.boundaries.at(name);
         const auto  id       = face_group(name, "Boundaries/Names");
         if (boundary.pressure != "0")
-          pressures[id] = blocks::make_pressure_function<dim>(boundary.pressure, parameters.water);
+          pressures[id] = blocks::make_pressure_function<dim>(boundary.pressure,
+                                                              parameters.water);
         if (boundary.traction != "0")
-          tractions[id] = blocks::make_traction_function<dim>(boundary.traction);
+          tractions[id] =
+            blocks::make_traction_function<dim>(boundary.traction);
       }
     for (const auto &[name, surface_point] : mesh.standing_water)
       {
         const auto id = face_group(name, mesh.source);
         AssertThrow(pressures.count(id) == 0,
-                    ExcMessage("Boundaries/" + name + "/Pressure: " + mesh.source +
-                               " already fills '" + name + "' with water (Tension crack water "
-                               "depth); give the water in one of the two places."));
-        pressures[id] = blocks::make_standing_water_pressure<dim>(surface_point, parameters.loads.gravity_direction,
-                                                                  parameters.water);
+                    ExcMessage(
+                      "Boundaries/" + name + "/Pressure: " + mesh.source +
+                      " already fills '" + name +
+                      "' with water (Tension crack water "
+                      "depth); give the water in one of the two places."));
+        pressures[id] = blocks::make_standing_water_pressure<dim>(
+          surface_point, parameters.loads.gravity_direction, parameters.water);
       }
     for (const std::string &name : parameters.interface_names)
       if (parameters.interfaces.at(name).pore_pressure != "0")
         pressures[face_group(name, "Interfaces/Names")] =
-          blocks::make_pressure_function<dim>(parameters.interfaces.at(name).pore_pressure,
-                                              parameters.water);
+          blocks::make_pressure_function<dim>(
+            parameters.interfaces.at(name).pore_pressure, parameters.water);
     // A pressure that is not a number somewhere on its faces would spread
     // NaN through the solution: check it at every vertex of its faces.
     for (const auto &[id, pressure] : pressures)
@@ -129,16 +147,20 @@ namespace fdem
         if (face.boundary_id == id)
           for (const unsigned int v : face.vertices)
             {
-              const double value = pressure->value(mesh.vertices[v]);
-              const std::string &name = mesh.face_group_names[id];
-              const bool is_interface =
-                std::count(parameters.interface_names.begin(), parameters.interface_names.end(), name);
+              const double       value = pressure->value(mesh.vertices[v]);
+              const std::string &name  = mesh.face_group_names[id];
+              const bool         is_interface =
+                std::count(parameters.interface_names.begin(),
+                           parameters.interface_names.end(),
+                           name);
               std::ostringstream point;
               point << mesh.vertices[v];
               AssertThrow(std::isfinite(value),
-                          ExcMessage((is_interface ? "Interfaces/" + name + "/Pore pressure" :
-                                                     "Boundaries/" + name + "/Pressure") +
-                                     ": not a number at (" + point.str() + ")."));
+                          ExcMessage(
+                            (is_interface ?
+                               "Interfaces/" + name + "/Pore pressure" :
+                               "Boundaries/" + name + "/Pressure") +
+                            ": not a number at (" + point.str() + ")."));
             }
     // The same for a traction, at every vertex of its faces.
     for (const auto &[id, traction] : tractions)
@@ -152,7 +174,8 @@ namespace fdem
               point << mesh.vertices[v];
               for (unsigned int d = 0; d < dim; ++d)
                 AssertThrow(std::isfinite(value[d]),
-                            ExcMessage("Boundaries/" + mesh.face_group_names[id] +
+                            ExcMessage("Boundaries/" +
+                                       mesh.face_group_names[id] +
                                        "/Traction: not a finite number at (" +
                                        point.str() + ")."));
             }
@@ -162,16 +185,22 @@ namespace fdem
       {
         const std::string &name = mesh.block_names[b];
         blocks.push_back(std::make_unique<blocks::ElasticBlock<dim>>(
-          name, mesh, std::vector<unsigned int>{b}, blocks::block_materials(mesh, parameters, b),
+          name,
+          mesh,
+          std::vector<unsigned int>{b},
+          blocks::block_materials(mesh, parameters, b),
           parameters.fe_degree));
         if (!parameters.water.piezometric_line.empty())
-          blocks.back()->water_table = blocks::make_pressure_function<dim>("piezometric", parameters.water);
+          blocks.back()->water_table =
+            blocks::make_pressure_function<dim>("piezometric",
+                                                parameters.water);
         blocks.back()->setup_constraints(conditions, interface_ids);
         blocks.back()->set_surface_loads(pressures, tractions);
         blocks.back()->find_free_rigid_modes();
-        log << "  block '" << name << "': " << blocks.back()->dof_handler.n_dofs()
-            << " dofs, " << blocks.back()->n_free_rigid_modes()
-            << " free rigid modes" << std::endl;
+        log << "  block '" << name
+            << "': " << blocks.back()->dof_handler.n_dofs() << " dofs, "
+            << blocks.back()->n_free_rigid_modes() << " free rigid modes"
+            << std::endl;
       }
   }
 
@@ -192,7 +221,8 @@ namespace fdem
           // complement: computing it would only cost time and memory.
           const bool iterative = parameters.solver.mixed_system == "iterative";
           using parameters::DirectSolverType;
-          block->factorize(iterative && parameters.solver.direct_solver == DirectSolverType::mumps_schur ?
+          block->factorize(iterative && parameters.solver.direct_solver ==
+                                          DirectSolverType::mumps_schur ?
                              DirectSolverType::mumps :
                              parameters.solver.direct_solver);
         }
@@ -212,54 +242,73 @@ namespace fdem
     soil_strengths.clear();
     for (const std::string &name : parameters.interface_names)
       {
-        const types::boundary_id group = face_group(name, "Interfaces/Names");
+        const types::boundary_id  group = face_group(name, "Interfaces/Names");
         std::vector<unsigned int> sides;
         for (unsigned int b = 0; b < blocks.size(); ++b)
-          for (const auto &face : blocks[b]->triangulation.active_face_iterators())
+          for (const auto &face :
+               blocks[b]->triangulation.active_face_iterators())
             if (face->at_boundary() && face->boundary_id() == group)
               {
                 sides.push_back(b);
                 break;
               }
         AssertThrow(sides.size() == 2,
-                    ExcMessage("Interfaces/" + name + ": the face group lies on " +
+                    ExcMessage("Interfaces/" + name +
+                               ": the face group lies on " +
                                std::to_string(sides.size()) +
                                " blocks; an interface separates exactly two."));
         // Block I is the one that moves: the one with more free rigid modes.
-        if (blocks[sides[1]]->n_free_rigid_modes() > blocks[sides[0]]->n_free_rigid_modes())
+        if (blocks[sides[1]]->n_free_rigid_modes() >
+            blocks[sides[0]]->n_free_rigid_modes())
           std::swap(sides[0], sides[1]);
-        interfaces.push_back(contact::make_interface(name, group,
-                                                     sides[0], *blocks[sides[0]],
-                                                     sides[1], *blocks[sides[1]],
-                                                     parameters.interfaces.at(name).search_distance));
-        soil_strengths.push_back(parameters.interfaces.at(name).strength_from_material ?
-                                   blocks::soil_strength_at_nodes(*blocks[sides[0]], group, mesh, name) :
-                                   std::map<types::global_dof_index, blocks::SoilStrength>());
+        interfaces.push_back(contact::make_interface(
+          name,
+          group,
+          sides[0],
+          *blocks[sides[0]],
+          sides[1],
+          *blocks[sides[1]],
+          parameters.interfaces.at(name).search_distance));
+        soil_strengths.push_back(
+          parameters.interfaces.at(name).strength_from_material ?
+            blocks::soil_strength_at_nodes(
+              *blocks[sides[0]], group, mesh, name) :
+            std::map<types::global_dof_index, blocks::SoilStrength>());
         // A node on two interfaces (the line of intersection of a wedge) is
         // paired once, in the interface listed first.
         contact::remove_pairs_of_earlier_interfaces(interfaces);
         const auto &pairs = interfaces.back().pairs;
         AssertThrow(!pairs.empty(),
-                    ExcMessage("Interfaces/" + name + ": all its node pairs belong to "
+                    ExcMessage("Interfaces/" + name +
+                               ": all its node pairs belong to "
                                "interfaces listed before it."));
-        log << "  interface '" << name << "': " << interfaces.back().pairs.size()
+        log << "  interface '" << name
+            << "': " << interfaces.back().pairs.size()
             << " node pairs between '" << blocks[sides[0]]->name << "' and '"
             << blocks[sides[1]]->name << "'" << std::endl;
       }
     for (unsigned int b = 0; b < blocks.size(); ++b)
       if (blocks[b]->n_free_rigid_modes() > 0)
-        AssertThrow(std::any_of(interfaces.begin(), interfaces.end(),
-                                [b](const auto &i) { return i.block_I == b || i.block_J == b; }),
+        AssertThrow(std::any_of(interfaces.begin(),
+                                interfaces.end(),
+                                [b](const auto &i) {
+                                  return i.block_I == b || i.block_J == b;
+                                }),
                     ExcMessage("Block '" + blocks[b]->name +
                                "' is not held: its constraints leave rigid "
                                "motions free and no interface touches it."));
     checks::report(checks::pair_triple_points_once(interfaces, blocks), log);
-    checks::report(checks::check_interfaces(mesh, blocks, interfaces, parameters.interfaces), warnings, log);
+    checks::report(
+      checks::check_interfaces(mesh, blocks, interfaces, parameters.interfaces),
+      warnings,
+      log);
     types::global_dof_index n_dofs = 0;
     for (const auto &block : blocks)
       n_dofs += block->dof_handler.n_dofs();
-    brief << "Model: " << blocks.size() << (blocks.size() == 1 ? " block, " : " blocks, ") << n_dofs
-          << " dofs; " << interfaces.size() << (interfaces.size() == 1 ? " interface, " : " interfaces, ")
+    brief << "Model: " << blocks.size()
+          << (blocks.size() == 1 ? " block, " : " blocks, ") << n_dofs
+          << " dofs; " << interfaces.size()
+          << (interfaces.size() == 1 ? " interface, " : " interfaces, ")
           << n_pairs() << " node pairs" << std::endl;
   }
 
@@ -282,21 +331,28 @@ namespace fdem
       blocks,
       external_displacements,
       interfaces,
-      parameters.solver.mixed_system == "iterative" ? contact::MixedSystemSolver::iterative :
-                                                      contact::MixedSystemSolver::dense,
-      parameters.safety_factor.compute && parameters.safety_factor.stiffness_check);
+      parameters.solver.mixed_system == "iterative" ?
+        contact::MixedSystemSolver::iterative :
+        contact::MixedSystemSolver::dense,
+      parameters.safety_factor.compute &&
+        parameters.safety_factor.stiffness_check);
     mixed_system->krylov_control.tolerance = parameters.solver.gmres_tolerance;
   }
 
   template <int dim>
   blocks::SoilStrength
-  Model<dim>::soil_strength(const unsigned int i, const contact::NodePair<dim> &pair) const
+  Model<dim>::soil_strength(const unsigned int            i,
+                            const contact::NodePair<dim> &pair) const
   {
-    const parameters::InterfaceParameters &p = parameters.interfaces.at(interfaces[i].name);
+    const parameters::InterfaceParameters &p =
+      parameters.interfaces.at(interfaces[i].name);
     if (!p.strength_from_material)
-      return blocks::SoilStrength{p.cohesion, std::tan(p.friction_angle * numbers::PI / 180)};
+      return blocks::SoilStrength{p.cohesion,
+                                  std::tan(p.friction_angle * numbers::PI /
+                                           180)};
     auto it = soil_strengths[i].find(pair.dofs_I[0]);
-    if (it == soil_strengths[i].end()) // an earlier interface's pair, I and J swapped
+    if (it ==
+        soil_strengths[i].end()) // an earlier interface's pair, I and J swapped
       it = soil_strengths[i].find(pair.dofs_J[0]);
     AssertThrow(it != soil_strengths[i].end(), ExcInternalError());
     return it->second;
@@ -306,22 +362,26 @@ namespace fdem
   std::vector<contact::PairStrength>
   Model<dim>::pair_strengths(const double K) const
   {
-    return pair_strengths(K, [this](const unsigned int i, const contact::NodePair<dim> &pair) {
-      return soil_strength(i, pair);
-    });
+    return pair_strengths(K,
+                          [this](const unsigned int            i,
+                                 const contact::NodePair<dim> &pair) {
+                            return soil_strength(i, pair);
+                          });
   }
 
   template <int dim>
   std::vector<contact::PairStrength>
   Model<dim>::pair_strengths(
     const double K,
-    const std::function<blocks::SoilStrength(unsigned int, const contact::NodePair<dim> &)> &soil)
-    const
+    const std::function<blocks::SoilStrength(unsigned int,
+                                             const contact::NodePair<dim> &)>
+      &soil) const
   {
     std::vector<contact::PairStrength> strengths;
     for (unsigned int i = 0; i < interfaces.size(); ++i)
       {
-        const parameters::InterfaceParameters &p = parameters.interfaces.at(interfaces[i].name);
+        const parameters::InterfaceParameters &p =
+          parameters.interfaces.at(interfaces[i].name);
         for (const auto &pair : interfaces[i].pairs)
           {
             contact::PairStrength strength;
@@ -329,8 +389,9 @@ namespace fdem
             if (!p.frictionless)
               {
                 const blocks::SoilStrength s = soil(i, pair);
-                strength.friction_coefficient = s.friction_coefficient / reduction;
-                strength.cohesion_force       = s.cohesion * pair.area / reduction;
+                strength.friction_coefficient =
+                  s.friction_coefficient / reduction;
+                strength.cohesion_force = s.cohesion * pair.area / reduction;
               }
             strength.tensile_force = p.tensile_strength * pair.area;
             strengths.push_back(strength);
@@ -343,13 +404,17 @@ namespace fdem
       first_pair[i] = first_pair[i - 1] + interfaces[i - 1].pairs.size();
     for (unsigned int i = 0; i < interfaces.size(); ++i)
       {
-        const parameters::InterfaceParameters &p = parameters.interfaces.at(interfaces[i].name);
+        const parameters::InterfaceParameters &p =
+          parameters.interfaces.at(interfaces[i].name);
         for (const auto &shared : interfaces[i].shared_nodes)
           {
-            contact::PairStrength &strength = strengths[first_pair[shared.interface] + shared.pair];
+            contact::PairStrength &strength =
+              strengths[first_pair[shared.interface] + shared.pair];
             if (!p.frictionless)
-              strength.cohesion_force += soil(i, interfaces[shared.interface].pairs[shared.pair]).cohesion * shared.area /
-                                         (p.reduced_by_K ? K : 1.0);
+              strength.cohesion_force +=
+                soil(i, interfaces[shared.interface].pairs[shared.pair])
+                  .cohesion *
+                shared.area / (p.reduced_by_K ? K : 1.0);
             strength.tensile_force += p.tensile_strength * shared.area;
           }
       }
@@ -360,13 +425,14 @@ namespace fdem
   void
   Model<dim>::solve_contact(const double strength_reduction_factor)
   {
-    solve_contact(pair_strengths(strength_reduction_factor), strength_reduction_factor);
+    solve_contact(pair_strengths(strength_reduction_factor),
+                  strength_reduction_factor);
   }
 
   template <int dim>
   void
   Model<dim>::solve_contact(const std::vector<contact::PairStrength> &strengths,
-                            const double                              strength_reduction_factor)
+                            const double strength_reduction_factor)
   {
     apply_strength_dependent_loads(strength_reduction_factor);
     TimerOutput::Scope scope(timer, "contact");
@@ -379,38 +445,48 @@ namespace fdem
     control.runaway_factor = parameters.contact.runaway_factor;
     log << "  contact problem:" << std::endl;
     const linear_algebra::ReusableLU &dense = mixed_system->dense_solver();
-    const unsigned int factorized_before = dense.n_factorizations, reused_before = dense.n_reused_solves;
-    const unsigned long gmres_before = mixed_system->n_krylov_iterations;
-    contact_outcome    = contact::solve_contact_problem(*mixed_system, strengths, states, control, log);
+    const unsigned int factorized_before    = dense.n_factorizations,
+                       reused_before        = dense.n_reused_solves;
+    const unsigned long gmres_before        = mixed_system->n_krylov_iterations;
+    contact_outcome                         = contact::solve_contact_problem(
+      *mixed_system, strengths, states, control, log);
     strength_reduction = strength_reduction_factor;
     if (contact_outcome.converged())
       {
         last_converged   = contact_outcome;
         last_converged_K = strength_reduction_factor;
       }
-    log << "  contact problem " << contact::result_description(contact_outcome.result)
-        << " after " << contact_outcome.iterations.size() << " solves";
+    log << "  contact problem "
+        << contact::result_description(contact_outcome.result) << " after "
+        << contact_outcome.iterations.size() << " solves";
     if (contact_outcome.n_cycles_broken > 0)
-      log << " (" << contact_outcome.n_cycles_broken << " status cycles broken)";
+      log << " (" << contact_outcome.n_cycles_broken
+          << " status cycles broken)";
     if (mixed_system->solver() == contact::MixedSystemSolver::iterative)
       log << "; " << mixed_system->n_krylov_iterations - gmres_before
           << " GMRES iterations" << std::endl;
     else
-      log << "; " << dense.n_factorizations - factorized_before << " LU factorisations, "
-          << dense.n_reused_solves - reused_before << " solves reusing them" << std::endl;
+      log << "; " << dense.n_factorizations - factorized_before
+          << " LU factorisations, " << dense.n_reused_solves - reused_before
+          << " solves reusing them" << std::endl;
     // The system is equilibrated before the estimate, so a small value means
     // the answer itself is uncertain, not that the units are awkward.
-    const double condition = contact_outcome.iterations.empty() ?
-                               1.0 :
-                               contact_outcome.iterations.back().reciprocal_condition;
+    const double condition =
+      contact_outcome.iterations.empty() ?
+        1.0 :
+        contact_outcome.iterations.back().reciprocal_condition;
     if (contact_outcome.converged() && condition < 1e-10)
       {
         const int          lost = int(std::round(-std::log10(condition)));
         std::ostringstream note;
-        note << "the mixed system at K = " << std::setprecision(8) << strength_reduction_factor
-             << " is ill-conditioned (reciprocal condition " << std::setprecision(3) << condition
-             << "): about " << lost << " of the 16 significant digits of the contact forces may be lost.";
-        conditioning_notes.push_back(postprocess::note_text("ill-conditioned", note.str()));
+        note
+          << "the mixed system at K = " << std::setprecision(8)
+          << strength_reduction_factor
+          << " is ill-conditioned (reciprocal condition "
+          << std::setprecision(3) << condition << "): about " << lost
+          << " of the 16 significant digits of the contact forces may be lost.";
+        conditioning_notes.push_back(
+          postprocess::note_text("ill-conditioned", note.str()));
         max_digits_lost = std::max(max_digits_lost, lost);
         log << "  note: " << conditioning_notes.back() << std::endl;
       }
@@ -422,15 +498,17 @@ namespace fdem
   {
     std::vector<bool> on_surface;
     for (const auto &interface : interfaces)
-      on_surface.insert(on_surface.end(),
-                        interface.pairs.size(),
-                        parameters.interfaces.at(interface.name).sliding_surface);
+      on_surface.insert(
+        on_surface.end(),
+        interface.pairs.size(),
+        parameters.interfaces.at(interface.name).sliding_surface);
     return on_surface;
   }
 
   template <int dim>
   void
-  Model<dim>::set_contact_state(const contact::ContactOutcome<dim> &outcome, const double K)
+  Model<dim>::set_contact_state(const contact::ContactOutcome<dim> &outcome,
+                                const double                        K)
   {
     contact_outcome    = outcome;
     strength_reduction = K;
@@ -447,7 +525,8 @@ namespace fdem
   Model<dim>::warn(const std::string &warning)
   {
     warnings.push_back(warning);
-    log << "warning: " << warning << std::endl; // the result block lists them again
+    log << "warning: " << warning
+        << std::endl; // the result block lists them again
   }
 
   template <int dim>

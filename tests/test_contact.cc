@@ -28,10 +28,10 @@ namespace
 TEST(Hertz, BetterThanThePaperAndWithinTheConvergedAccuracy)
 {
   std::ostringstream log;
-  CaseRun<2> model(test_support::case_parameters("hertz.prm"), "", log);
+  CaseRun<2>         model(test_support::case_parameters("hertz.prm"), "", log);
   model.run();
   ASSERT_EQ(model.summary()["status"], "completed");
-  const auto &hertz = model.summary()["hertz"];
+  const auto  &hertz = model.summary()["hertz"];
   const double a = hertz["contact_half_width"], q = hertz["max_pressure"];
   // The paper's data (Liu et al. 2012, example 4.A): theory a = 6.808 mm,
   // q_max = 1870.277 N/mm^2; the paper got a = 6.63, q_max = 1881.25.
@@ -49,16 +49,17 @@ TEST(Hertz, BetterThanThePaperAndWithinTheConvergedAccuracy)
   // (1 - x^2/a^2)^(-3/2) towards the edge: measured on this mesh, below
   // 0.08 % of q_max inside 0.75 a and 0.27 % inside 0.95 a. Bounds: 0.15 %
   // and 0.5 %.
-  const auto &interface = model.model().get_interfaces()[0];
-  const double a_exact  = hertz["contact_half_width_exact"];
-  const double q_exact  = hertz["max_pressure_exact"];
+  const auto  &interface = model.model().get_interfaces()[0];
+  const double a_exact   = hertz["contact_half_width_exact"];
+  const double q_exact   = hertz["max_pressure_exact"];
   unsigned int n_checked = 0;
   for (unsigned int k = 0; k < interface.pairs.size(); ++k)
     {
       const double x = interface.pairs[k].position_J[0];
       if (x > 0.95 * a_exact)
         continue;
-      const double f_n = model.model().get_contact_outcome().solution.forces[2 * k];
+      const double f_n =
+        model.model().get_contact_outcome().solution.forces[2 * k];
       const double q_k = -f_n / interface.pairs[k].area;
       EXPECT_NEAR(q_k,
                   q_exact * std::sqrt(1 - std::pow(x / a_exact, 2)),
@@ -74,7 +75,7 @@ TEST(InclinedBlock, ContactForcesBalanceTheWeightExactly)
   std::ostringstream log;
   const auto model = test_support::solved_model<2>(inclined_block(10, 35), log);
   ASSERT_TRUE(model->get_contact_outcome().converged());
-  const auto &interface = model->get_interfaces()[0];
+  const auto          &interface = model->get_interfaces()[0];
   dealii::Tensor<1, 2> total;
   for (unsigned int k = 0; k < interface.pairs.size(); ++k)
     {
@@ -97,10 +98,14 @@ TEST(InclinedBlock, BelowTheLimitThereIsNoEquilibrium)
   for (const double cohesion : {0.0, 20.0})
     {
       std::ostringstream log;
-      const auto model = test_support::solved_model<2>(inclined_block(cohesion, 20), log);
-      EXPECT_FALSE(model->get_contact_outcome().converged()) << "c = " << cohesion;
-      EXPECT_TRUE(model->get_contact_outcome().result == contact::ContactResult::singular ||
-                  model->get_contact_outcome().result == contact::ContactResult::runaway)
+      const auto         model =
+        test_support::solved_model<2>(inclined_block(cohesion, 20), log);
+      EXPECT_FALSE(model->get_contact_outcome().converged())
+        << "c = " << cohesion;
+      EXPECT_TRUE(model->get_contact_outcome().result ==
+                    contact::ContactResult::singular ||
+                  model->get_contact_outcome().result ==
+                    contact::ContactResult::runaway)
         << contact::result_description(model->get_contact_outcome().result);
       // A mechanism, not a numerical breakdown (doc/theory.md).
       EXPECT_TRUE(model->get_contact_outcome().is_mechanism());
@@ -113,11 +118,12 @@ TEST(InclinedBlock, BelowTheLimitThereIsNoEquilibrium)
 
 TEST(StatusIteration, StopsAtTheIterationLimit)
 {
-  auto parameters                            = test_support::case_parameters("hertz.prm");
-  parameters.contact.max_status_iterations   = 2;
+  auto parameters = test_support::case_parameters("hertz.prm");
+  parameters.contact.max_status_iterations = 2;
   std::ostringstream log;
-  const auto model = test_support::solved_model<2>(parameters, log);
-  EXPECT_EQ(model->get_contact_outcome().result, contact::ContactResult::iteration_limit);
+  const auto         model = test_support::solved_model<2>(parameters, log);
+  EXPECT_EQ(model->get_contact_outcome().result,
+            contact::ContactResult::iteration_limit);
   EXPECT_EQ(model->get_contact_outcome().iterations.size(), 2u);
   EXPECT_FALSE(model->get_contact_outcome().is_mechanism());
 }
@@ -131,18 +137,19 @@ TEST(CattaneoMindlin, StickZoneAndTangentialTractions)
     {
       auto parameters = test_support::case_parameters("cattaneo_mindlin.prm");
       const double P = 2000, mu = 0.3, Q = ratio * mu * P, r = 1000;
-      parameters.boundaries.at("load").traction = std::to_string(Q / (2 * r)) + "; 0";
+      parameters.boundaries.at("load").traction =
+        std::to_string(Q / (2 * r)) + "; 0";
       std::ostringstream log;
-      const auto model = test_support::solved_model<2>(parameters, log);
+      const auto         model = test_support::solved_model<2>(parameters, log);
       ASSERT_TRUE(model->get_contact_outcome().converged());
 
       const double E_star = 1e5 / (2 * (1 - 0.3 * 0.3));
-      const double a      = std::sqrt(4 * P * r / (dealii::numbers::PI * E_star));
-      const double q_max  = 2 * P / (dealii::numbers::PI * a);
-      const double c      = a * std::sqrt(1 - ratio);
-      const auto & pairs  = model->get_interfaces()[0].pairs;
-      const double spacing = 15.0 / 60;
-      double outermost_stick = 0, innermost_slip = a, worst = 0;
+      const double a = std::sqrt(4 * P * r / (dealii::numbers::PI * E_star));
+      const double q_max           = 2 * P / (dealii::numbers::PI * a);
+      const double c               = a * std::sqrt(1 - ratio);
+      const auto  &pairs           = model->get_interfaces()[0].pairs;
+      const double spacing         = 15.0 / 60;
+      double       outermost_stick = 0, innermost_slip = a, worst = 0;
       for (unsigned int k = 0; k < pairs.size(); ++k)
         {
           const double x      = pairs[k].position_J[0];
@@ -153,11 +160,15 @@ TEST(CattaneoMindlin, StickZoneAndTangentialTractions)
             innermost_slip = std::min(innermost_slip, std::abs(x));
           if (std::abs(x) < 0.9 * a)
             {
-              const double q_t = std::abs(model->get_contact_outcome().solution.forces[2 * k + 1]) /
-                                 pairs[k].area;
+              const double q_t =
+                std::abs(
+                  model->get_contact_outcome().solution.forces[2 * k + 1]) /
+                pairs[k].area;
               const double exact =
                 mu * q_max * std::sqrt(1 - x * x / (a * a)) -
-                (std::abs(x) < c ? mu * q_max * c / a * std::sqrt(1 - x * x / (c * c)) : 0);
+                (std::abs(x) < c ?
+                   mu * q_max * c / a * std::sqrt(1 - x * x / (c * c)) :
+                   0);
               worst = std::max(worst, std::abs(q_t - exact) / (mu * q_max));
             }
         }

@@ -26,14 +26,16 @@ namespace
    */
   template <int dim>
   void
-  constrain_one_interface_dof(blocks::ElasticBlock<dim> &block,
+  constrain_one_interface_dof(blocks::ElasticBlock<dim>       &block,
                               const dealii::types::boundary_id group)
   {
     const dealii::IndexSet on_interface =
-      dealii::DoFTools::extract_boundary_dofs(block.dof_handler, dealii::ComponentMask(), {group});
+      dealii::DoFTools::extract_boundary_dofs(block.dof_handler,
+                                              dealii::ComponentMask(),
+                                              {group});
     const dealii::IndexSet on_boundary =
       dealii::DoFTools::extract_boundary_dofs(block.dof_handler);
-    dealii::types::global_dof_index slave = dealii::numbers::invalid_dof_index,
+    dealii::types::global_dof_index slave  = dealii::numbers::invalid_dof_index,
                                     master = dealii::numbers::invalid_dof_index;
     for (const auto dof : on_interface)
       if (!block.constraints.is_constrained(dof))
@@ -41,8 +43,11 @@ namespace
           slave = dof;
           break;
         }
-    for (dealii::types::global_dof_index dof = 0; dof < block.dof_handler.n_dofs(); ++dof)
-      if (!on_boundary.is_element(dof) && !block.constraints.is_constrained(dof))
+    for (dealii::types::global_dof_index dof = 0;
+         dof < block.dof_handler.n_dofs();
+         ++dof)
+      if (!on_boundary.is_element(dof) &&
+          !block.constraints.is_constrained(dof))
         {
           master = dof;
           break;
@@ -62,12 +67,13 @@ namespace
     block.constraints.copy_from(constraints);
   }
 
-  /** A model of @p parameters factorised with @p solver, up to its interfaces. */
+  /** A model of @p parameters factorised with @p solver, up to its interfaces.
+   */
   template <int dim>
   std::unique_ptr<Model<dim>>
-  factorised_model(parameters::Parameters parameters,
+  factorised_model(parameters::Parameters             parameters,
                    const parameters::DirectSolverType solver,
-                   const bool             extra_constraint)
+                   const bool                         extra_constraint)
   {
     parameters.solver.direct_solver = solver;
     static std::ostringstream log;
@@ -78,7 +84,9 @@ namespace
       {
         const auto &groups = model->get_mesh().face_group_names;
         const dealii::types::boundary_id group =
-          std::find(groups.begin(), groups.end(), parameters.interface_names.at(0)) -
+          std::find(groups.begin(),
+                    groups.end(),
+                    parameters.interface_names.at(0)) -
           groups.begin();
         for (auto &block : model->get_blocks())
           constrain_one_interface_dof(*block, group);
@@ -90,7 +98,8 @@ namespace
 
   /** max |A - B| / max |B|. */
   double
-  relative_difference(const dealii::FullMatrix<double> &A, const dealii::FullMatrix<double> &B)
+  relative_difference(const dealii::FullMatrix<double> &A,
+                      const dealii::FullMatrix<double> &B)
   {
     double difference = 0, size = 0;
     for (unsigned int i = 0; i < B.m(); ++i)
@@ -109,13 +118,29 @@ namespace
    */
   template <int dim>
   void
-  check_flexibility(const parameters::Parameters &parameters, const bool extra_constraint)
+  check_flexibility(const parameters::Parameters &parameters,
+                    const bool                    extra_constraint)
   {
-    const auto reference = factorised_model<dim>(parameters, parameters::DirectSolverType::amesos_klu, extra_constraint);
-    const auto schur     = factorised_model<dim>(parameters, parameters::DirectSolverType::mumps_schur, extra_constraint);
-    const auto mumps     = factorised_model<dim>(parameters, parameters::DirectSolverType::mumps, extra_constraint);
-    const auto umfpack   = factorised_model<dim>(parameters, parameters::DirectSolverType::umfpack, extra_constraint);
-    const auto cholmod   = factorised_model<dim>(parameters, parameters::DirectSolverType::cholmod, extra_constraint);
+    const auto reference =
+      factorised_model<dim>(parameters,
+                            parameters::DirectSolverType::amesos_klu,
+                            extra_constraint);
+    const auto schur =
+      factorised_model<dim>(parameters,
+                            parameters::DirectSolverType::mumps_schur,
+                            extra_constraint);
+    const auto mumps =
+      factorised_model<dim>(parameters,
+                            parameters::DirectSolverType::mumps,
+                            extra_constraint);
+    const auto umfpack =
+      factorised_model<dim>(parameters,
+                            parameters::DirectSolverType::umfpack,
+                            extra_constraint);
+    const auto cholmod =
+      factorised_model<dim>(parameters,
+                            parameters::DirectSolverType::cholmod,
+                            extra_constraint);
     ASSERT_EQ(reference->get_blocks().size(), schur->get_blocks().size());
 
     unsigned int n_floating = 0, n_constrained_pair_dofs = 0;
@@ -134,7 +159,9 @@ namespace
             }
         for (const auto dof : dofs)
           n_constrained_pair_dofs += block.constraints.is_constrained(dof);
-        dofs.insert(dofs.end(), block.support_dofs.begin(), block.support_dofs.end());
+        dofs.insert(dofs.end(),
+                    block.support_dofs.begin(),
+                    block.support_dofs.end());
         unsigned int n_fixed = 0;
         for (const auto &line : block.dirichlet_constraints.get_lines())
           if (line.entries.empty() && n_fixed++ < 5)
@@ -142,15 +169,24 @@ namespace
 
         const dealii::FullMatrix<double> C_reference = block.flexibility(dofs);
         dealii::FullMatrix<double>       C_schur(dofs.size(), dofs.size());
-        ASSERT_TRUE(schur->get_blocks()[b]->flexibility_from_schur(dofs, C_schur)) << block.name;
+        ASSERT_TRUE(
+          schur->get_blocks()[b]->flexibility_from_schur(dofs, C_schur))
+          << block.name;
         // Two exact factorisations of the same K (condition ~1e6 here):
         // they agree to round-off times the condition, far below 1e-10.
-        EXPECT_LT(relative_difference(C_schur, C_reference), 1e-10) << block.name;
-        EXPECT_LT(relative_difference(mumps->get_blocks()[b]->flexibility(dofs), C_reference), 1e-10)
+        EXPECT_LT(relative_difference(C_schur, C_reference), 1e-10)
           << block.name;
-        EXPECT_LT(relative_difference(umfpack->get_blocks()[b]->flexibility(dofs), C_reference), 1e-10)
+        EXPECT_LT(relative_difference(mumps->get_blocks()[b]->flexibility(dofs),
+                                      C_reference),
+                  1e-10)
           << block.name;
-        EXPECT_LT(relative_difference(cholmod->get_blocks()[b]->flexibility(dofs), C_reference), 1e-10)
+        EXPECT_LT(relative_difference(
+                    umfpack->get_blocks()[b]->flexibility(dofs), C_reference),
+                  1e-10)
+          << block.name;
+        EXPECT_LT(relative_difference(
+                    cholmod->get_blocks()[b]->flexibility(dofs), C_reference),
+                  1e-10)
           << block.name;
         // Constrained dofs: a fixed or support dof has zero flexibility.
         for (unsigned int r = 0; r < dofs.size(); ++r)
@@ -164,25 +200,34 @@ namespace
         // An interior dof is not in the Schur list (the last one: the
         // first may be the one an interface dof was made to follow): solves
         // with its factors.
-        dealii::types::global_dof_index interior = block.dof_handler.n_dofs() - 1;
-        const dealii::IndexSet on_boundary = dealii::DoFTools::extract_boundary_dofs(block.dof_handler);
-        while (on_boundary.is_element(interior) || block.constraints.is_constrained(interior))
+        dealii::types::global_dof_index interior =
+          block.dof_handler.n_dofs() - 1;
+        const dealii::IndexSet on_boundary =
+          dealii::DoFTools::extract_boundary_dofs(block.dof_handler);
+        while (on_boundary.is_element(interior) ||
+               block.constraints.is_constrained(interior))
           --interior;
         dofs.push_back(interior);
         dealii::FullMatrix<double> unused(dofs.size(), dofs.size());
-        EXPECT_FALSE(schur->get_blocks()[b]->flexibility_from_schur(dofs, unused));
-        EXPECT_LT(relative_difference(schur->get_blocks()[b]->flexibility(dofs), block.flexibility(dofs)),
+        EXPECT_FALSE(
+          schur->get_blocks()[b]->flexibility_from_schur(dofs, unused));
+        EXPECT_LT(relative_difference(schur->get_blocks()[b]->flexibility(dofs),
+                                      block.flexibility(dofs)),
                   1e-10)
           << block.name;
 
         // And a full solve through the Schur factors.
-        const dealii::Vector<double> u_reference = block.solve(block.load_vector);
-        dealii::Vector<double>       u = schur->get_blocks()[b]->solve(block.load_vector);
+        const dealii::Vector<double> u_reference =
+          block.solve(block.load_vector);
+        dealii::Vector<double> u =
+          schur->get_blocks()[b]->solve(block.load_vector);
         u -= u_reference;
-        EXPECT_LT(u.linfty_norm(), 1e-10 * u_reference.linfty_norm()) << block.name;
+        EXPECT_LT(u.linfty_norm(), 1e-10 * u_reference.linfty_norm())
+          << block.name;
         u = cholmod->get_blocks()[b]->solve(block.load_vector);
         u -= u_reference;
-        EXPECT_LT(u.linfty_norm(), 1e-10 * u_reference.linfty_norm()) << block.name;
+        EXPECT_LT(u.linfty_norm(), 1e-10 * u_reference.linfty_norm())
+          << block.name;
       }
     EXPECT_GT(n_floating, 0u);
     if (extra_constraint)
@@ -199,13 +244,14 @@ TEST(Flexibility, SchurEqualsSolves2D)
 
 TEST(Flexibility, SchurEqualsSolves2DConstrainedPairDof)
 {
-  check_flexibility<2>(test_support::case_parameters("inclined_block.prm"), true);
+  check_flexibility<2>(test_support::case_parameters("inclined_block.prm"),
+                       true);
 }
 
 TEST(Flexibility, SchurEqualsSolves3D)
 {
-  auto parameters = parameters::read_parameters(std::string(FDEM_SOURCE_DIR) +
-                                                "/tests/three_d/block_on_plane_3d.prm");
+  auto parameters = parameters::read_parameters(
+    std::string(FDEM_SOURCE_DIR) + "/tests/three_d/block_on_plane_3d.prm");
   parameters.geometry.mesh_file =
     std::string(FDEM_SOURCE_DIR) + "/tests/data/block_on_plane_3d.geo";
   parameters.output.directory = test_support::test_directory("flexibility-3d");
@@ -221,10 +267,11 @@ TEST(Flexibility, PaperSlopeSafetyFactorUnchanged)
   for (const unsigned int s : {0u, 1u})
     {
       auto parameters = test_support::case_parameters("paper_slope.prm");
-      parameters.solver.direct_solver = s == 0 ? parameters::DirectSolverType::amesos_klu :
-                                                 parameters::DirectSolverType::mumps_schur;
+      parameters.solver.direct_solver =
+        s == 0 ? parameters::DirectSolverType::amesos_klu :
+                 parameters::DirectSolverType::mumps_schur;
       std::ostringstream log;
-      CaseRun<2>           model(parameters, "", log);
+      CaseRun<2>         model(parameters, "", log);
       model.run();
       ASSERT_EQ(model.summary()["status"], "completed");
       K[s] = model.summary()["safety_factor"];
@@ -237,16 +284,22 @@ TEST(Flexibility, DirectSolverNamesAndCapabilities)
   // Every .prm string parses to its own type and back; only MUMPS_Schur
   // asks for the interface dofs' Schur complement.
   using parameters::DirectSolverType;
-  for (const DirectSolverType type :
-       {DirectSolverType::mumps_schur, DirectSolverType::mumps, DirectSolverType::cholmod,
-        DirectSolverType::amesos_klu, DirectSolverType::amesos_mumps, DirectSolverType::umfpack})
+  for (const DirectSolverType type : {DirectSolverType::mumps_schur,
+                                      DirectSolverType::mumps,
+                                      DirectSolverType::cholmod,
+                                      DirectSolverType::amesos_klu,
+                                      DirectSolverType::amesos_mumps,
+                                      DirectSolverType::umfpack})
     {
       const std::string name = parameters::direct_solver_name(type);
       EXPECT_TRUE(parameters::parse_direct_solver_type(name) == type) << name;
-      EXPECT_EQ(blocks::make_block_factorization(type)->keeps_schur_complement(),
-                type == DirectSolverType::mumps_schur)
+      EXPECT_EQ(
+        blocks::make_block_factorization(type)->keeps_schur_complement(),
+        type == DirectSolverType::mumps_schur)
         << name;
     }
-  EXPECT_EQ(parameters::direct_solver_name(DirectSolverType::mumps_schur), "MUMPS_Schur");
-  EXPECT_THROW(parameters::parse_direct_solver_type("Amesos_Lapack"), dealii::ExceptionBase);
+  EXPECT_EQ(parameters::direct_solver_name(DirectSolverType::mumps_schur),
+            "MUMPS_Schur");
+  EXPECT_THROW(parameters::parse_direct_solver_type("Amesos_Lapack"),
+               dealii::ExceptionBase);
 }

@@ -24,8 +24,9 @@ namespace fdem
     inline std::string
     test_directory(const std::string &name)
     {
-      const auto directory = std::filesystem::temp_directory_path() /
-                             ("fdem-test-" + name + "-" + std::to_string(getpid()));
+      const auto directory =
+        std::filesystem::temp_directory_path() /
+        ("fdem-test-" + name + "-" + std::to_string(getpid()));
       std::filesystem::create_directories(directory);
       return directory.string();
     }
@@ -34,17 +35,19 @@ namespace fdem
     inline parameters::Parameters
     case_parameters(const std::string &name)
     {
-      parameters::Parameters parameters =
-        parameters::read_parameters(std::string(FDEM_SOURCE_DIR) + "/prm/" + name);
+      parameters::Parameters parameters = parameters::read_parameters(
+        std::string(FDEM_SOURCE_DIR) + "/prm/" + name);
       parameters.output.directory = test_directory(name);
       parameters.output.write_vtu = false;
       return parameters;
     }
 
-    /** A model up to its mixed system (blocks factorised, C computed), not solved. */
+    /** A model up to its mixed system (blocks factorised, C computed), not
+     * solved. */
     template <int dim>
     std::unique_ptr<Model<dim>>
-    factorised_model(const parameters::Parameters &parameters, std::ostream &log)
+    factorised_model(const parameters::Parameters &parameters,
+                     std::ostream                 &log)
     {
       auto model = std::make_unique<Model<dim>>(parameters, log);
       model->make_geometry();

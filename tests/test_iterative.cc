@@ -23,7 +23,8 @@ using dealii::numbers::PI;
 namespace
 {
   parameters::Parameters
-  with_solver(parameters::Parameters parameters, const std::string &mixed_system)
+  with_solver(parameters::Parameters parameters,
+              const std::string     &mixed_system)
   {
     parameters.solver.mixed_system = mixed_system;
     parameters.output.directory =
@@ -33,7 +34,8 @@ namespace
 
   /** Largest difference of two vectors over the largest entry of the first. */
   double
-  relative_difference(const dealii::Vector<double> &a, const dealii::Vector<double> &b)
+  relative_difference(const dealii::Vector<double> &a,
+                      const dealii::Vector<double> &b)
   {
     dealii::Vector<double> difference = a;
     difference -= b;
@@ -59,27 +61,37 @@ namespace
     if (base.safety_factor.compute)
       {
         std::ostringstream dense_log, iterative_log;
-        CaseRun<dim>         dense(with_solver(base, "dense"), "", dense_log);
-        CaseRun<dim>         iterative(with_solver(base, "iterative"), "", iterative_log);
+        CaseRun<dim>       dense(with_solver(base, "dense"), "", dense_log);
+        CaseRun<dim>       iterative(with_solver(base, "iterative"),
+                               "",
+                               iterative_log);
         dense.run();
         iterative.run();
         ASSERT_EQ(dense.summary()["status"], "completed");
-        ASSERT_EQ(iterative.summary()["status"], "completed") << iterative_log.str();
-        EXPECT_GT(iterative.summary()["contact"]["n_gmres_iterations"].template get<unsigned long>(),
+        ASSERT_EQ(iterative.summary()["status"], "completed")
+          << iterative_log.str();
+        EXPECT_GT(iterative.summary()["contact"]["n_gmres_iterations"]
+                    .template get<unsigned long>(),
                   0u);
-        EXPECT_EQ(iterative.summary()["contact"]["n_factorizations"].template get<unsigned int>(),
+        EXPECT_EQ(iterative.summary()["contact"]["n_factorizations"]
+                    .template get<unsigned int>(),
                   0u);
-        const double K_dense     = dense.summary()["safety_factor"].template get<double>();
-        const double K_iterative = iterative.summary()["safety_factor"].template get<double>();
+        const double K_dense =
+          dense.summary()["safety_factor"].template get<double>();
+        const double K_iterative =
+          iterative.summary()["safety_factor"].template get<double>();
         EXPECT_NEAR(K_iterative, K_dense, 1e-9 * K_dense) << name;
       }
 
     std::ostringstream log;
-    const auto dense     = test_support::solved_model<dim>(with_solver(base, "dense"), log);
-    const auto iterative = test_support::solved_model<dim>(with_solver(base, "iterative"), log);
+    const auto         dense =
+      test_support::solved_model<dim>(with_solver(base, "dense"), log);
+    const auto iterative =
+      test_support::solved_model<dim>(with_solver(base, "iterative"), log);
     ASSERT_TRUE(dense->get_contact_outcome().converged());
     ASSERT_TRUE(iterative->get_contact_outcome().converged());
-    EXPECT_TRUE(iterative->get_mixed_system().flexibility.empty()) << "C must not be formed";
+    EXPECT_TRUE(iterative->get_mixed_system().flexibility.empty())
+      << "C must not be formed";
     const auto &states_dense     = dense->get_contact_outcome().states;
     const auto &states_iterative = iterative->get_contact_outcome().states;
     ASSERT_EQ(states_dense.size(), states_iterative.size());
@@ -87,9 +99,10 @@ namespace
     for (unsigned int p = 0; p < states_dense.size(); ++p)
       n_different += states_dense[p].status != states_iterative[p].status;
     EXPECT_EQ(n_different, 0u) << name;
-    EXPECT_LT(relative_difference(dense->get_contact_outcome().solution.forces,
-                                  iterative->get_contact_outcome().solution.forces),
-              1e-8)
+    EXPECT_LT(
+      relative_difference(dense->get_contact_outcome().solution.forces,
+                          iterative->get_contact_outcome().solution.forces),
+      1e-8)
       << name;
   }
 } // namespace
@@ -129,13 +142,18 @@ TEST(IterativeMixedSystem, BlockOnPlaneThreeDExactLimit)
   // in 3D (the slip rows are nonsymmetric).
   check_same_as_dense<3>("block_on_plane_3d.prm");
   std::ostringstream log;
-  CaseRun<3> model(with_solver(test_support::case_parameters("block_on_plane_3d.prm"), "iterative"),
-                 "",
-                 log);
+  CaseRun<3>         model(with_solver(test_support::case_parameters(
+                                 "block_on_plane_3d.prm"),
+                               "iterative"),
+                   "",
+                   log);
   model.run();
   const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
-  const double exact = (15.0 * 60 + W * std::cos(dip) * std::tan(PI / 6)) / (W * std::sin(dip));
-  EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  const double exact =
+    (15.0 * 60 + W * std::cos(dip) * std::tan(PI / 6)) / (W * std::sin(dip));
+  EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
+              exact,
+              1e-8 * exact);
 }
 
 TEST(IterativeMixedSystem, InclinedBlockExactLimitForAnyStrength)
@@ -144,26 +162,31 @@ TEST(IterativeMixedSystem, InclinedBlockExactLimitForAnyStrength)
   // cohesion; a tensile strength keeps the heel closed (with c = 0 an open
   // pair costs nothing), as in PlanarSlidingSurface.*. Round-off: 1e-8.
   for (const auto &[c, phi, tension] :
-       std::vector<std::tuple<double, double, double>>{{0, 35, 0}, {20, 30, 1e3}, {50, 10, 1e3}})
+       std::vector<std::tuple<double, double, double>>{{0, 35, 0},
+                                                       {20, 30, 1e3},
+                                                       {50, 10, 1e3}})
     {
       parameters::Parameters parameters =
-        with_solver(test_support::case_parameters("inclined_block.prm"), "iterative");
-      auto &interface          = parameters.interfaces.at("sliding surface");
-      interface.cohesion       = c;
+        with_solver(test_support::case_parameters("inclined_block.prm"),
+                    "iterative");
+      auto &interface            = parameters.interfaces.at("sliding surface");
+      interface.cohesion         = c;
       interface.friction_angle   = phi;
       interface.tensile_strength = tension;
-      const auto & geometry    = parameters.geometry.inclined_block;
-      const double theta       = geometry.inclination * PI / 180;
-      const double W =
-        parameters.materials.at("block").unit_weight * geometry.block_length * geometry.block_height;
-      const double exact =
-        (c * geometry.block_length + W * std::cos(theta) * std::tan(phi * PI / 180)) /
-        (W * std::sin(theta));
+      const auto  &geometry      = parameters.geometry.inclined_block;
+      const double theta         = geometry.inclination * PI / 180;
+      const double W = parameters.materials.at("block").unit_weight *
+                       geometry.block_length * geometry.block_height;
+      const double exact = (c * geometry.block_length +
+                            W * std::cos(theta) * std::tan(phi * PI / 180)) /
+                           (W * std::sin(theta));
       std::ostringstream log;
-      CaseRun<2>           model(parameters, "", log);
+      CaseRun<2>         model(parameters, "", log);
       model.run();
       ASSERT_EQ(model.summary()["status"], "completed") << log.str();
-      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact)
+      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
+                  exact,
+                  1e-8 * exact)
         << "c = " << c << ", phi = " << phi;
     }
 }
@@ -174,15 +197,20 @@ TEST(IterativeMixedSystem, PairBlocksFromEntriesOfTheInverseAndTheirProjection)
   // (selected entries of K^{-1}) are those of the dense C; and its projected
   // blocks are those of P C P, P = I - W (W^T W)^{-1} W^T, formed densely.
   std::ostringstream           log;
-  const parameters::Parameters base = test_support::case_parameters("block_on_plane_3d.prm");
-  const auto dense     = test_support::solved_model<3>(with_solver(base, "dense"), log);
-  const auto iterative = test_support::solved_model<3>(with_solver(base, "iterative"), log);
-  const auto &system   = iterative->get_mixed_system();
+  const parameters::Parameters base =
+    test_support::case_parameters("block_on_plane_3d.prm");
+  const auto dense =
+    test_support::solved_model<3>(with_solver(base, "dense"), log);
+  const auto iterative =
+    test_support::solved_model<3>(with_solver(base, "iterative"), log);
+  const auto                       &system = iterative->get_mixed_system();
   const dealii::FullMatrix<double> &C = dense->get_mixed_system().flexibility;
-  const dealii::FullMatrix<double> &W = dense->get_mixed_system().rigid_coupling;
+  const dealii::FullMatrix<double> &W =
+    dense->get_mixed_system().rigid_coupling;
   ASSERT_EQ(W.n(), 6u);
 
-  dealii::FullMatrix<double> WtW(6, 6), P(C.m(), C.m()), PCP(C.m(), C.m()), CP(C.m(), C.m());
+  dealii::FullMatrix<double> WtW(6, 6), P(C.m(), C.m()), PCP(C.m(), C.m()),
+    CP(C.m(), C.m());
   W.Tmmult(WtW, W);
   dealii::FullMatrix<double> WtW_inverse(6, 6), B(C.m(), 6);
   WtW_inverse.invert(WtW);
@@ -202,9 +230,13 @@ TEST(IterativeMixedSystem, PairBlocksFromEntriesOfTheInverseAndTheirProjection)
           const unsigned int a = 3 * p + i, b = 3 * p + j;
           max_C   = std::max(max_C, std::abs(C(a, b)));
           max_PCP = std::max(max_PCP, std::abs(PCP(a, b)));
-          error_C = std::max(error_C, std::abs(system.self_flexibility[p][i][j] - C(a, b)));
-          error_PCP =
-            std::max(error_PCP, std::abs(system.iterative_solver().projected_self_flexibility[p][i][j] - PCP(a, b)));
+          error_C =
+            std::max(error_C,
+                     std::abs(system.self_flexibility[p][i][j] - C(a, b)));
+          error_PCP = std::max(error_PCP,
+                               std::abs(system.iterative_solver()
+                                          .projected_self_flexibility[p][i][j] -
+                                        PCP(a, b)));
         }
   // Two computations of the same numbers from one factorisation: round-off.
   EXPECT_LT(error_C, 1e-10 * max_C);
@@ -218,7 +250,8 @@ TEST(IterativeMixedSystem, NoEquilibriumIsFoundToo)
 {
   // A block on a plane steeper than its friction angle, without cohesion:
   // no static equilibrium at full strength, as the dense solver finds.
-  parameters::Parameters parameters = test_support::case_parameters("inclined_block.prm");
+  parameters::Parameters parameters =
+    test_support::case_parameters("inclined_block.prm");
   auto &interface          = parameters.interfaces.at("sliding surface");
   interface.cohesion       = 0;
   interface.friction_angle = 10;
@@ -226,7 +259,7 @@ TEST(IterativeMixedSystem, NoEquilibriumIsFoundToo)
   for (const std::string solver : {"dense", "iterative"})
     {
       std::ostringstream log;
-      CaseRun<2>           model(with_solver(parameters, solver), "", log);
+      CaseRun<2>         model(with_solver(parameters, solver), "", log);
       model.run();
       EXPECT_FALSE(model.model().get_contact_outcome().converged()) << solver;
       EXPECT_NE(model.summary()["status"], "completed") << solver;

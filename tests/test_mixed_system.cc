@@ -73,36 +73,43 @@ namespace
     for (unsigned int b = 0; b < model->get_blocks().size(); ++b)
       {
         all_blocks.push_back(b);
-        materials.merge(blocks::block_materials(model->get_mesh(), parameters, b));
+        materials.merge(
+          blocks::block_materials(model->get_mesh(), parameters, b));
       }
-    blocks::ElasticBlock<2> merged("merged", model->get_mesh(), all_blocks, materials,
-                                   parameters.fe_degree);
+    blocks::ElasticBlock<2> merged(
+      "merged", model->get_mesh(), all_blocks, materials, parameters.fe_degree);
     merged.water_table = model->get_blocks()[0]->water_table;
-    std::map<dealii::types::boundary_id, parameters::BoundaryParameters> conditions;
+    std::map<dealii::types::boundary_id, parameters::BoundaryParameters>
+      conditions;
     for (const std::string &name : parameters.boundary_names)
       {
-        const auto &groups = model->get_mesh().face_group_names;
-        conditions[std::find(groups.begin(), groups.end(), name) - groups.begin()] =
-          parameters.boundaries.at(name);
+        const auto &groups         = model->get_mesh().face_group_names;
+        conditions[std::find(groups.begin(), groups.end(), name) -
+                   groups.begin()] = parameters.boundaries.at(name);
       }
     merged.setup_constraints(conditions, {});
-    std::map<dealii::types::boundary_id, std::shared_ptr<const dealii::Function<2>>> pressures,
-      tractions;
+    std::map<dealii::types::boundary_id,
+             std::shared_ptr<const dealii::Function<2>>>
+      pressures, tractions;
     for (const auto &[id, condition] : conditions)
       {
         if (condition.pressure != "0")
-          pressures[id] = blocks::make_pressure_function<2>(condition.pressure, parameters.water);
+          pressures[id] = blocks::make_pressure_function<2>(condition.pressure,
+                                                            parameters.water);
         if (condition.traction != "0")
           tractions[id] = blocks::make_traction_function<2>(condition.traction);
       }
     merged.set_surface_loads(pressures, tractions);
     merged.find_free_rigid_modes();
     ASSERT_EQ(merged.n_free_rigid_modes(), 0u);
-    merged.assemble_and_factorize(parameters.loads, parameters.solver.direct_solver);
+    merged.assemble_and_factorize(parameters.loads,
+                                  parameters.solver.direct_solver);
     const Vector<double> u = merged.solve(merged.load_vector);
 
     std::vector<Point<2>> points(merged.dof_handler.n_dofs());
-    dealii::DoFTools::map_dofs_to_support_points(merged.mapping, merged.dof_handler, points);
+    dealii::DoFTools::map_dofs_to_support_points(merged.mapping,
+                                                 merged.dof_handler,
+                                                 points);
     const auto merged_dofs_at = [&](const Point<2> &x) {
       std::array<dealii::types::global_dof_index, 2> dofs{};
       unsigned int                                   found = 0;
@@ -116,8 +123,8 @@ namespace
       return dofs;
     };
 
-    const auto &interface = model->get_interfaces().at(0);
-    const unsigned int J  = interface.block_J;
+    const auto        &interface = model->get_interfaces().at(0);
+    const unsigned int J         = interface.block_J;
     // Force of block I on block J at a node of J: K_J u - F_J over J's cells.
     // Summed over J's materials: the residual is additive over cells.
     Vector<double> force_on_J(merged.dof_handler.n_dofs());
@@ -128,8 +135,8 @@ namespace
     double max_u = u.linfty_norm(), max_f = 0, error_u = 0, error_f = 0;
     for (unsigned int k = 0; k < interface.pairs.size(); ++k)
       {
-        const auto &pair  = interface.pairs[k];
-        const auto  dofs  = merged_dofs_at(pair.position_J);
+        const auto  &pair = interface.pairs[k];
+        const auto   dofs = merged_dofs_at(pair.position_J);
         Tensor<1, 2> local;
         for (unsigned int d = 0; d < 2; ++d)
           local[d] = model->get_contact_outcome().solution.forces[2 * k + d];
@@ -137,17 +144,22 @@ namespace
         for (unsigned int d = 0; d < 2; ++d)
           {
             // Both sides of the pair move with the merged node.
-            error_u = std::max(error_u,
-                               std::abs(model->get_displacements()[interface.block_I][pair.dofs_I[d]] -
-                                        u[dofs[d]]));
-            error_u = std::max(error_u,
-                               std::abs(model->get_displacements()[J][pair.dofs_J[d]] - u[dofs[d]]));
+            error_u = std::max(
+              error_u,
+              std::abs(
+                model->get_displacements()[interface.block_I][pair.dofs_I[d]] -
+                u[dofs[d]]));
+            error_u =
+              std::max(error_u,
+                       std::abs(model->get_displacements()[J][pair.dofs_J[d]] -
+                                u[dofs[d]]));
             error_f = std::max(error_f, std::abs(f[d] - force_on_J[dofs[d]]));
             max_f   = std::max(max_f, std::abs(force_on_J[dofs[d]]));
           }
       }
     std::cout << "  max |u| " << max_u << ", difference " << error_u
-              << "; max |f| " << max_f << ", difference " << error_f << std::endl;
+              << "; max |f| " << max_f << ", difference " << error_f
+              << std::endl;
     // Direct solvers throughout: agreement to round-off, far below 1e-8.
     EXPECT_LT(error_u, 1e-8 * max_u) << "max |u| = " << max_u;
     EXPECT_LT(error_f, 1e-8 * max_f) << "max |f| = " << max_f;
@@ -157,7 +169,8 @@ namespace
 
 TEST(FreeRigidModes, FreeSlidingMassHasThree)
 {
-  EXPECT_EQ(free_modes_of("paper_slope.prm"), (std::vector<unsigned int>{3, 0}));
+  EXPECT_EQ(free_modes_of("paper_slope.prm"),
+            (std::vector<unsigned int>{3, 0}));
 }
 
 TEST(FreeRigidModes, HalfModelHertzCylinderHasOne)
@@ -167,12 +180,14 @@ TEST(FreeRigidModes, HalfModelHertzCylinderHasOne)
 
 TEST(FreeRigidModes, BlockOnInclinedPlaneHasThree)
 {
-  EXPECT_EQ(free_modes_of("inclined_block.prm"), (std::vector<unsigned int>{3, 0}));
+  EXPECT_EQ(free_modes_of("inclined_block.prm"),
+            (std::vector<unsigned int>{3, 0}));
 }
 
 TEST(StickEqualsMonolithic, BlockOnInclinedPlane)
 {
-  check_stick_equals_monolithic(test_support::case_parameters("inclined_block.prm"));
+  check_stick_equals_monolithic(
+    test_support::case_parameters("inclined_block.prm"));
 }
 
 TEST(StickEqualsMonolithic, BlockOnInclinedPlaneQ2)
@@ -184,7 +199,7 @@ TEST(StickEqualsMonolithic, BlockOnInclinedPlaneQ2)
 
 TEST(StickEqualsMonolithic, GravityLoadedSlope)
 {
-  auto parameters                     = test_support::case_parameters("paper_slope.prm");
+  auto parameters = test_support::case_parameters("paper_slope.prm");
   parameters.geometry.slope.mesh_size = 2.0;
   check_stick_equals_monolithic(parameters);
 }
@@ -194,7 +209,7 @@ TEST(StickEqualsMonolithic, GravityLoadedSlope)
 // the merged FE model has the same materials cell by cell.
 TEST(StickEqualsMonolithic, LayeredSlopeWithWaterTable)
 {
-  auto parameters                     = test_support::case_parameters("layered_slope.prm");
+  auto parameters = test_support::case_parameters("layered_slope.prm");
   parameters.geometry.slope.mesh_size = 2.0;
   parameters.fe_degree                = 1;
   // Water in the interface pushes both sides apart, which the merged model
@@ -208,10 +223,11 @@ TEST(StickEqualsMonolithic, LayeredSlopeWithWaterTable)
 TEST(Flexibility, IsSymmetricPositiveDefinite)
 {
   std::ostringstream log;
-  auto               parameters       = test_support::case_parameters("paper_slope.prm");
+  auto parameters = test_support::case_parameters("paper_slope.prm");
   parameters.geometry.slope.mesh_size = 2.0;
-  const auto model                    = test_support::solved_model<2>(unbreakable(parameters), log);
-  const auto &C                       = model->get_mixed_system().flexibility;
+  const auto model =
+    test_support::solved_model<2>(unbreakable(parameters), log);
+  const auto &C         = model->get_mixed_system().flexibility;
   double      max_entry = 0, asymmetry = 0;
   for (unsigned int i = 0; i < C.m(); ++i)
     for (unsigned int j = 0; j < C.n(); ++j)
@@ -225,14 +241,18 @@ TEST(Flexibility, IsSymmetricPositiveDefinite)
   for (unsigned int i = 0; i < C.m(); ++i)
     for (unsigned int j = 0; j < C.n(); ++j)
       symmetric(i, j) = 0.5 * (C(i, j) + C(j, i));
-  Vector<double>            eigenvalues;
+  Vector<double>             eigenvalues;
   dealii::FullMatrix<double> eigenvectors;
-  symmetric.compute_eigenvalues_symmetric(-1e300, 1e300, 0, eigenvalues, eigenvectors);
+  symmetric.compute_eigenvalues_symmetric(
+    -1e300, 1e300, 0, eigenvalues, eigenvectors);
   ASSERT_EQ(eigenvalues.size(), C.m());
-  const double smallest = *std::min_element(eigenvalues.begin(), eigenvalues.end());
-  const double largest  = *std::max_element(eigenvalues.begin(), eigenvalues.end());
+  const double smallest =
+    *std::min_element(eigenvalues.begin(), eigenvalues.end());
+  const double largest =
+    *std::max_element(eigenvalues.begin(), eigenvalues.end());
   // Positive definite, with a condition number a double can carry.
-  EXPECT_GT(smallest, 1e-12 * largest) << "smallest " << smallest << ", largest " << largest;
+  EXPECT_GT(smallest, 1e-12 * largest)
+    << "smallest " << smallest << ", largest " << largest;
 }
 
 TEST(MinimalSupport, ReactionsVanishAtEquilibrium)
@@ -242,16 +262,19 @@ TEST(MinimalSupport, ReactionsVanishAtEquilibrium)
       std::ostringstream log;
       auto               parameters       = test_support::case_parameters(prm);
       parameters.geometry.slope.mesh_size = 2.0;
-      const auto model = test_support::solved_model<2>(unbreakable(parameters), log);
+      const auto model =
+        test_support::solved_model<2>(unbreakable(parameters), log);
       for (unsigned int b = 0; b < model->get_blocks().size(); ++b)
         {
           const auto &block = *model->get_blocks()[b];
           if (block.n_free_rigid_modes() == 0)
             continue;
           EXPECT_EQ(block.support_dofs.size(), block.n_free_rigid_modes());
-          const Vector<double> residual = block.nodal_residual(model->get_displacements()[b]);
+          const Vector<double> residual =
+            block.nodal_residual(model->get_displacements()[b]);
           for (const auto dof : block.support_dofs)
-            EXPECT_LT(std::abs(residual[dof]), 1e-9 * block.load_vector.l1_norm())
+            EXPECT_LT(std::abs(residual[dof]),
+                      1e-9 * block.load_vector.l1_norm())
               << prm << ", block " << block.name;
         }
     }
@@ -259,7 +282,7 @@ TEST(MinimalSupport, ReactionsVanishAtEquilibrium)
 
 TEST(StickEqualsMonolithic, BlockOnInclinedPlaneWithMumps)
 {
-  auto parameters                 = test_support::case_parameters("inclined_block.prm");
+  auto parameters = test_support::case_parameters("inclined_block.prm");
   parameters.solver.direct_solver = parameters::DirectSolverType::amesos_mumps;
   check_stick_equals_monolithic(parameters);
 }

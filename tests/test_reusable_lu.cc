@@ -12,9 +12,9 @@
 #include <cmath>
 #include <random>
 
-using fdem::linear_algebra::ReusableLU;
 using dealii::FullMatrix;
 using dealii::Vector;
+using fdem::linear_algebra::ReusableLU;
 
 namespace
 {
@@ -29,7 +29,7 @@ namespace
   mixed_matrix(std::mt19937 &random)
   {
     std::uniform_real_distribution<double> uniform(-1, 1);
-    FullMatrix<double>                     G(n_forces, n_forces), C(n_forces, n_forces);
+    FullMatrix<double> G(n_forces, n_forces), C(n_forces, n_forces);
     for (unsigned int i = 0; i < n_forces; ++i)
       for (unsigned int j = 0; j < n_forces; ++j)
         G(i, j) = uniform(random);
@@ -41,9 +41,9 @@ namespace
           matrix(i, j) = 1e-6 * (C(i, j) + (i == j ? n_forces : 0.0));
         for (unsigned int r = 0; r < n_rigid; ++r)
           {
-            const double w            = uniform(random);
-            matrix(i, n_forces + r)   = -w;
-            matrix(n_forces + r, i)   = -w;
+            const double w          = uniform(random);
+            matrix(i, n_forces + r) = -w;
+            matrix(n_forces + r, i) = -w;
           }
       }
     return matrix;
@@ -80,8 +80,10 @@ namespace
 
   /** max_i |x_i - y_i| / max_i |y_i|, each unknown group on its own. */
   double
-  relative_difference(const Vector<double> &x, const Vector<double> &y,
-                      const unsigned int begin, const unsigned int end)
+  relative_difference(const Vector<double> &x,
+                      const Vector<double> &y,
+                      const unsigned int    begin,
+                      const unsigned int    end)
   {
     double difference = 0, size = 0;
     for (unsigned int i = begin; i < end; ++i)
@@ -110,7 +112,7 @@ TEST(ReusableLU, FewChangedRowsReuseTheFactorsWithTheFreshSolution)
 
   // The same matrix again: the same factors, bit for bit.
   Vector<double> rhs = random_rhs(random);
-  x = x_fresh = rhs;
+  x = x_fresh                    = rhs;
   const ReusableLU::Result again = lu.solve(matrix, x);
   fresh_solve(matrix, x_fresh);
   EXPECT_FALSE(again.factorized);
@@ -127,7 +129,7 @@ TEST(ReusableLU, FewChangedRowsReuseTheFactorsWithTheFreshSolution)
       for (unsigned int p = 0; p < n_open; ++p)
         open_pair(matrix, 7 * p + 2);
       rhs = random_rhs(random);
-      x = x_fresh = rhs;
+      x = x_fresh                     = rhs;
       const ReusableLU::Result reused = lu.solve(matrix, x);
       const ReusableLU::Result fresh  = fresh_solve(matrix, x_fresh);
       EXPECT_FALSE(reused.factorized);
@@ -159,8 +161,8 @@ TEST(ReusableLU, ManyChangedRowsOrASingularSystemFactoriseAfresh)
   // Half the pairs open: far beyond max_changed_fraction of the rows.
   for (unsigned int p = 0; p < n_forces / 6; ++p)
     open_pair(matrix, 2 * p);
-  Vector<double>           rhs = random_rhs(random), x_fresh = rhs;
-  x                            = rhs;
+  Vector<double> rhs = random_rhs(random), x_fresh = rhs;
+  x                              = rhs;
   const ReusableLU::Result many  = lu.solve(matrix, x);
   const ReusableLU::Result fresh = fresh_solve(matrix, x_fresh);
   EXPECT_TRUE(many.factorized);

@@ -19,26 +19,27 @@ namespace
 {
   struct Variant
   {
-    std::string name;
-    double      stiffness_ratio = 1;   // E_block / E_foundation
-    double      poissons_ratio  = 0.25;
-    double      friction_angle  = 35;
-    double      cohesion        = 10;
-    double      tensile_strength = 1e3;
-    double      length_scale    = 1;   // 1000: the model in mm
-    unsigned int n_along        = 10;
-    unsigned int n_across       = 5;
+    std::string  name;
+    double       stiffness_ratio  = 1; // E_block / E_foundation
+    double       poissons_ratio   = 0.25;
+    double       friction_angle   = 35;
+    double       cohesion         = 10;
+    double       tensile_strength = 1e3;
+    double       length_scale     = 1; // 1000: the model in mm
+    unsigned int n_along          = 10;
+    unsigned int n_across         = 5;
   };
 
-  /** Runs the variant; checks the outcome is well-formed; returns the summary. */
+  /** Runs the variant; checks the outcome is well-formed; returns the summary.
+   */
   nlohmann::json
   run_variant(const Variant &v, double *exact)
   {
-    auto p = test_support::case_parameters("inclined_block.prm");
+    auto p             = test_support::case_parameters("inclined_block.prm");
     p.output.write_vtu = false;
     auto &g            = p.geometry.inclined_block;
-    g.n_elements_along_length  = v.n_along;
-    g.n_elements_across_height = v.n_across;
+    g.n_elements_along_length                   = v.n_along;
+    g.n_elements_across_height                  = v.n_across;
     p.materials.at("block").youngs_modulus      = 1e5 * v.stiffness_ratio;
     p.materials.at("foundation").youngs_modulus = 1e5;
     for (auto &[name, m] : p.materials)
@@ -50,11 +51,12 @@ namespace
     // Exact planar K (formulation Sec. 5), in the model's own units.
     const double theta = g.inclination * PI / 180;
     const double W     = 25.0 * g.block_length * g.block_height;
-    *exact = (v.cohesion * g.block_length + W * std::cos(theta) * std::tan(v.friction_angle * PI / 180)) /
+    *exact             = (v.cohesion * g.block_length +
+              W * std::cos(theta) * std::tan(v.friction_angle * PI / 180)) /
              (W * std::sin(theta));
     // Units: lengths times s, forces kept: stresses / s^2, weights / s^3.
-    const double s                 = v.length_scale;
-    p.geometry.scale_factor        = s;
+    const double s          = v.length_scale;
+    p.geometry.scale_factor = s;
     for (auto &[name, m] : p.materials)
       {
         m.youngs_modulus /= s * s;
@@ -64,13 +66,14 @@ namespace
     i.tensile_strength /= s * s;
 
     std::ostringstream log;
-    CaseRun<2>           model(p, "", log);
+    CaseRun<2>         model(p, "", log);
     model.run();
     const nlohmann::json &summary = model.summary();
     // Never a NaN where a number is reported.
     if (summary["safety_factor"].is_number())
       {
-        EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>())) << v.name;
+        EXPECT_TRUE(std::isfinite(summary["safety_factor"].get<double>()))
+          << v.name;
       }
     // A converged K always comes from a contact problem that converged.
     if (summary["converged"].get<bool>())
@@ -132,11 +135,13 @@ TEST(Robustness, PlanarOracleAcrossConditions)
   }
   for (const Variant &v : variants)
     {
-      double exact = 0;
+      double     exact   = 0;
       const auto summary = run_variant(v, &exact);
-      ASSERT_TRUE(summary["converged"].get<bool>()) << v.name << ": " << summary["safety_factor_reason"];
+      ASSERT_TRUE(summary["converged"].get<bool>())
+        << v.name << ": " << summary["safety_factor_reason"];
       // The planar oracle holds wherever no pair opens (tensile strength on).
-      EXPECT_NEAR(summary["safety_factor"].get<double>(), exact, 1e-8 * exact) << v.name;
+      EXPECT_NEAR(summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
+        << v.name;
     }
 }
 
@@ -146,15 +151,16 @@ TEST(Robustness, JustBelowAndJustAboveTheLimit)
   // with the initial K at 1 the first solve is just below or just above.
   for (const double offset : {-1e-3, 1e-3})
     {
-      Variant      v;
+      Variant v;
       v.friction_angle = 0;
       v.name           = "offset " + std::to_string(offset);
       // K = c L / (W sin 30) = 1 + offset.
-      v.cohesion       = (1 + offset) * 25.0 * 10 * 5 * 0.5 / 10;
-      double     exact = 0;
+      v.cohesion         = (1 + offset) * 25.0 * 10 * 5 * 0.5 / 10;
+      double     exact   = 0;
       const auto summary = run_variant(v, &exact);
       ASSERT_TRUE(summary["converged"].get<bool>()) << v.name;
-      EXPECT_NEAR(summary["safety_factor"].get<double>(), exact, 1e-8 * exact) << v.name;
+      EXPECT_NEAR(summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
+        << v.name;
     }
 }
 
@@ -162,10 +168,10 @@ TEST(Robustness, FrictionlessPlaneHasNoEquilibrium)
 {
   // phi = 0 and c = 0 on a plane: no K holds the block.
   Variant v;
-  v.name           = "frictionless";
-  v.friction_angle = 0;
-  v.cohesion       = 0;
-  double     exact = 0;
+  v.name             = "frictionless";
+  v.friction_angle   = 0;
+  v.cohesion         = 0;
+  double     exact   = 0;
   const auto summary = run_variant(v, &exact);
   EXPECT_FALSE(summary["converged"].get<bool>());
   EXPECT_NE(summary["status"], "completed");
@@ -175,11 +181,13 @@ namespace
 {
   /** The inclined block without tensile strength: its heel pair may open. */
   parameters::Parameters
-  heel_case(const unsigned int n_along, const double cohesion, const double friction_angle,
-            const double inclination)
+  heel_case(const unsigned int n_along,
+            const double       cohesion,
+            const double       friction_angle,
+            const double       inclination)
   {
-    auto p = test_support::case_parameters("inclined_block.prm");
-    auto &g                    = p.geometry.inclined_block;
+    auto  p = test_support::case_parameters("inclined_block.prm");
+    auto &g = p.geometry.inclined_block;
     g.n_elements_along_length  = n_along;
     g.n_elements_across_height = n_along / 2;
     g.inclination              = inclination;
@@ -198,16 +206,19 @@ namespace
   double
   planar_factor_without_open(const Model<2> &model)
   {
-    const auto & p      = model.get_parameters();
-    const auto & g      = p.geometry.inclined_block;
-    const auto & i      = p.interfaces.at("sliding surface");
-    const double theta  = g.inclination * PI / 180;
-    const double W      = p.materials.at("block").unit_weight * g.block_length * g.block_height;
-    double       closed = 0;
+    const auto  &p     = model.get_parameters();
+    const auto  &g     = p.geometry.inclined_block;
+    const auto  &i     = p.interfaces.at("sliding surface");
+    const double theta = g.inclination * PI / 180;
+    const double W =
+      p.materials.at("block").unit_weight * g.block_length * g.block_height;
+    double closed = 0;
     for (unsigned int k = 0; k < model.get_interfaces()[0].pairs.size(); ++k)
-      if (model.get_contact_outcome().states[k].status != contact::PairStatus::open)
+      if (model.get_contact_outcome().states[k].status !=
+          contact::PairStatus::open)
         closed += model.get_interfaces()[0].pairs[k].area;
-    return (i.cohesion * closed + W * std::cos(theta) * std::tan(i.friction_angle * PI / 180)) /
+    return (i.cohesion * closed +
+            W * std::cos(theta) * std::tan(i.friction_angle * PI / 180)) /
            (W * std::sin(theta));
   }
 } // namespace
@@ -222,8 +233,8 @@ TEST(Robustness, StatusCycleIsDetectedAndBroken)
   // tension cut-off, f_n = sigma_t A = 0, shear strength kept) and the
   // solve converge.
   std::ostringstream log;
-  const auto p     = heel_case(10, 5, 35, 30);
-  auto       model = std::make_unique<Model<2>>(p, log);
+  const auto         p     = heel_case(10, 5, 35, 30);
+  auto               model = std::make_unique<Model<2>>(p, log);
   model->make_geometry();
   model->setup_blocks();
   model->assemble_and_factorize();
@@ -232,8 +243,9 @@ TEST(Robustness, StatusCycleIsDetectedAndBroken)
   model->solve_contact(1.0);
   ASSERT_TRUE(model->get_contact_outcome().converged()) << log.str();
   const double W = 25.0 * 10 * 5, theta = PI / 6;
-  const double K_1 = (5 * (10 - 0.5) + W * std::cos(theta) * std::tan(35 * PI / 180)) /
-                     (W * std::sin(theta));
+  const double K_1 =
+    (5 * (10 - 0.5) + W * std::cos(theta) * std::tan(35 * PI / 180)) /
+    (W * std::sin(theta));
   EXPECT_NEAR(planar_factor_without_open(*model), K_1, 1e-12 * K_1);
   model->solve_contact(K_1);
   const auto &outcome = model->get_contact_outcome();
@@ -261,7 +273,9 @@ TEST(Robustness, SafetyFactorThroughStatusCyclesIsExact)
     unsigned int n_along;
     double       cohesion, friction_angle, inclination;
   };
-  for (const Case &c : {Case{10, 5, 35, 30}, Case{20, 5, 20, 30}, Case{20, 20, 20, 40},
+  for (const Case &c : {Case{10, 5, 35, 30},
+                        Case{20, 5, 20, 30},
+                        Case{20, 20, 20, 40},
                         Case{10, 20, 45, 40}})
     {
       const std::string name = std::to_string(c.n_along) + " elements, c " +
@@ -269,12 +283,19 @@ TEST(Robustness, SafetyFactorThroughStatusCyclesIsExact)
                                std::to_string(c.friction_angle) + ", theta " +
                                std::to_string(c.inclination);
       std::ostringstream log;
-      CaseRun<2>           model(heel_case(c.n_along, c.cohesion, c.friction_angle, c.inclination), "", log);
+      CaseRun<2>         model(
+        heel_case(c.n_along, c.cohesion, c.friction_angle, c.inclination),
+        "",
+        log);
       model.run();
       EXPECT_NE(log.str().find("status cycle"), std::string::npos) << name;
-      ASSERT_EQ(model.summary()["status"], "completed") << name << "\n" << log.str();
+      ASSERT_EQ(model.summary()["status"], "completed") << name << "\n"
+                                                        << log.str();
       ASSERT_TRUE(model.model().get_contact_outcome().converged()) << name;
       const double exact = planar_factor_without_open(model.model());
-      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact) << name;
+      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
+                  exact,
+                  1e-8 * exact)
+        << name;
     }
 }

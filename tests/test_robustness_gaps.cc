@@ -38,14 +38,16 @@ namespace
   std::string
   write_geo(const std::vector<double> &gaps, const std::string &directory)
   {
-    const unsigned int n = gaps.size() - 1;
+    const unsigned int n    = gaps.size() - 1;
     const std::string  file = directory + "/profile.geo";
     std::ofstream      geo(file);
     geo.precision(17);
     for (unsigned int i = 0; i <= n; ++i)
       {
-        geo << "Point(" << 100 + i << ") = {" << i << ", " << gaps[i] << ", 0};\n";
-        geo << "Point(" << 200 + i << ") = {" << i << ", " << block_height << ", 0};\n";
+        geo << "Point(" << 100 + i << ") = {" << i << ", " << gaps[i]
+            << ", 0};\n";
+        geo << "Point(" << 200 + i << ") = {" << i << ", " << block_height
+            << ", 0};\n";
       }
     for (unsigned int k = 0; k <= n + 10; ++k)
       {
@@ -55,29 +57,37 @@ namespace
       }
     std::string block_cells, interface_lines, foundation_cells, base_lines;
     for (unsigned int i = 0; i <= n; ++i)
-      geo << "Line(" << 1200 + i << ") = {" << 100 + i << ", " << 200 + i << "};\n";
+      geo << "Line(" << 1200 + i << ") = {" << 100 + i << ", " << 200 + i
+          << "};\n";
     for (unsigned int i = 0; i < n; ++i)
       {
-        geo << "Line(" << 1000 + i << ") = {" << 100 + i << ", " << 101 + i << "};\n";
-        geo << "Line(" << 1100 + i << ") = {" << 200 + i << ", " << 201 + i << "};\n";
-        geo << "Curve Loop(" << 1300 + i << ") = {" << 1000 + i << ", " << 1201 + i << ", -"
-            << 1100 + i << ", -" << 1200 + i << "};\n";
+        geo << "Line(" << 1000 + i << ") = {" << 100 + i << ", " << 101 + i
+            << "};\n";
+        geo << "Line(" << 1100 + i << ") = {" << 200 + i << ", " << 201 + i
+            << "};\n";
+        geo << "Curve Loop(" << 1300 + i << ") = {" << 1000 + i << ", "
+            << 1201 + i << ", -" << 1100 + i << ", -" << 1200 + i << "};\n";
         geo << "Plane Surface(" << 1300 + i << ") = {" << 1300 + i << "};\n";
-        geo << "Transfinite Curve{" << 1000 + i << ", " << 1100 + i << "} = 2;\n";
+        geo << "Transfinite Curve{" << 1000 + i << ", " << 1100 + i
+            << "} = 2;\n";
         block_cells += (i ? ", " : "") + std::to_string(1300 + i);
         interface_lines += (i ? ", " : "") + std::to_string(1000 + i);
       }
     geo << "Transfinite Curve{1200:" << 1200 + n << "} = 6;\n";
     for (unsigned int k = 0; k <= n + 10; ++k)
-      geo << "Line(" << 2200 + k << ") = {" << 400 + k << ", " << 300 + k << "};\n";
+      geo << "Line(" << 2200 + k << ") = {" << 400 + k << ", " << 300 + k
+          << "};\n";
     for (unsigned int k = 0; k < n + 10; ++k)
       {
-        geo << "Line(" << 2000 + k << ") = {" << 300 + k << ", " << 301 + k << "};\n";
-        geo << "Line(" << 2100 + k << ") = {" << 400 + k << ", " << 401 + k << "};\n";
-        geo << "Curve Loop(" << 2300 + k << ") = {" << 2100 + k << ", " << 2201 + k << ", -"
-            << 2000 + k << ", -" << 2200 + k << "};\n";
+        geo << "Line(" << 2000 + k << ") = {" << 300 + k << ", " << 301 + k
+            << "};\n";
+        geo << "Line(" << 2100 + k << ") = {" << 400 + k << ", " << 401 + k
+            << "};\n";
+        geo << "Curve Loop(" << 2300 + k << ") = {" << 2100 + k << ", "
+            << 2201 + k << ", -" << 2000 + k << ", -" << 2200 + k << "};\n";
         geo << "Plane Surface(" << 2300 + k << ") = {" << 2300 + k << "};\n";
-        geo << "Transfinite Curve{" << 2000 + k << ", " << 2100 + k << "} = 2;\n";
+        geo << "Transfinite Curve{" << 2000 + k << ", " << 2100 + k
+            << "} = 2;\n";
         foundation_cells += (k ? ", " : "") + std::to_string(2300 + k);
         base_lines += (k ? ", " : "") + std::to_string(2100 + k);
         if (k >= 5 && k < n + 5)
@@ -87,38 +97,42 @@ namespace
         << "Transfinite Surface{:};\nRecombine Surface{:};\n"
         << "Physical Surface(\"block\") = {" << block_cells << "};\n"
         << "Physical Surface(\"foundation\") = {" << foundation_cells << "};\n"
-        << "Physical Curve(\"sliding surface\") = {" << interface_lines << "};\n"
+        << "Physical Curve(\"sliding surface\") = {" << interface_lines
+        << "};\n"
         << "Physical Curve(\"foundation base\") = {" << base_lines << "};\n";
     return file;
   }
 
-  /** The case of a gap profile; @p E is the block's Young's modulus, the foundation's ten times it. */
+  /** The case of a gap profile; @p E is the block's Young's modulus, the
+   * foundation's ten times it. */
   parameters::Parameters
-  profile_case(const std::string &name, const std::vector<double> &gaps, const double E)
+  profile_case(const std::string         &name,
+               const std::vector<double> &gaps,
+               const double               E)
   {
     parameters::Parameters p;
-    p.case_name        = name;
-    p.output.directory = test_support::test_directory("gaps-" + name);
-    p.output.write_vtu = false;
+    p.case_name          = name;
+    p.output.directory   = test_support::test_directory("gaps-" + name);
+    p.output.write_vtu   = false;
     p.geometry.source    = parameters::GeometryParameters::Source::mesh_file;
     p.geometry.mesh_file = write_geo(gaps, p.output.directory);
     const double theta   = inclination * PI / 180;
-    p.loads.gravity_direction = {std::sin(theta), -std::cos(theta)};
-    p.block_names             = {"block", "foundation"};
-    p.materials["block"].youngs_modulus      = E;
-    p.materials["block"].unit_weight         = unit_weight;
-    p.materials["foundation"].youngs_modulus = 10 * E;
-    p.materials["foundation"].unit_weight    = unit_weight;
-    p.boundary_names                          = {"foundation base"};
+    p.loads.gravity_direction           = {std::sin(theta), -std::cos(theta)};
+    p.block_names                       = {"block", "foundation"};
+    p.materials["block"].youngs_modulus = E;
+    p.materials["block"].unit_weight    = unit_weight;
+    p.materials["foundation"].youngs_modulus   = 10 * E;
+    p.materials["foundation"].unit_weight      = unit_weight;
+    p.boundary_names                           = {"foundation base"};
     p.boundaries["foundation base"].constraint = parameters::Constraint::fixed;
     p.interface_names                          = {"sliding surface"};
-    auto &interface                            = p.interfaces["sliding surface"];
-    interface.friction_angle                   = friction_angle;
-    interface.cohesion                         = cohesion;
+    auto &interface          = p.interfaces["sliding surface"];
+    interface.friction_angle = friction_angle;
+    interface.cohesion       = cohesion;
     // Keeps a closed pair closed (as in the planar oracle tests): with it,
     // which pairs touch depends on the gaps alone.
     interface.tensile_strength = 1e3;
-    interface.search_distance  = 2 * *std::max_element(gaps.begin(), gaps.end());
+    interface.search_distance = 2 * *std::max_element(gaps.begin(), gaps.end());
     return p;
   }
 
@@ -137,7 +151,8 @@ namespace
   planar_factor(const double weight, const double closed_area)
   {
     const double theta = inclination * PI / 180;
-    return (cohesion * closed_area + weight * std::cos(theta) * std::tan(friction_angle * PI / 180)) /
+    return (cohesion * closed_area +
+            weight * std::cos(theta) * std::tan(friction_angle * PI / 180)) /
            (weight * std::sin(theta));
   }
 
@@ -167,23 +182,29 @@ namespace
    * exact answer.
    */
   bool
-  exact_or_clear_failure(const CaseRun<2> &model, const double exact, const std::string &name)
+  exact_or_clear_failure(const CaseRun<2>  &model,
+                         const double       exact,
+                         const std::string &name)
   {
     const auto &summary = model.summary();
     if (summary["status"] == "completed")
       {
         EXPECT_TRUE(summary["converged"].get<bool>()) << name;
-        EXPECT_NEAR(summary["safety_factor"].get<double>(), exact, 1e-8 * exact) << name;
+        EXPECT_NEAR(summary["safety_factor"].get<double>(), exact, 1e-8 * exact)
+          << name;
         return true;
       }
     EXPECT_FALSE(summary["converged"].get<bool>()) << name;
     EXPECT_TRUE(summary["safety_factor"].is_null()) << name;
-    EXPECT_EQ(summary["status"].get<std::string>().rfind("no static equilibrium", 0), 0u)
+    EXPECT_EQ(
+      summary["status"].get<std::string>().rfind("no static equilibrium", 0),
+      0u)
       << name << ": " << summary["status"];
     return false;
   }
 
-  /** Tributary area of the foundation's node at x (end nodes of the interface: half). */
+  /** Tributary area of the foundation's node at x (end nodes of the interface:
+   * half). */
   double
   nodal_area(const double x, const unsigned int n)
   {
@@ -214,12 +235,16 @@ TEST(RobustnessGaps, UniformGapClosesUnderGravity)
     {
       std::ostringstream log;
       double             exact = 0;
-      const auto model = run_uniform_gap(delta, log, &exact);
-      ASSERT_EQ(model->summary()["status"], "completed") << "delta " << delta << "\n" << log.str();
+      const auto         model = run_uniform_gap(delta, log, &exact);
+      ASSERT_EQ(model->summary()["status"], "completed")
+        << "delta " << delta << "\n"
+        << log.str();
       for (const auto &state : model->model().get_contact_outcome().states)
         EXPECT_NE(state.status, contact::PairStatus::open) << "delta " << delta;
       // Equilibrium fixes sum f_n and sum f_t: round-off only.
-      EXPECT_NEAR(model->summary()["safety_factor"].get<double>(), exact, 1e-8 * exact)
+      EXPECT_NEAR(model->summary()["safety_factor"].get<double>(),
+                  exact,
+                  1e-8 * exact)
         << "delta " << delta;
     }
 }
@@ -230,27 +255,36 @@ TEST(RobustnessGaps, RecessStaysOpen)
   // (x in [3, 7], sloping to the feet) is far deeper than the block's sag
   // (stiff block, about 1e-4 m): its pairs stay open, carry exactly nothing,
   // and the cohesion acts on the feet only (A = 0.5 + 1 + 1 on each).
-  const double delta = 0.05;
-  const std::vector<double> gaps = {0, 0, 0, delta, delta, delta, delta, delta, 0, 0, 0};
+  const double              delta = 0.05;
+  const std::vector<double> gaps  = {
+     0, 0, 0, delta, delta, delta, delta, delta, 0, 0, 0};
   std::ostringstream log;
-  const auto model = run(profile_case("recess", gaps, 1e6), log);
+  const auto         model = run(profile_case("recess", gaps, 1e6), log);
   ASSERT_EQ(model->summary()["status"], "completed") << log.str();
   const auto &pairs = model->model().get_interfaces()[0].pairs;
   ASSERT_EQ(pairs.size(), gaps.size());
   double closed_area = 0;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     {
-      const double x      = pairs[k].position_J[0];
-      const double gap    = gaps[std::lround(x)];
-      const auto   status = model->model().get_contact_outcome().states[k].status;
+      const double x    = pairs[k].position_J[0];
+      const double gap  = gaps[std::lround(x)];
+      const auto status = model->model().get_contact_outcome().states[k].status;
       EXPECT_NEAR(pairs[k].initial_gap, gap, 1e-12) << "x = " << x;
       if (gap > 0)
         {
           EXPECT_EQ(status, contact::PairStatus::open) << "x = " << x;
-          EXPECT_EQ(model->model().get_contact_outcome().solution.forces[2 * k], 0.0) << "x = " << x;
-          EXPECT_EQ(model->model().get_contact_outcome().solution.forces[2 * k + 1], 0.0) << "x = " << x;
+          EXPECT_EQ(model->model().get_contact_outcome().solution.forces[2 * k],
+                    0.0)
+            << "x = " << x;
+          EXPECT_EQ(
+            model->model().get_contact_outcome().solution.forces[2 * k + 1],
+            0.0)
+            << "x = " << x;
           // Still open by more than half the recess: the sag is ~1e-4 m.
-          EXPECT_GT(model->model().get_contact_outcome().solution.relative_displacements[2 * k], delta / 2)
+          EXPECT_GT(model->model()
+                      .get_contact_outcome()
+                      .solution.relative_displacements[2 * k],
+                    delta / 2)
             << "x = " << x;
         }
       else
@@ -261,7 +295,9 @@ TEST(RobustnessGaps, RecessStaysOpen)
     }
   EXPECT_DOUBLE_EQ(closed_area, 5.0);
   const double exact = planar_factor(block_weight(gaps), closed_area);
-  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(),
+              exact,
+              1e-8 * exact);
 }
 
 TEST(RobustnessGaps, SlidesOnAFootOfTwoPairs)
@@ -270,23 +306,29 @@ TEST(RobustnessGaps, SlidesOnAFootOfTwoPairs)
   // line of action of the weight (it meets the plane at x = 5 + 2.5 tan 30 =
   // 6.44), everything else is 5 cm above the plane. At the limit the whole
   // block slides on two pairs; cohesion acts on A = 2.
-  const double delta = 0.05;
+  const double        delta = 0.05;
   std::vector<double> gaps(11, delta);
   gaps[6] = gaps[7] = 0;
   std::ostringstream log;
-  const auto model = run(profile_case("foot", gaps, 1e6), log);
+  const auto         model = run(profile_case("foot", gaps, 1e6), log);
   ASSERT_EQ(model->summary()["status"], "completed") << log.str();
   unsigned int n_closed = 0;
-  for (unsigned int k = 0; k < model->model().get_interfaces()[0].pairs.size(); ++k)
+  for (unsigned int k = 0; k < model->model().get_interfaces()[0].pairs.size();
+       ++k)
     {
-      const double x      = model->model().get_interfaces()[0].pairs[k].position_J[0];
-      const bool   closed = model->model().get_contact_outcome().states[k].status != contact::PairStatus::open;
+      const double x =
+        model->model().get_interfaces()[0].pairs[k].position_J[0];
+      const bool closed =
+        model->model().get_contact_outcome().states[k].status !=
+        contact::PairStatus::open;
       EXPECT_EQ(closed, x == 6 || x == 7) << "x = " << x;
       n_closed += closed;
     }
   EXPECT_EQ(n_closed, 2u);
   const double exact = planar_factor(block_weight(gaps), 2);
-  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(),
+              exact,
+              1e-8 * exact);
 }
 
 namespace
@@ -305,10 +347,14 @@ namespace
   void
   expect_on_pairs_6_and_7(const CaseRun<2> &model)
   {
-    for (unsigned int k = 0; k < model.model().get_interfaces()[0].pairs.size(); ++k)
+    for (unsigned int k = 0; k < model.model().get_interfaces()[0].pairs.size();
+         ++k)
       {
-        const double x      = model.model().get_interfaces()[0].pairs[k].position_J[0];
-        const bool   closed = model.model().get_contact_outcome().states[k].status != contact::PairStatus::open;
+        const double x =
+          model.model().get_interfaces()[0].pairs[k].position_J[0];
+        const bool closed =
+          model.model().get_contact_outcome().states[k].status !=
+          contact::PairStatus::open;
         EXPECT_EQ(closed, x == 6 || x == 7) << "x = " << x;
       }
   }
@@ -341,5 +387,7 @@ TEST(RobustnessGaps, DISABLED_TipsOntoAPairThatWasOpenExactly)
   const auto         model = run_tip(log, &exact);
   ASSERT_EQ(model->summary()["status"], "completed") << log.str();
   expect_on_pairs_6_and_7(*model);
-  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  EXPECT_NEAR(model->summary()["safety_factor"].get<double>(),
+              exact,
+              1e-8 * exact);
 }

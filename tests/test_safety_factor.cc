@@ -9,13 +9,11 @@
 
 #include <fdem/analyses/safety_factor_iteration.h>
 
-#include <algorithm>
-#include <cmath>
-
 #include <deal.II/dofs/dof_tools.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace fdem;
@@ -28,7 +26,7 @@ namespace
   run(const parameters::Parameters &parameters)
   {
     std::ostringstream log;
-    CaseRun<2>           model(parameters, "", log);
+    CaseRun<2>         model(parameters, "", log);
     model.run();
     return model.summary();
   }
@@ -37,12 +35,14 @@ namespace
   safety_factor_of(const parameters::Parameters &parameters)
   {
     const nlohmann::json summary = run(parameters);
-    EXPECT_EQ(summary["status"], "completed") << summary["safety_factor_reason"];
+    EXPECT_EQ(summary["status"], "completed")
+      << summary["safety_factor_reason"];
     EXPECT_TRUE(summary["converged"].get<bool>());
     return summary["safety_factor"].get<double>();
   }
 
-  /** The block on the inclined plane with its planar limit K (formulation Sec. 5). */
+  /** The block on the inclined plane with its planar limit K (formulation Sec.
+   * 5). */
   struct PlanarCase
   {
     parameters::Parameters parameters;
@@ -50,16 +50,18 @@ namespace
   };
 
   PlanarCase
-  planar(const double cohesion, const double friction_angle, const double tensile_strength)
+  planar(const double cohesion,
+         const double friction_angle,
+         const double tensile_strength)
   {
     PlanarCase c{test_support::case_parameters("inclined_block.prm"), 0};
-    auto &     interface   = c.parameters.interfaces.at("sliding surface");
+    auto      &interface       = c.parameters.interfaces.at("sliding surface");
     interface.cohesion         = cohesion;
     interface.friction_angle   = friction_angle;
     interface.tensile_strength = tensile_strength;
-    const auto & geometry = c.parameters.geometry.inclined_block;
-    const double theta    = geometry.inclination * PI / 180;
-    const double W        = c.parameters.materials.at("block").unit_weight *
+    const auto  &geometry      = c.parameters.geometry.inclined_block;
+    const double theta         = geometry.inclination * PI / 180;
+    const double W = c.parameters.materials.at("block").unit_weight *
                      geometry.block_length * geometry.block_height;
     c.exact = (cohesion * geometry.block_length +
                W * std::cos(theta) * std::tan(friction_angle * PI / 180)) /
@@ -79,13 +81,13 @@ TEST(PlanarSlidingSurface, ExactForAnyMeshAndMaterial)
     EXPECT_NEAR(safety_factor_of(c.parameters), c.exact, 1e-8 * c.exact);
   }
   {
-    auto c                                                   = planar(10, 35, 1e3);
-    c.parameters.fe_degree                                   = 2;
+    auto c                 = planar(10, 35, 1e3);
+    c.parameters.fe_degree = 2;
     c.parameters.geometry.inclined_block.n_elements_along_length  = 16;
     c.parameters.geometry.inclined_block.n_elements_across_height = 7;
-    c.parameters.materials.at("block").youngs_modulus        = 3e4;
-    c.parameters.materials.at("block").poissons_ratio        = 0.45;
-    c.parameters.materials.at("foundation").poissons_ratio   = 0.1;
+    c.parameters.materials.at("block").youngs_modulus             = 3e4;
+    c.parameters.materials.at("block").poissons_ratio             = 0.45;
+    c.parameters.materials.at("foundation").poissons_ratio        = 0.1;
     EXPECT_NEAR(safety_factor_of(c.parameters), c.exact, 1e-8 * c.exact);
   }
   {
@@ -101,30 +103,34 @@ TEST(PlanarSlidingSurface, ExactOnTriangles)
   // Round-off only, as on quadrilaterals: 1e-8.
   for (const unsigned int degree : {1u, 2u})
     {
-      auto c                                             = planar(10, 35, 1e3);
-      c.parameters.fe_degree                             = degree;
+      auto c                 = planar(10, 35, 1e3);
+      c.parameters.fe_degree = degree;
       c.parameters.geometry.inclined_block.element_shape =
         parameters::GeometryParameters::ElementShape::simplex;
       std::ostringstream log;
-      CaseRun<2>           model(c.parameters, "", log);
+      CaseRun<2>         model(c.parameters, "", log);
       model.run();
-      ASSERT_EQ(model.summary()["status"], "completed") << model.summary()["safety_factor_reason"];
+      ASSERT_EQ(model.summary()["status"], "completed")
+        << model.summary()["safety_factor_reason"];
       EXPECT_TRUE(model.model().get_blocks()[0]->element_family.simplex);
       // 10 elements along the block: 11 vertices, and 10 midside nodes at
       // degree 2, all paired.
-      EXPECT_EQ(model.model().get_interfaces()[0].pairs.size(), degree == 1 ? 11u : 21u);
-      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), c.exact, 1e-8 * c.exact)
+      EXPECT_EQ(model.model().get_interfaces()[0].pairs.size(),
+                degree == 1 ? 11u : 21u);
+      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
+                  c.exact,
+                  1e-8 * c.exact)
         << "degree " << degree;
     }
 }
 
 TEST(PlanarSlidingSurface, ExactAfterRotatingModelAndGravity)
 {
-  auto         c     = planar(10, 35, 1e3);
-  const double angle = 25;
-  c.parameters.geometry.rotation_angle     = angle;
-  c.parameters.loads.gravity_direction     = {std::sin(angle * PI / 180),
-                                              -std::cos(angle * PI / 180)};
+  auto         c                       = planar(10, 35, 1e3);
+  const double angle                   = 25;
+  c.parameters.geometry.rotation_angle = angle;
+  c.parameters.loads.gravity_direction = {std::sin(angle * PI / 180),
+                                          -std::cos(angle * PI / 180)};
   EXPECT_NEAR(safety_factor_of(c.parameters), c.exact, 1e-8 * c.exact);
 }
 
@@ -132,9 +138,10 @@ TEST(PlanarSlidingSurface, SafetyFactorBelowTheInitialFactor)
 {
   // phi = 20 on a 30 degree plane: K = tan 20 / tan 30 = 0.630. With K0 = 1
   // the first solve has no static solution: the iteration must step down.
-  auto c = planar(0, 20, 0);
+  auto                 c       = planar(0, 20, 0);
   const nlohmann::json summary = run(c.parameters);
-  ASSERT_TRUE(summary["converged"].get<bool>()) << summary["safety_factor_reason"];
+  ASSERT_TRUE(summary["converged"].get<bool>())
+    << summary["safety_factor_reason"];
   EXPECT_NEAR(summary["safety_factor"].get<double>(), c.exact, 1e-8 * c.exact);
   EXPECT_NE(summary["iterations"][0]["contact_result"], "converged");
 }
@@ -155,13 +162,15 @@ TEST(PriestPlaneFailure, HoekBrayFormula)
   // Priest (1993), Hoek & Bray: F = (c A + (W cos psi - U - V sin psi)
   // tan phi) / (W sin psi + V cos psi); published F = 1.049.
   const double xc = 15 / std::tan(PI / 6), xf = 30 / std::tan(PI / 3);
-  const double area  = 0.5 * (45 * xc - 30 * xf); // shoelace of the block
-  const double W     = 25 * area, zw = 3.75, gw = 9.81, A = 30, psi = PI / 6;
-  const double U     = 0.5 * gw * zw * A, V = 0.5 * gw * zw * zw;
-  const double exact = (20 * A + (W * std::cos(psi) - U - V * std::sin(psi)) * std::tan(PI / 6)) /
-                       (W * std::sin(psi) + V * std::cos(psi));
+  const double area = 0.5 * (45 * xc - 30 * xf); // shoelace of the block
+  const double W = 25 * area, zw = 3.75, gw = 9.81, A = 30, psi = PI / 6;
+  const double U = 0.5 * gw * zw * A, V = 0.5 * gw * zw * zw;
+  const double exact =
+    (20 * A + (W * std::cos(psi) - U - V * std::sin(psi)) * std::tan(PI / 6)) /
+    (W * std::sin(psi) + V * std::cos(psi));
   EXPECT_NEAR(exact, 1.049, 5e-4);
-  const double K = safety_factor_of(test_support::case_parameters("priest_plane_failure.prm"));
+  const double K =
+    safety_factor_of(test_support::case_parameters("priest_plane_failure.prm"));
   // The loads are integrated exactly (a node at the crack's water level), so
   // only round-off and the iteration's tolerance remain: 1e-6.
   EXPECT_NEAR(K, exact, 1e-6 * exact);
@@ -174,10 +183,10 @@ TEST(PaperSlope, SafetyFactorAndCircularSurfaceOracle)
   using Shape = parameters::GeometryParameters::ElementShape;
   for (const Shape shape : {Shape::hypercube, Shape::simplex})
     {
-      auto               parameters = test_support::case_parameters("paper_slope.prm");
+      auto parameters = test_support::case_parameters("paper_slope.prm");
       parameters.geometry.slope.element_shape = shape;
       std::ostringstream log;
-      CaseRun<2>           model(parameters, "", log);
+      CaseRun<2>         model(parameters, "", log);
       model.run();
       ASSERT_EQ(model.summary()["status"], "completed");
       EXPECT_EQ(model.model().get_blocks()[0]->element_family.simplex,
@@ -189,11 +198,14 @@ TEST(PaperSlope, SafetyFactorAndCircularSurfaceOracle)
 
       // Sum f_t = (moment of the driving loads about the centre) / R, whatever
       // K: the normal forces of a circle pass through its centre.
-      const auto &mass = *model.model().get_blocks()[model.model().get_interfaces()[0].block_I];
-      const dealii::Point<2> centre(19.61, 46.32);
-      const double           R = 21.32;
+      const auto &mass =
+        *model.model().get_blocks()[model.model().get_interfaces()[0].block_I];
+      const dealii::Point<2>        centre(19.61, 46.32);
+      const double                  R = 21.32;
       std::vector<dealii::Point<2>> points(mass.dof_handler.n_dofs());
-      dealii::DoFTools::map_dofs_to_support_points(mass.mapping, mass.dof_handler, points);
+      dealii::DoFTools::map_dofs_to_support_points(mass.mapping,
+                                                   mass.dof_handler,
+                                                   points);
       double moment = 0;
       for (unsigned int i = 0; i + 1 < points.size(); i += 2)
         moment += (points[i][0] - centre[0]) * mass.load_vector[i + 1] -
@@ -203,30 +215,32 @@ TEST(PaperSlope, SafetyFactorAndCircularSurfaceOracle)
       // 2.1e-4 on the triangles' polygon, bound 5e-4.
       const double bound = (shape == Shape::simplex) ? 5e-4 : 2e-4;
       for (const auto &step : model.summary()["iterations"])
-        EXPECT_NEAR(step["F_tau"].get<double>(), std::abs(moment) / R, bound * std::abs(moment) / R);
+        EXPECT_NEAR(step["F_tau"].get<double>(),
+                    std::abs(moment) / R,
+                    bound * std::abs(moment) / R);
     }
 }
 
 TEST(SafetyFactor, GrowsWithCohesionAndFriction)
 {
-  auto base                                 = test_support::case_parameters("paper_slope.prm");
-  base.geometry.slope.mesh_size             = 2.0;
-  base.output.write_vtu                     = false;
-  double previous = 0;
+  auto base = test_support::case_parameters("paper_slope.prm");
+  base.geometry.slope.mesh_size = 2.0;
+  base.output.write_vtu         = false;
+  double previous               = 0;
   for (const double c : {1.0, 3.0, 6.0})
     {
-      auto p                                     = base;
+      auto p                                      = base;
       p.interfaces.at("sliding surface").cohesion = c;
-      const double K                             = safety_factor_of(p);
+      const double K                              = safety_factor_of(p);
       EXPECT_GT(K, previous) << "c = " << c;
       previous = K;
     }
   previous = 0;
   for (const double phi : {12.0, 19.6, 30.0})
     {
-      auto p                                           = base;
+      auto p                                            = base;
       p.interfaces.at("sliding surface").friction_angle = phi;
-      const double K                                   = safety_factor_of(p);
+      const double K                                    = safety_factor_of(p);
       EXPECT_GT(K, previous) << "phi = " << phi;
       previous = K;
     }
@@ -234,22 +248,23 @@ TEST(SafetyFactor, GrowsWithCohesionAndFriction)
 
 TEST(SafetyFactor, InvariantUnderTranslationRotationAndUnits)
 {
-  auto base                     = test_support::case_parameters("paper_slope.prm");
+  auto base = test_support::case_parameters("paper_slope.prm");
   base.geometry.slope.mesh_size = 2.0;
   base.output.write_vtu         = false;
   const double K                = safety_factor_of(base);
 
-  auto moved                       = base;
-  moved.geometry.translation       = {1000, -250};
-  moved.geometry.rotation_angle    = -40;
-  moved.loads.gravity_direction    = {-std::sin(40 * PI / 180), -std::cos(40 * PI / 180)};
+  auto moved                    = base;
+  moved.geometry.translation    = {1000, -250};
+  moved.geometry.rotation_angle = -40;
+  moved.loads.gravity_direction = {-std::sin(40 * PI / 180),
+                                   -std::cos(40 * PI / 180)};
   EXPECT_NEAR(safety_factor_of(moved), K, 1e-8 * K);
 
   // Lengths in mm instead of m, forces still in kN: stresses / 1e6, unit
   // weights / 1e9.
-  auto scaled                    = base;
-  const double s                 = 1000;
-  scaled.geometry.scale_factor   = s;
+  auto         scaled          = base;
+  const double s               = 1000;
+  scaled.geometry.scale_factor = s;
   for (auto &[name, material] : scaled.materials)
     {
       material.youngs_modulus /= s * s;
@@ -266,13 +281,14 @@ TEST(Water, PiezometricLineEqualsItsExpression)
   with_line.output.write_vtu         = false;
   with_line.water.piezometric_line   = {{{0, 27}}, {{50, 31}}};
   with_line.interfaces.at("sliding surface").pore_pressure = "piezometric";
-  auto with_expression = with_line;
+  auto with_expression                                     = with_line;
   with_expression.interfaces.at("sliding surface").pore_pressure =
     "9.81 * max(0, 27 + 4 * x / 50 - y)";
   const double K = safety_factor_of(with_line);
   EXPECT_NEAR(safety_factor_of(with_expression), K, 1e-12 * K);
   // Water weakens the slope.
-  EXPECT_LT(K, safety_factor_of(test_support::case_parameters("paper_slope.prm")));
+  EXPECT_LT(K,
+            safety_factor_of(test_support::case_parameters("paper_slope.prm")));
 }
 
 namespace
@@ -283,13 +299,17 @@ namespace
    * @p numerical_failure.
    */
   analyses::ReducedStrengthSolution
-  synthetic_step(const double K, const double K_star, const double K_limit,
-                 const bool numerical_failure = false)
+  synthetic_step(const double K,
+                 const double K_star,
+                 const double K_limit,
+                 const bool   numerical_failure = false)
   {
     analyses::ReducedStrengthSolution s;
     s.converged = K < K_limit;
     s.mechanism = !s.converged && !numerical_failure;
-    s.result    = s.converged ? "converged" : numerical_failure ? "breakdown" : "singular system";
+    s.result    = s.converged       ? "converged" :
+                  numerical_failure ? "breakdown" :
+                                      "singular system";
     if (s.converged)
       {
         s.sliding_force   = 1000;
@@ -298,20 +318,25 @@ namespace
     return s;
   }
 
-  /** The certificate's numbers hold: a step at its K with its K*, within the tolerance. */
+  /** The certificate's numbers hold: a step at its K with its K*, within the
+   * tolerance. */
   void
-  expect_certificate_holds(const analyses::Result &result, const double tolerance)
+  expect_certificate_holds(const analyses::Result &result,
+                           const double            tolerance)
   {
     const auto &c = result.certificate;
     ASSERT_TRUE(c.holds) << c.reason;
     EXPECT_LE(std::abs(c.K_star - c.K), tolerance * c.K);
-    EXPECT_TRUE(std::any_of(result.steps.begin(), result.steps.end(), [&](const auto &step) {
-      return step.K == c.K && step.K_star == c.K_star;
-    }));
+    EXPECT_TRUE(std::any_of(result.steps.begin(),
+                            result.steps.end(),
+                            [&](const auto &step) {
+                              return step.K == c.K && step.K_star == c.K_star;
+                            }));
   }
 } // namespace
 
-TEST(SafetyFactorIteration, PlanarLimitFromTwoAgreeingFactorsCertifiedJustBelowIt)
+TEST(SafetyFactorIteration,
+     PlanarLimitFromTwoAgreeingFactorsCertifiedJustBelowIt)
 {
   // A planar surface: K* does not depend on K, and the limit itself has no
   // static solution (singular system). K = 1, fail at 1.5, K = 1.25: K* is
@@ -319,7 +344,7 @@ TEST(SafetyFactorIteration, PlanarLimitFromTwoAgreeingFactorsCertifiedJustBelowI
   // certifies it as a fixed point: four solves.
   parameters::SafetyFactorParameters control;
   std::ostringstream                 log;
-  const auto result = analyses::iterate(
+  const auto                         result = analyses::iterate(
     [](const double K) { return synthetic_step(K, 1.5, 1.5); }, control, log);
   ASSERT_TRUE(result.converged) << log.str();
   EXPECT_EQ(result.safety_factor, 1.5);
@@ -335,7 +360,7 @@ TEST(SafetyFactorIteration, AgreeingFactorsAboveAFailedSolveAreNotCertified)
   // (what an undeclared contact looks like). The run says so.
   parameters::SafetyFactorParameters control;
   std::ostringstream                 log;
-  const auto result = analyses::iterate(
+  const auto                         result = analyses::iterate(
     [](const double K) { return synthetic_step(K, 1.5, 1.2); }, control, log);
   EXPECT_FALSE(result.converged) << log.str();
   EXPECT_TRUE(std::isnan(result.safety_factor));
@@ -353,9 +378,12 @@ TEST(SafetyFactorIteration, BracketAtTheLimitWithAMechanismAboveIsCertified)
   // only at the limit, where the solve fails. The bracket is certified.
   parameters::SafetyFactorParameters control;
   std::ostringstream                 log;
-  const auto result = analyses::iterate(
-    [](const double K) { return synthetic_step(K, 1.2 + std::pow(1.2 - K, 2) / 1.2, 1.2); },
-    control, log);
+  const auto                         result = analyses::iterate(
+    [](const double K) {
+      return synthetic_step(K, 1.2 + std::pow(1.2 - K, 2) / 1.2, 1.2);
+    },
+    control,
+    log);
   ASSERT_TRUE(result.converged) << log.str() << result.certificate.reason;
   expect_certificate_holds(result, control.tolerance);
   EXPECT_NEAR(result.safety_factor, 1.2, control.tolerance * 1.2);
@@ -370,42 +398,50 @@ TEST(SafetyFactorCertificate, BracketNeedsAMechanismAbove)
   const double     tolerance = 1e-6;
   analyses::Result result;
   analyses::Step   solved;
-  solved.K                              = 1.2 * (1 - 0.5 * tolerance);
-  solved.K_star                         = solved.K * (1 + 0.1 * tolerance);
-  solved.K_next                         = 1.2;
-  solved.distance_left                  = 10 * tolerance;
-  solved.solution                       = synthetic_step(solved.K, solved.K_star, 1.2);
-  const analyses::Step failed           = {1.2, std::nan(""), solved.K, std::nan(""),
-                                           synthetic_step(1.2, 0, 1.2, true)};
-  result.steps                          = {solved, failed};
-  result.bracket_low                    = solved.K;
-  result.bracket_high                   = failed.K;
+  solved.K                    = 1.2 * (1 - 0.5 * tolerance);
+  solved.K_star               = solved.K * (1 + 0.1 * tolerance);
+  solved.K_next               = 1.2;
+  solved.distance_left        = 10 * tolerance;
+  solved.solution             = synthetic_step(solved.K, solved.K_star, 1.2);
+  const analyses::Step failed = {1.2,
+                                 std::nan(""),
+                                 solved.K,
+                                 std::nan(""),
+                                 synthetic_step(1.2, 0, 1.2, true)};
+  result.steps                = {solved, failed};
+  result.bracket_low          = solved.K;
+  result.bracket_high         = failed.K;
   const analyses::Certificate breakdown = analyses::certify(result, tolerance);
   EXPECT_EQ(breakdown.kind, analyses::Certificate::Kind::bracket);
   EXPECT_FALSE(breakdown.holds);
-  EXPECT_NE(breakdown.reason.find("failed numerically"), std::string::npos) << breakdown.reason;
+  EXPECT_NE(breakdown.reason.find("failed numerically"), std::string::npos)
+    << breakdown.reason;
 
-  result.steps[1].solution = synthetic_step(1.2, 0, 1.2, false);
+  result.steps[1].solution              = synthetic_step(1.2, 0, 1.2, false);
   const analyses::Certificate mechanism = analyses::certify(result, tolerance);
   EXPECT_TRUE(mechanism.holds) << mechanism.reason;
   EXPECT_EQ(mechanism.K, solved.K);
   EXPECT_EQ(mechanism.K_failed, 1.2);
 
-  // The last step solved but its fixed point not shown, and no bracket: none holds.
+  // The last step solved but its fixed point not shown, and no bracket: none
+  // holds.
   result.steps.pop_back();
-  result.bracket_high = std::numeric_limits<double>::infinity();
+  result.bracket_high                = std::numeric_limits<double>::infinity();
   const analyses::Certificate moving = analyses::certify(result, tolerance);
   EXPECT_EQ(moving.kind, analyses::Certificate::Kind::fixed_point);
   EXPECT_FALSE(moving.holds);
-  EXPECT_NE(moving.reason.find("still moving"), std::string::npos) << moving.reason;
+  EXPECT_NE(moving.reason.find("still moving"), std::string::npos)
+    << moving.reason;
 }
 
 TEST(SafetyFactorIteration, NoEquilibriumOnlyWhenEveryFailureIsAMechanism)
 {
   parameters::SafetyFactorParameters control;
   std::ostringstream                 log;
-  const auto mechanism = analyses::iterate(
-    [](const double K) { return synthetic_step(K, 1, 0); }, control, log);
+  const auto                         mechanism =
+    analyses::iterate([](const double K) { return synthetic_step(K, 1, 0); },
+                      control,
+                      log);
   EXPECT_FALSE(mechanism.converged);
   EXPECT_TRUE(mechanism.no_equilibrium);
   const auto breakdown = analyses::iterate(
@@ -420,14 +456,17 @@ TEST(SafetyFactorIteration, FactorThatDependsOnKConvergesToItsFixedPoint)
   // with K, so only eq. (13) itself can stop the iteration.
   parameters::SafetyFactorParameters control;
   std::ostringstream                 log;
-  const auto result = analyses::iterate(
-    [](const double K) { return synthetic_step(K, K + 0.5 * (2 - K), 10); }, control, log);
+  const auto                         result = analyses::iterate(
+    [](const double K) { return synthetic_step(K, K + 0.5 * (2 - K), 10); },
+    control,
+    log);
   ASSERT_TRUE(result.converged) << log.str();
   expect_certificate_holds(result, control.tolerance);
   EXPECT_NEAR(result.safety_factor, 2.0, control.tolerance * 2.0);
 }
 
-TEST(SafetyFactorIteration, SlowlyCreepingFactorStopsWithinTheToleranceOfItsFixedPoint)
+TEST(SafetyFactorIteration,
+     SlowlyCreepingFactorStopsWithinTheToleranceOfItsFixedPoint)
 {
   // h = K* - K = (K_lim - K)^1.75 as measured on a 3D wedge, the limit a
   // mechanism: the reported K must be within the tolerance of K_lim (the
@@ -437,12 +476,16 @@ TEST(SafetyFactorIteration, SlowlyCreepingFactorStopsWithinTheToleranceOfItsFixe
   const double                       K_lim  = 0.7266;
   const auto                         result = analyses::iterate(
     [&](const double K) {
-      return synthetic_step(K, K + std::pow(std::max(K_lim - K, 0.0), 1.75), K_lim);
+      return synthetic_step(K,
+                            K + std::pow(std::max(K_lim - K, 0.0), 1.75),
+                            K_lim);
     },
-    control, log);
+    control,
+    log);
   ASSERT_TRUE(result.converged) << log.str();
   expect_certificate_holds(result, control.tolerance);
-  EXPECT_LE(std::abs(result.safety_factor - K_lim), control.tolerance * K_lim) << log.str();
+  EXPECT_LE(std::abs(result.safety_factor - K_lim), control.tolerance * K_lim)
+    << log.str();
 }
 
 TEST(SafetyFactorIteration, AllSlipStatesBoundFromAboveAndNeverCertify)

@@ -22,33 +22,37 @@ namespace
    * contact an inclined plane whose dip direction is off the axes.
    */
   parameters::Parameters
-  block_on_plane(const double dip, const double dip_direction, const double phi,
-                 const double cohesion,
+  block_on_plane(const double       dip,
+                 const double       dip_direction,
+                 const double       phi,
+                 const double       cohesion,
                  const std::string &geo = "block_on_plane_3d.geo")
   {
     parameters::Parameters p;
-    p.dimension                = 3;
-    p.case_name                = "block_on_plane_3d";
-    p.geometry.source          = parameters::GeometryParameters::Source::mesh_file;
-    p.geometry.mesh_file       = std::string(FDEM_SOURCE_DIR) + "/tests/data/" + geo;
-    p.geometry.translation     = {0, 0, 0};
+    p.dimension          = 3;
+    p.case_name          = "block_on_plane_3d";
+    p.geometry.source    = parameters::GeometryParameters::Source::mesh_file;
+    p.geometry.mesh_file = std::string(FDEM_SOURCE_DIR) + "/tests/data/" + geo;
+    p.geometry.translation = {0, 0, 0};
     const double d = dip * PI / 180, a = dip_direction * PI / 180;
     // Gravity in the frame of the slab: the slab's plane dips by d towards a.
-    p.loads.gravity_direction = {std::sin(d) * std::sin(a), std::sin(d) * std::cos(a), -std::cos(d)};
-    p.block_names             = {"block", "foundation"};
-    p.materials["block"].youngs_modulus      = 1e5;
-    p.materials["block"].unit_weight         = 25;
-    p.materials["foundation"].youngs_modulus = 1e6;
-    p.materials["foundation"].unit_weight    = 25;
-    p.boundary_names                          = {"foundation base"};
+    p.loads.gravity_direction                  = {std::sin(d) * std::sin(a),
+                                                  std::sin(d) * std::cos(a),
+                                                  -std::cos(d)};
+    p.block_names                              = {"block", "foundation"};
+    p.materials["block"].youngs_modulus        = 1e5;
+    p.materials["block"].unit_weight           = 25;
+    p.materials["foundation"].youngs_modulus   = 1e6;
+    p.materials["foundation"].unit_weight      = 25;
+    p.boundary_names                           = {"foundation base"};
     p.boundaries["foundation base"].constraint = parameters::Constraint::fixed;
     p.interface_names                          = {"sliding surface"};
-    auto &interface                            = p.interfaces["sliding surface"];
-    interface.friction_angle                   = phi;
-    interface.cohesion                         = cohesion;
-    interface.tensile_strength                 = 1e3;
-    p.output.directory = test_support::test_directory("3d");
-    p.output.write_vtu = false;
+    auto &interface            = p.interfaces["sliding surface"];
+    interface.friction_angle   = phi;
+    interface.cohesion         = cohesion;
+    interface.tensile_strength = 1e3;
+    p.output.directory         = test_support::test_directory("3d");
+    p.output.write_vtu         = false;
     return p;
   }
 } // namespace
@@ -66,18 +70,23 @@ TEST(ThreeD, FreeBlockHasSixRigidModes)
 TEST(ThreeD, BlockOnPlaneMatchesThePlanarFormula)
 {
   // K = (c L B + W cos(dip) tan(phi)) / (W sin(dip)), W = 25 * 10*6*5.
-  for (const auto &[phi, cohesion] : {std::pair{35.0, 0.0}, std::pair{25.0, 15.0}})
+  for (const auto &[phi, cohesion] :
+       {std::pair{35.0, 0.0}, std::pair{25.0, 15.0}})
     {
       std::ostringstream log;
-      CaseRun<3>           model(block_on_plane(30, 120, phi, cohesion), "", log);
+      CaseRun<3>         model(block_on_plane(30, 120, phi, cohesion), "", log);
       model.run();
-      ASSERT_EQ(model.summary()["status"], "completed") << model.summary()["safety_factor_reason"];
-      const double W     = 25.0 * 10 * 6 * 5, dip = PI / 6;
-      const double exact = (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
-                           (W * std::sin(dip));
+      ASSERT_EQ(model.summary()["status"], "completed")
+        << model.summary()["safety_factor_reason"];
+      const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
+      const double exact =
+        (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
+        (W * std::sin(dip));
       // Sums of normal and tangential forces are fixed by equilibrium:
       // round-off only.
-      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact)
+      EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
+                  exact,
+                  1e-8 * exact)
         << "phi = " << phi << ", c = " << cohesion;
     }
 }
@@ -90,7 +99,8 @@ TEST(ThreeD, BlockOnPlaneOfTetrahedraMatchesThePlanarFormula)
   // consistent tributary area and get no pair: the sums of the forces, and
   // so K, are still exact.
   for (const unsigned int degree : {1u, 2u})
-    for (const auto &[phi, cohesion] : {std::pair{35.0, 0.0}, std::pair{25.0, 15.0}})
+    for (const auto &[phi, cohesion] :
+         {std::pair{35.0, 0.0}, std::pair{25.0, 15.0}})
       {
         std::ostringstream     log;
         parameters::Parameters p =
@@ -106,16 +116,22 @@ TEST(ThreeD, BlockOnPlaneOfTetrahedraMatchesThePlanarFormula)
         // two triangles: degree 1 pairs its 6 x 4 vertices, degree 2 the
         // nodes on the 5 x 4 + 6 x 3 edges of the grid and the 15
         // diagonals (not the vertices, of zero weight). None unpaired.
-        EXPECT_EQ(model.model().get_interfaces()[0].pairs.size(), degree == 1 ? 24u : 53u);
+        EXPECT_EQ(model.model().get_interfaces()[0].pairs.size(),
+                  degree == 1 ? 24u : 53u);
         EXPECT_EQ(model.summary()["interfaces"][0]["n_unpaired_nodes"], 0);
         // The interface's area is the footprint's, 10 x 6.
-        EXPECT_NEAR(model.summary()["interfaces"][0]["area"].get<double>(), 60, 1e-10);
-        const double W     = 25.0 * 10 * 6 * 5, dip = PI / 6;
-        const double exact = (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
-                             (W * std::sin(dip));
+        EXPECT_NEAR(model.summary()["interfaces"][0]["area"].get<double>(),
+                    60,
+                    1e-10);
+        const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
+        const double exact =
+          (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
+          (W * std::sin(dip));
         // As for hexahedra: the sums of normal and tangential forces are
         // fixed by equilibrium, so round-off only.
-        EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact)
+        EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
+                    exact,
+                    1e-8 * exact)
           << "degree " << degree << ", phi = " << phi << ", c = " << cohesion;
       }
 }
@@ -128,12 +144,18 @@ TEST(ThreeD, BlockOnPlaneCaseOfPrmFolder)
   // must stop on two agreeing K* without solving at it, and certify K* by
   // one solve just below it: at most four solves.
   std::ostringstream log;
-  CaseRun<3> model(test_support::case_parameters("block_on_plane_3d.prm"), "", log);
+  CaseRun<3> model(test_support::case_parameters("block_on_plane_3d.prm"),
+                   "",
+                   log);
   model.run();
-  ASSERT_EQ(model.summary()["status"], "completed") << model.summary()["safety_factor_reason"];
+  ASSERT_EQ(model.summary()["status"], "completed")
+    << model.summary()["safety_factor_reason"];
   const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
-  const double exact = (15.0 * 60 + W * std::cos(dip) * std::tan(PI / 6)) / (W * std::sin(dip));
-  EXPECT_NEAR(model.summary()["safety_factor"].get<double>(), exact, 1e-8 * exact);
+  const double exact =
+    (15.0 * 60 + W * std::cos(dip) * std::tan(PI / 6)) / (W * std::sin(dip));
+  EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
+              exact,
+              1e-8 * exact);
   EXPECT_LE(model.summary()["iterations"].size(), 4u);
 }
 
@@ -166,24 +188,27 @@ TEST(ThreeD, HertzSphereContactRadiusAndPeakPressure)
   // zone holds the whole contact (pairs beyond 1.2 a are open), and the
   // solution is symmetric under x <-> y like the mesh (frictionless pairs:
   // the tangent frames, which differ, carry no force).
-  const auto  &interface = model.model().get_interfaces()[0];
-  const auto  &states    = model.model().get_contact_outcome().states;
+  const auto &interface = model.model().get_interfaces()[0];
+  const auto &states    = model.model().get_contact_outcome().states;
   std::map<std::pair<long, long>, double> pressure;
-  const auto  &sphere  = model.model().get_parameters().geometry.hertz_sphere;
-  const double spacing = sphere.contact_zone_width / sphere.n_contact_zone_elements;
+  const auto  &sphere = model.model().get_parameters().geometry.hertz_sphere;
+  const double spacing =
+    sphere.contact_zone_width / sphere.n_contact_zone_elements;
   double       worst   = 0;
   unsigned int n_inner = 0;
   for (unsigned int k = 0; k < interface.pairs.size(); ++k)
     {
-      const dealii::Point<3> &x = interface.pairs[k].position_J;
-      const double    rho = std::hypot(x[0], x[1]);
-      const double    p =
-        -model.model().get_contact_outcome().solution.forces[3 * k] / interface.pairs[k].area;
+      const dealii::Point<3> &x   = interface.pairs[k].position_J;
+      const double            rho = std::hypot(x[0], x[1]);
+      const double            p =
+        -model.model().get_contact_outcome().solution.forces[3 * k] /
+        interface.pairs[k].area;
       pressure[{std::lround(x[0] / spacing), std::lround(x[1] / spacing)}] = p;
       if (rho < 0.8 * a_exact)
         {
-          const double exact = p_exact * std::sqrt(1 - std::pow(rho / a_exact, 2));
-          worst              = std::max(worst, std::abs(p - exact));
+          const double exact =
+            p_exact * std::sqrt(1 - std::pow(rho / a_exact, 2));
+          worst = std::max(worst, std::abs(p - exact));
           ++n_inner;
         }
       if (rho > 1.2 * a_exact)

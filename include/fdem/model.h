@@ -9,8 +9,8 @@
 #include <fdem/contact/status_iteration.h>
 #include <fdem/geometry/mesh_description.h>
 #include <fdem/parameters/parameters.h>
-#include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/interface_output.h>
+#include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_log.h>
 #include <fdem/postprocess/vtu_writer.h>
 
@@ -47,8 +47,8 @@ namespace fdem
      * (postprocess::RunLog sends each where it belongs).
      */
     Model(const parameters::Parameters &parameters,
-          std::ostream &                log,
-          std::ostream *                brief = nullptr);
+          std::ostream                 &log,
+          std::ostream                 *brief = nullptr);
 
     /**
      * The checks of --validate: the mesh, the blocks (with their loads,
@@ -61,7 +61,8 @@ namespace fdem
     /** Mesh from Gmsh (a file or a generator): blocks, face groups. */
     void
     make_geometry();
-    /** One elastic block per mesh block: dofs, constraints, free rigid modes. */
+    /** One elastic block per mesh block: dofs, constraints, free rigid modes.
+     */
     void
     setup_blocks();
     /** K and F of each block, K factorised once; u_bar = K^{-1} F. */
@@ -81,7 +82,8 @@ namespace fdem
     void
     solve_contact(const double strength_reduction = 1.0);
 
-    /** The same with the pair strengths @p strengths of K = @p strength_reduction given. */
+    /** The same with the pair strengths @p strengths of K = @p
+     * strength_reduction given. */
     void
     solve_contact(const std::vector<contact::PairStrength> &strengths,
                   const double                              strength_reduction);
@@ -126,7 +128,8 @@ namespace fdem
      * body_force_cases(false)[d].
      */
     void
-    set_load_combination(const double base_factor, const std::vector<double> &coefficients);
+    set_load_combination(const double               base_factor,
+                         const std::vector<double> &coefficients);
 
     /**
      * Replaces load case @p index in the mixed system by @p parts
@@ -137,7 +140,8 @@ namespace fdem
      * recovery or output.
      */
     void
-    replace_load_case(const unsigned int index, const typename contact::MixedSystem<dim>::LoadCase &parts)
+    replace_load_case(const unsigned int                                  index,
+                      const typename contact::MixedSystem<dim>::LoadCase &parts)
     {
       mixed_system->replace_load_case(index, parts);
     }
@@ -191,8 +195,9 @@ namespace fdem
     std::vector<contact::PairStrength>
     pair_strengths(
       const double K,
-      const std::function<blocks::SoilStrength(unsigned int, const contact::NodePair<dim> &)> &soil)
-      const;
+      const std::function<blocks::SoilStrength(unsigned int,
+                                               const contact::NodePair<dim> &)>
+        &soil) const;
 
     /**
      * c and tan(phi) of interface @p i at @p pair (of i, or of an earlier
@@ -200,7 +205,8 @@ namespace fdem
      * at the node (soil_strengths).
      */
     blocks::SoilStrength
-    soil_strength(const unsigned int i, const contact::NodePair<dim> &pair) const;
+    soil_strength(const unsigned int            i,
+                  const contact::NodePair<dim> &pair) const;
 
     /**
      * Solves eq. (9) for @p strengths from the statuses @p states with
@@ -209,12 +215,13 @@ namespace fdem
      * analysis that keeps its own states (a probabilistic sample).
      */
     contact::ContactOutcome<dim>
-    solve_contact_from(const std::vector<contact::PairStrength> &strengths,
+    solve_contact_from(const std::vector<contact::PairStrength>   &strengths,
                        const std::vector<contact::PairState<dim>> &states,
-                       const contact::StatusIterationControl &   control,
-                       std::ostream &                            out)
+                       const contact::StatusIterationControl      &control,
+                       std::ostream                               &out)
     {
-      return contact::solve_contact_problem(*mixed_system, strengths, states, control, out);
+      return contact::solve_contact_problem(
+        *mixed_system, strengths, states, control, out);
     }
 
     /**
@@ -249,14 +256,16 @@ namespace fdem
     void
     restore_last_static_state();
 
-    /** The states the next contact solve starts from (the last static ones), and their K. */
+    /** The states the next contact solve starts from (the last static ones),
+     * and their K. */
     std::pair<contact::ContactOutcome<dim>, double>
     warm_start() const
     {
       return {last_converged, last_converged_K};
     }
 
-    /** The next contact solve starts from @p start (a warm_start() kept before). */
+    /** The next contact solve starts from @p start (a warm_start() kept
+     * before). */
     void
     set_warm_start(const std::pair<contact::ContactOutcome<dim>, double> &start)
     {
@@ -264,7 +273,8 @@ namespace fdem
       last_converged_K = start.second;
     }
 
-    /** The next contact solve starts from the initial states, not the last static ones. */
+    /** The next contact solve starts from the initial states, not the last
+     * static ones. */
     void
     forget_warm_start()
     {
@@ -284,7 +294,8 @@ namespace fdem
 
     /** Sets the contact state to @p outcome, solved at K = @p K. */
     void
-    set_contact_state(const contact::ContactOutcome<dim> &outcome, const double K);
+    set_contact_state(const contact::ContactOutcome<dim> &outcome,
+                      const double                        K);
 
     /**
      * A judgement on the model or its results that is not an error: printed
@@ -320,7 +331,8 @@ namespace fdem
     {
       return interfaces;
     }
-    /** The number of node pairs of all interfaces (after build_interfaces()). */
+    /** The number of node pairs of all interfaces (after build_interfaces()).
+     */
     std::size_t
     n_pairs() const;
 
@@ -334,7 +346,8 @@ namespace fdem
     const contact::MixedSystem<dim> &
     get_mixed_system() const
     {
-      Assert(mixed_system != nullptr, ExcMessage("compute_flexibility() has not been called."));
+      Assert(mixed_system != nullptr,
+             ExcMessage("compute_flexibility() has not been called."));
       return *mixed_system;
     }
     /** The last contact solution (of get_strength_reduction()'s strengths). */
@@ -374,7 +387,8 @@ namespace fdem
     {
       return conditioning_notes;
     }
-    /** The most significant digits of the contact forces a note said may be lost. */
+    /** The most significant digits of the contact forces a note said may be
+     * lost. */
     int
     get_max_digits_lost() const
     {
@@ -386,7 +400,8 @@ namespace fdem
     void
     recover_block_displacements();
 
-    /** Block displacements of the contact solution @p solution (see recover_block_displacements()). */
+    /** Block displacements of the contact solution @p solution (see
+     * recover_block_displacements()). */
     std::vector<Vector<double>>
     block_displacements(const contact::ContactSolution &solution) const;
 
@@ -401,16 +416,18 @@ namespace fdem
      * rank 0 writes; not collective.
      */
     void
-    write_vtu(const std::string &                 suffix,
-              const postprocess::OutputState &    state,
+    write_vtu(const std::string                  &suffix,
+              const postprocess::OutputState     &state,
               std::vector<postprocess::PvdEntry> &entries,
-              const std::vector<Vector<double>> * mechanism = nullptr) const;
+              const std::vector<Vector<double>>  *mechanism = nullptr) const;
 
-    /** The largest reaction at each block's minimal support: zero at equilibrium. */
+    /** The largest reaction at each block's minimal support: zero at
+     * equilibrium. */
     std::vector<double>
     support_reactions() const;
 
-    /** The run's full log (the log file; the screen with --verbose); only rank 0's reaches it. */
+    /** The run's full log (the log file; the screen with --verbose); only rank
+     * 0's reaches it. */
     std::ostream &log;
     /** The lines of the default screen (and the log file). */
     std::ostream &brief;
@@ -445,36 +462,39 @@ namespace fdem
     }
 
   private:
-    const parameters::Parameters                        parameters;
-    geometry::MeshDescription<dim>                      mesh;
+    const parameters::Parameters                            parameters;
+    geometry::MeshDescription<dim>                          mesh;
     std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> blocks;
-    std::vector<contact::Interface<dim>>                interfaces;
+    std::vector<contact::Interface<dim>>                    interfaces;
     /**
      * Per interface with Strength = material: the soil strength at each
      * node of its side I, by the node's x dof (empty for the others).
      */
-    std::vector<std::map<types::global_dof_index, blocks::SoilStrength>> soil_strengths;
+    std::vector<std::map<types::global_dof_index, blocks::SoilStrength>>
+      soil_strengths;
     /** The loads that depend on K (set_strength_dependent_loads()). */
-    std::function<void(double K)> strength_dependent_loads;
-    std::vector<Vector<double>>                         external_displacements;
-    std::unique_ptr<contact::MixedSystem<dim>>          mixed_system;
-    contact::ContactOutcome<dim>                        contact_outcome;
-    double                                              strength_reduction = 1;
-    std::vector<Vector<double>>                         displacements;
-    std::vector<std::string>                            warnings;
-    std::vector<std::string>                            conditioning_notes;
-    int                                                 max_digits_lost = 0;
+    std::function<void(double K)>              strength_dependent_loads;
+    std::vector<Vector<double>>                external_displacements;
+    std::unique_ptr<contact::MixedSystem<dim>> mixed_system;
+    contact::ContactOutcome<dim>               contact_outcome;
+    double                                     strength_reduction = 1;
+    std::vector<Vector<double>>                displacements;
+    std::vector<std::string>                   warnings;
+    std::vector<std::string>                   conditioning_notes;
+    int                                        max_digits_lost = 0;
 
     /** Set by validate(): make_geometry() writes no mesh.msh. */
     bool validating = false;
     /** The last contact solution that converged, and its K. */
     contact::ContactOutcome<dim> last_converged;
     double                       last_converged_K = 1;
-    /** The assembled load vectors and displacements of the blocks (the base of the load cases). */
+    /** The assembled load vectors and displacements of the blocks (the base of
+     * the load cases). */
     std::vector<Vector<double>> base_load_vectors, base_external_displacements;
     /** Per load case, per block: its nodal forces and displacements. */
     std::vector<std::vector<Vector<double>>> case_loads, case_displacements;
-    /** Indices of the body-force cases: [0] without, [1] with the saturated weight. */
+    /** Indices of the body-force cases: [0] without, [1] with the saturated
+     * weight. */
     std::vector<unsigned int> body_force_case_indices[2];
 
     /** See writes_files(). */
@@ -483,9 +503,9 @@ namespace fdem
      * Wall time of the phases of a run, one section each and none nested so
      * that they add up: summary.json's "timings" and the table at the end.
      */
-    TimerOutput   timer;
+    TimerOutput timer;
     /** Wall time since the model was made: the "total" of the timings. */
-    Timer         run_timer;
+    Timer run_timer;
 
     /** Index of the face group called @p name, or throws naming @p what. */
     types::boundary_id

@@ -40,9 +40,12 @@ namespace fdem
         return step.solution.mechanism || step.solution.degenerate;
       }
 
-      /** The last step at exactly @p K that bounds from above (or not), or nullptr. */
+      /** The last step at exactly @p K that bounds from above (or not), or
+       * nullptr. */
       const Step *
-      step_at(const std::vector<Step> &steps, const double K, const bool from_above)
+      step_at(const std::vector<Step> &steps,
+              const double             K,
+              const bool               from_above)
       {
         for (auto step = steps.rbegin(); step != steps.rend(); ++step)
           if (step->K == K && bounds_from_above(*step) == from_above)
@@ -85,9 +88,10 @@ namespace fdem
         c.relative_distance_left = solved.distance_left / c.K;
         if (solved.solution.degenerate)
           {
-            c.reason = factors(solved) + ": every pair in contact slips, so K* = K at any K "
-                                         "where this state is static; it bounds K from above "
-                                         "and certifies nothing";
+            c.reason = factors(solved) +
+                       ": every pair in contact slips, so K* = K at any K "
+                       "where this state is static; it bounds K from above "
+                       "and certifies nothing";
             return c;
           }
         const bool agrees = c.relative_difference <= tolerance;
@@ -95,17 +99,22 @@ namespace fdem
         std::ostringstream numbers;
         numbers.precision(3);
         numbers << " (relative difference " << c.relative_difference
-                << ", estimated distance to the fixed point " << c.relative_distance_left
-                << ", tolerance " << tolerance << ")";
-        c.reason = factors(solved) + (c.holds ? numbers.str() :
-                                      agrees  ? ": still moving" + numbers.str() :
-                                                why_not_closed);
+                << ", estimated distance to the fixed point "
+                << c.relative_distance_left << ", tolerance " << tolerance
+                << ")";
+        c.reason =
+          factors(solved) + (c.holds ? numbers.str() :
+                             agrees  ? ": still moving" + numbers.str() :
+                                       why_not_closed);
         return c;
       }
 
-      /** The bracket certificate of a solved @p solved below a failed @p failed. */
+      /** The bracket certificate of a solved @p solved below a failed @p
+       * failed. */
       Certificate
-      bracket(const Step &solved, const Step &failed, const double tolerance,
+      bracket(const Step  &solved,
+              const Step  &failed,
+              const double tolerance,
               const double agreement)
       {
         Certificate c;
@@ -118,7 +127,7 @@ namespace fdem
         c.failure             = failed.solution.degenerate ?
                                   "every pair in contact slips, a limit state" :
                                   failed.solution.result;
-        const bool agrees     = c.relative_difference <= tolerance;
+        const bool   agrees   = c.relative_difference <= tolerance;
         const double width    = (c.K_failed - c.K) / c.K;
         // K* above K_lo, by a little: the blocks have strength to spare by
         // eq. (12), yet lose equilibrium just above K_lo. Or the mechanism
@@ -126,30 +135,37 @@ namespace fdem
         // having failed numerically. K_lo, a static state, is then the
         // conservative answer.
         c.conservative = (!agrees || width > tolerance) && c.K_star >= c.K &&
-                         c.relative_difference <= agreement && width <= agreement;
+                         c.relative_difference <= agreement &&
+                         width <= agreement;
         c.holds = (agrees || c.conservative) && limit_state(failed);
         std::ostringstream numbers;
         numbers.precision(9);
-        numbers << (failed.solution.degenerate ? " and a limit state at K = " :
-                                                 " and no static solution at K = ")
+        numbers << (failed.solution.degenerate ?
+                      " and a limit state at K = " :
+                      " and no static solution at K = ")
                 << c.K_failed << " (" << c.failure << ")";
         if (!agrees && !c.conservative)
-          c.reason = factors(solved) + ", the largest K with a static solution" + why_not_closed;
+          c.reason = factors(solved) +
+                     ", the largest K with a static solution" + why_not_closed;
         else if (!limit_state(failed))
-          c.reason = "the solve at K = " + std::to_string(c.K_failed) + " above " +
-                     factors(solved) + " failed numerically (" + c.failure +
-                     "), not as a mechanism";
+          c.reason = "the solve at K = " + std::to_string(c.K_failed) +
+                     " above " + factors(solved) + " failed numerically (" +
+                     c.failure + "), not as a mechanism";
         else
-          c.reason = factors(solved) + numbers.str() +
-                     (c.conservative ? "; K* or the mechanism above lies beyond the tolerance, "
-                                       "within Bracket agreement: K is the conservative value" :
-                                       "");
+          c.reason =
+            factors(solved) + numbers.str() +
+            (c.conservative ?
+               "; K* or the mechanism above lies beyond the tolerance, "
+               "within Bracket agreement: K is the conservative value" :
+               "");
         return c;
       }
     } // namespace
 
     Certificate
-    certify(const Result &result, const double tolerance, const double bracket_agreement)
+    certify(const Result &result,
+            const double  tolerance,
+            const double  bracket_agreement)
     {
       Certificate none;
       none.tolerance = tolerance;
@@ -172,7 +188,8 @@ namespace fdem
         {
           const Step *solved = step_at(result.steps, result.bracket_low, false);
           const Step *failed = step_at(result.steps, result.bracket_high, true);
-          Assert(solved != nullptr && failed != nullptr, dealii::ExcInternalError());
+          Assert(solved != nullptr && failed != nullptr,
+                 dealii::ExcInternalError());
           // A numerical failure just above K_lo bounds nothing: the smallest
           // K above it whose solve failed as a mechanism does.
           const Step *mechanism = nullptr;
@@ -182,14 +199,16 @@ namespace fdem
               mechanism = &step;
           if (!limit_state(*failed) && mechanism != nullptr)
             {
-              const Certificate c = bracket(*solved, *mechanism, tolerance, bracket_agreement);
+              const Certificate c =
+                bracket(*solved, *mechanism, tolerance, bracket_agreement);
               if (c.holds)
                 return c;
             }
           return bracket(*solved, *failed, tolerance, bracket_agreement);
         }
       if (!last.solution.converged && !last.solution.mechanism)
-        none.reason += "; the last solve failed numerically (" + last.solution.result + ")";
+        none.reason +=
+          "; the last solve failed numerically (" + last.solution.result + ")";
       return none;
     }
   } // namespace analyses

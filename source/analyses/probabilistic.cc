@@ -433,8 +433,12 @@ namespace fdem
     }
 
     template nlohmann::json
-    probabilistic_safety_factor(Model<2> &, const double, const SeismicResults &);
+    probabilistic_safety_factor(Model<2> &,
+                                const double,
+                                const SeismicResults &);
     template nlohmann::json
-    probabilistic_safety_factor(Model<3> &, const double, const SeismicResults &);
+    probabilistic_safety_factor(Model<3> &,
+                                const double,
+                                const SeismicResults &);
   } // namespace analyses
 } // namespace fdem

@@ -17,17 +17,18 @@ namespace fdem
   {
     template <int dim>
     SafetyFactorAnalysis<dim>::SafetyFactorAnalysis(
-      Model<dim> &                                 model,
+      Model<dim>                                  &model,
       std::function<void(double K, double K_star)> on_solved_step)
       : model(model)
       , on_solved_step(std::move(on_solved_step))
       , on_sliding_surface(model.pairs_on_sliding_surface())
     {
-      AssertThrow(std::find(on_sliding_surface.begin(), on_sliding_surface.end(), true) !=
-                    on_sliding_surface.end(),
-                  ExcMessage("Interfaces: no interface is a sliding surface; set "
-                             "'Sliding surface = true' on one, or Safety factor/"
-                             "Compute = false."));
+      AssertThrow(
+        std::find(on_sliding_surface.begin(), on_sliding_surface.end(), true) !=
+          on_sliding_surface.end(),
+        ExcMessage("Interfaces: no interface is a sliding surface; set "
+                   "'Sliding surface = true' on one, or Safety factor/"
+                   "Compute = false."));
     }
 
     template <int dim>
@@ -37,22 +38,28 @@ namespace fdem
       std::ostringstream what;
       what << "safety factor step: K = " << std::setprecision(8) << K;
       model.progress(what.str());
-      const std::vector<contact::PairStrength> strengths = model.pair_strengths(K); // eq. (10)
+      const std::vector<contact::PairStrength> strengths =
+        model.pair_strengths(K); // eq. (10)
       const auto start = model.warm_start();
       model.solve_contact(strengths, K);
       ReducedStrengthSolution solution;
       {
         TimerOutput::Scope scope(model.phase_timer(), "safety factor");
-        solution = resisting_and_sliding_forces(model.get_mixed_system(), model.get_contact_outcome(),
-                                                strengths, on_sliding_surface); // eq. (11)
+        solution = resisting_and_sliding_forces(model.get_mixed_system(),
+                                                model.get_contact_outcome(),
+                                                strengths,
+                                                on_sliding_surface); // eq. (11)
       }
       if (solution.has_factor())
-        model.log << "  F_R = " << std::setprecision(9) << solution.resisting_force
+        model.log << "  F_R = " << std::setprecision(9)
+                  << solution.resisting_force
                   << ", F_tau = " << solution.sliding_force << std::endl;
       if (solution.converged && on_solved_step)
-        on_solved_step(K, solution.has_factor() ?
-                            K * solution.resisting_force / solution.sliding_force : // eq. (12)
-                            std::numeric_limits<double>::quiet_NaN());
+        on_solved_step(K,
+                       solution.has_factor() ?
+                         K * solution.resisting_force /
+                           solution.sliding_force : // eq. (12)
+                         std::numeric_limits<double>::quiet_NaN());
       // The statuses are path dependent: started from a state with every
       // pair slipping, the solve at a lower K tends to find every pair
       // slipping again, below a K where a state with a sticking pair is
@@ -68,42 +75,54 @@ namespace fdem
     {
       model.brief << "Safety factor iteration (eqs. 10-13):" << std::endl;
       Result result = iterate([this](const double K) { return solve(K); },
-                              model.get_parameters().safety_factor, model.brief);
+                              model.get_parameters().safety_factor,
+                              model.brief);
       model.restore_last_static_state();
       model.log << "Safety factor: ";
       if (result.converged)
-        model.log << std::setprecision(8) << result.safety_factor << " (" << result.reason
-                  << "; certified: " << kind_name(result.certificate.kind) << ", "
-                  << result.certificate.reason << ")" << std::endl;
+        model.log << std::setprecision(8) << result.safety_factor << " ("
+                  << result.reason
+                  << "; certified: " << kind_name(result.certificate.kind)
+                  << ", " << result.certificate.reason << ")" << std::endl;
       else
-        model.log << "not certified (" << result.certificate.reason << ")" << std::endl;
+        model.log << "not certified (" << result.certificate.reason << ")"
+                  << std::endl;
       if (result.certificate.conservative)
         {
           std::ostringstream warning;
           const Certificate &c = result.certificate;
-          warning << "the limit lies between the last static state, K = " << std::setprecision(9)
-                  << c.K << " (its K* = " << c.K_star << "), and a limit state at K = " << c.K_failed
-                  << " (" << c.failure << ")"
-                  << ", further apart than the tolerance: equilibrium is lost before K reaches "
-                     "K* (e.g. a plane lifting off) or solves between failed numerically; K is "
-                     "the conservative value";
-          model.warn(postprocess::warning_text("conservative-bound", warning.str()));
+          warning
+            << "the limit lies between the last static state, K = "
+            << std::setprecision(9) << c.K << " (its K* = " << c.K_star
+            << "), and a limit state at K = " << c.K_failed << " (" << c.failure
+            << ")"
+            << ", further apart than the tolerance: equilibrium is lost before K reaches "
+               "K* (e.g. a plane lifting off) or solves between failed numerically; K is "
+               "the conservative value";
+          model.warn(
+            postprocess::warning_text("conservative-bound", warning.str()));
         }
-      result.stiffness = stiffness_sensitivity(result);
+      result.stiffness                  = stiffness_sensitivity(result);
       const StiffnessSensitivity &check = result.stiffness;
-      if (check.computed && !(check.relative_change <= model.get_parameters().safety_factor.stiffness_check_warning))
+      if (check.computed &&
+          !(check.relative_change <=
+            model.get_parameters().safety_factor.stiffness_check_warning))
         {
           std::ostringstream warning;
           if (std::isinf(check.relative_change))
             warning << "K could not be certified";
           else
-            warning << "K changes by " << std::setprecision(3) << 100 * check.relative_change << " %";
-          warning << " with the moving blocks " << check.factor << " times stiffer or softer (K = "
-                  << std::setprecision(8) << check.K_stiffer << ", " << check.K_softer
-                  << "): K depends on the blocks' stiffness; the sliding surface may not be a "
-                     "mechanism for rigid blocks (one block on a kinked surface: divide the "
-                     "sliding mass into blocks at the kinks), and K then measures their elasticity";
-          model.warn(postprocess::warning_text("stiffness-dependent", warning.str()));
+            warning << "K changes by " << std::setprecision(3)
+                    << 100 * check.relative_change << " %";
+          warning
+            << " with the moving blocks " << check.factor
+            << " times stiffer or softer (K = " << std::setprecision(8)
+            << check.K_stiffer << ", " << check.K_softer
+            << "): K depends on the blocks' stiffness; the sliding surface may not be a "
+               "mechanism for rigid blocks (one block on a kinked surface: divide the "
+               "sliding mass into blocks at the kinks), and K then measures their elasticity";
+          model.warn(
+            postprocess::warning_text("stiffness-dependent", warning.str()));
         }
       return result;
     }
@@ -112,7 +131,7 @@ namespace fdem
     StiffnessSensitivity
     SafetyFactorAnalysis<dim>::stiffness_sensitivity(const Result &base)
     {
-      const auto &         parameters = model.get_parameters().safety_factor;
+      const auto          &parameters = model.get_parameters().safety_factor;
       StiffnessSensitivity check;
       check.factor = parameters.stiffness_check_factor;
       if (!parameters.stiffness_check)
@@ -120,46 +139,55 @@ namespace fdem
       else if (!base.converged)
         check.not_computed = "no certified safety factor to compare with";
       else if (!model.get_mixed_system().can_scale_moving_compliance())
-        check.not_computed = "the iterative mixed system does not keep the moving blocks' part of C";
+        check.not_computed =
+          "the iterative mixed system does not keep the moving blocks' part of C";
       if (!check.not_computed.empty())
         return check;
 
       // Each iteration starts where the first did, not from its K: off a
       // mechanism the fixed point is not unique (every K at which all pairs
       // can slip has K* = K), and only the same path compares alike.
-      Timer                              timer; // its share of the run: summary.json
+      Timer timer; // its share of the run: summary.json
       const contact::ContactOutcome<dim> state = model.get_contact_outcome();
       const double                       K     = model.get_strength_reduction();
-      const auto step_files = std::move(on_solved_step); // no VTU of these steps
+      const auto                         step_files =
+        std::move(on_solved_step); // no VTU of these steps
       check.computed        = true;
       check.relative_change = 0;
       for (const bool stiffer : {true, false})
         {
           const double scale = stiffer ? 1 / check.factor : check.factor;
-          model.log << "Stiffness check: the moving blocks " << check.factor << " times "
-                    << (stiffer ? "stiffer" : "softer") << std::endl;
+          model.log << "Stiffness check: the moving blocks " << check.factor
+                    << " times " << (stiffer ? "stiffer" : "softer")
+                    << std::endl;
           model.set_moving_compliance_scale(scale);
           model.forget_warm_start();
-          const Result r =
-            iterate([this](const double K) { return solve(K); }, parameters, model.log);
+          const Result r = iterate([this](const double K) { return solve(K); },
+                                   parameters,
+                                   model.log);
           (stiffer ? check.K_stiffer : check.K_softer) = r.safety_factor;
-          model.brief << "Stiffness check, moving blocks " << check.factor << " times "
-                      << (stiffer ? "stiffer: " : "softer:  ");
+          model.brief << "Stiffness check, moving blocks " << check.factor
+                      << " times " << (stiffer ? "stiffer: " : "softer:  ");
           if (r.converged)
-            model.brief << "K = " << std::setprecision(8) << r.safety_factor << std::endl;
+            model.brief << "K = " << std::setprecision(8) << r.safety_factor
+                        << std::endl;
           else
-            model.brief << "no certified K (" << r.certificate.reason << ")" << std::endl;
+            model.brief << "no certified K (" << r.certificate.reason << ")"
+                        << std::endl;
           check.relative_change =
-            r.converged ? std::max(check.relative_change,
-                                   std::abs(r.safety_factor - base.safety_factor) / base.safety_factor) :
-                          std::numeric_limits<double>::infinity();
+            r.converged ?
+              std::max(check.relative_change,
+                       std::abs(r.safety_factor - base.safety_factor) /
+                         base.safety_factor) :
+              std::numeric_limits<double>::infinity();
         }
       model.set_moving_compliance_scale(1);
       model.set_contact_state(state, K);
       on_solved_step     = step_files;
       check.wall_seconds = timer.wall_time();
-      model.log << "Stiffness check: K = " << std::setprecision(8) << check.K_stiffer << " stiffer, "
-                << check.K_softer << " softer; relative change " << std::setprecision(3)
+      model.log << "Stiffness check: K = " << std::setprecision(8)
+                << check.K_stiffer << " stiffer, " << check.K_softer
+                << " softer; relative change " << std::setprecision(3)
                 << check.relative_change << std::endl;
       return check;
     }

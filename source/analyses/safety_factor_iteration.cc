@@ -24,7 +24,10 @@ namespace fdem
        * K rose, and never beyond a K already known to fail (bisect instead).
        */
       double
-      next_factor(const Step &step, const Step *previous, const double K_low, const double K_high)
+      next_factor(const Step  &step,
+                  const Step  *previous,
+                  const double K_low,
+                  const double K_high)
       {
         const double K = step.K, h = step.K_star - step.K;
         double       next = step.K_star; // eq. (12): K* itself
@@ -32,7 +35,8 @@ namespace fdem
           {
             const double previous_h = previous->K_star - previous->K;
             if (previous->K < K && previous_h > h && h > 0)
-              next = std::max(next, K + h * (K - previous->K) / (previous_h - h));
+              next =
+                std::max(next, K + h * (K - previous->K) / (previous_h - h));
           }
         return next < K_high ? next : 0.5 * (K_low + K_high);
       }
@@ -46,8 +50,9 @@ namespace fdem
       distance_left(const Step &step, const double previous_step)
       {
         const double next_step = std::abs(step.K_next - step.K);
-        return previous_step > 0 ? next_step / (1 - std::min(next_step / previous_step, 0.99)) :
-                                   next_step;
+        return previous_step > 0 ?
+                 next_step / (1 - std::min(next_step / previous_step, 0.99)) :
+                 next_step;
       }
 
       /**
@@ -57,8 +62,11 @@ namespace fdem
        * K_high.
        */
       void
-      advance(Step &step, const Step *previous, const double previous_step, double &K_low,
-              double &K_high)
+      advance(Step        &step,
+              const Step  *previous,
+              const double previous_step,
+              double      &K_low,
+              double      &K_high)
       {
         const ReducedStrengthSolution &s = step.solution;
         const double                   K = step.K;
@@ -68,9 +76,10 @@ namespace fdem
             // says that the reduced strength is used up. The limit lies at
             // or below K; go back to K* of the last informative step.
             K_high      = std::min(K_high, K);
-            step.K_next = previous != nullptr && previous->K_star < K_high ? previous->K_star :
-                          std::isnan(K_low)                                ? 0.5 * K :
-                                                                             0.5 * (K_low + K_high);
+            step.K_next = previous != nullptr && previous->K_star < K_high ?
+                            previous->K_star :
+                          std::isnan(K_low) ? 0.5 * K :
+                                              0.5 * (K_low + K_high);
           }
         else if (s.has_factor())
           {
@@ -96,14 +105,18 @@ namespace fdem
        * the distance: eq. (13) decides there.)
        */
       bool
-      independent_of_K(const Step &step, const Step *previous, const double K_high,
+      independent_of_K(const Step  &step,
+                       const Step  *previous,
+                       const double K_high,
                        const double tolerance)
       {
         if (previous == nullptr || previous->K == step.K)
           return false;
-        const double m = std::abs((step.K_star - previous->K_star) / (step.K - previous->K));
+        const double m =
+          std::abs((step.K_star - previous->K_star) / (step.K - previous->K));
         return m < 0.01 &&
-               m * std::abs(step.K_star - step.K) <= (1 - m) * tolerance * step.K_star &&
+               m * std::abs(step.K_star - step.K) <=
+                 (1 - m) * tolerance * step.K_star &&
                !(K_high < step.K_star * (1 - tolerance));
       }
 
@@ -117,30 +130,33 @@ namespace fdem
         const ReducedStrengthSolution &s = step.solution;
         std::ostringstream             K;
         K << std::setprecision(8) << step.K;
-        log << "  step " << std::setw(2) << n << ": K = " << std::left << std::setw(11) << K.str()
-            << std::right;
+        log << "  step " << std::setw(2) << n << ": K = " << std::left
+            << std::setw(11) << K.str() << std::right;
         if (s.has_factor())
-          log << " K* = " << std::left << std::setw(11) << std::setprecision(8) << step.K_star
-              << std::right << " " << s.n_stick << " stick, " << s.n_slip << " slip, " << s.n_open
-              << " open" << (s.degenerate ? " (all slipping: K* = K at any K, a bound)" : "")
+          log << " K* = " << std::left << std::setw(11) << std::setprecision(8)
+              << step.K_star << std::right << " " << s.n_stick << " stick, "
+              << s.n_slip << " slip, " << s.n_open << " open"
+              << (s.degenerate ? " (all slipping: K* = K at any K, a bound)" :
+                                 "")
               << std::endl;
         else
-          log << " no static solution" << (s.mechanism ? ": a mechanism" : " (" + s.result + ")")
+          log << " no static solution"
+              << (s.mechanism ? ": a mechanism" : " (" + s.result + ")")
               << std::endl;
       }
     } // namespace
 
     Result
     iterate(const std::function<ReducedStrengthSolution(double K)> &solve,
-            const parameters::SafetyFactorParameters &              parameters,
-            std::ostream &                                          log)
+            const parameters::SafetyFactorParameters               &parameters,
+            std::ostream                                           &log)
     {
       Result       result;
       const double tolerance = parameters.tolerance;
-      double &     K_low = result.bracket_low, &K_high = result.bracket_high;
+      double      &K_low = result.bracket_low, &K_high = result.bracket_high;
       double       K = parameters.initial_factor, previous_step = nan;
-      const Step * previous = nullptr; // the last solved step
-      result.reason = "iteration limit reached";
+      const Step  *previous = nullptr; // the last solved step
+      result.reason         = "iteration limit reached";
       result.steps.reserve(parameters.max_iterations); // keeps `previous` valid
       for (unsigned int i = 0; i < parameters.max_iterations; ++i)
         {
@@ -157,8 +173,10 @@ namespace fdem
               result.reason = "no sliding force on the sliding surface";
               break;
             }
-          // Eq. (13): K* reproduces K, and the distance still to go is as small.
-          if (s.has_factor() && !s.degenerate && std::abs(step.K_star - K) <= tolerance * step.K_star &&
+          // Eq. (13): K* reproduces K, and the distance still to go is as
+          // small.
+          if (s.has_factor() && !s.degenerate &&
+              std::abs(step.K_star - K) <= tolerance * step.K_star &&
               step.distance_left <= tolerance * step.K_star)
             {
               result.reason = "fixed point: K* reproduces K";
@@ -169,18 +187,23 @@ namespace fdem
               independent_of_K(step, previous, K_high, tolerance))
             {
               result.steps.back().K_next = step.K_star * (1 - 0.25 * tolerance);
-              log << "  K* is independent of K (a planar limit): solving just below it" << std::endl;
+              log
+                << "  K* is independent of K (a planar limit): solving just below it"
+                << std::endl;
             }
           if (!std::isnan(K_low) && K_high - K_low <= tolerance * K_low)
             {
-              result.reason = "bracket: the largest K with a static solution, to the tolerance";
+              result.reason =
+                "bracket: the largest K with a static solution, to the tolerance";
               break;
             }
           if (std::isnan(K_low) && step.K_next < parameters.minimum_factor)
             {
-              result.reason = "no static solution for any K down to Safety factor/Minimum factor";
+              result.reason =
+                "no static solution for any K down to Safety factor/Minimum factor";
               result.no_equilibrium =
-                std::all_of(result.steps.begin(), result.steps.end(),
+                std::all_of(result.steps.begin(),
+                            result.steps.end(),
                             [](const Step &s) { return s.solution.mechanism; });
               break;
             }
@@ -193,12 +216,14 @@ namespace fdem
             previous_step = nan;
           K = result.steps.back().K_next;
         }
-      result.certificate = certify(result, tolerance, parameters.bracket_agreement);
-      result.converged   = result.certificate.holds;
+      result.certificate =
+        certify(result, tolerance, parameters.bracket_agreement);
+      result.converged = result.certificate.holds;
       if (result.converged)
-        result.safety_factor = result.certificate.kind == Certificate::Kind::fixed_point ?
-                                 result.certificate.K_star :
-                                 result.certificate.K;
+        result.safety_factor =
+          result.certificate.kind == Certificate::Kind::fixed_point ?
+            result.certificate.K_star :
+            result.certificate.K;
       return result;
     }
   } // namespace analyses

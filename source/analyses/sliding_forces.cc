@@ -10,10 +10,11 @@ namespace fdem
   {
     template <int dim>
     ReducedStrengthSolution
-    resisting_and_sliding_forces(const contact::MixedSystem<dim> &         system,
-                                 const contact::ContactOutcome<dim> &      outcome,
-                                 const std::vector<contact::PairStrength> &reduced_strengths,
-                                 const std::vector<bool> &                 on_sliding_surface)
+    resisting_and_sliding_forces(
+      const contact::MixedSystem<dim>          &system,
+      const contact::ContactOutcome<dim>       &outcome,
+      const std::vector<contact::PairStrength> &reduced_strengths,
+      const std::vector<bool>                  &on_sliding_surface)
     {
       ReducedStrengthSolution s;
       s.converged            = outcome.converged();
@@ -34,8 +35,10 @@ namespace fdem
             continue;
           sum_f_t += outcome.solution.forces[dim * p + 1];
           for (unsigned int i = 1; i < dim; ++i)
-            sum_tangential += outcome.solution.forces[dim * p + i] * system.pair(p).frame[i];
-          s.resisting_force += reduced_strengths[p].shear_capacity(outcome.solution.forces[dim * p]);
+            sum_tangential +=
+              outcome.solution.forces[dim * p + i] * system.pair(p).frame[i];
+          s.resisting_force += reduced_strengths[p].shear_capacity(
+            outcome.solution.forces[dim * p]);
         }
       s.sliding_force = dim == 2 ? std::abs(sum_f_t) : sum_tangential.norm();
       // The slip rows fix each |f_t| at its reduced strength exactly, so

@@ -24,10 +24,12 @@ namespace fdem
     AmesosSolver::~AmesosSolver() = default;
 
     void
-    AmesosSolver::factorize(const TrilinosWrappers::SparseMatrix &       A,
-                            const std::vector<types::global_dof_index> &schur_dofs)
+    AmesosSolver::factorize(
+      const TrilinosWrappers::SparseMatrix       &A,
+      const std::vector<types::global_dof_index> &schur_dofs)
     {
-      Assert(schur_dofs.empty(), ExcMessage("Amesos keeps no Schur complement."));
+      Assert(schur_dofs.empty(),
+             ExcMessage("Amesos keeps no Schur complement."));
       (void)schur_dofs;
       matrix = &A;
       solver.reset();
@@ -51,7 +53,7 @@ namespace fdem
     AmesosSolver::solve(std::vector<double> &b, const unsigned int n_rhs) const
     {
       Assert(solver != nullptr, ExcMessage("factorize() first."));
-      const Epetra_Map & map     = matrix->trilinos_matrix().DomainMap();
+      const Epetra_Map  &map     = matrix->trilinos_matrix().DomainMap();
       const std::size_t  n       = matrix->m();
       const int          n_local = map.NumMyElements();
       Epetra_MultiVector rhs(map, n_rhs), x(map, n_rhs);
@@ -71,7 +73,9 @@ namespace fdem
           b[map.GID(i) + c * n] = x[c][i];
       // Each entry comes from the one rank that owns it: the sum is exact.
       if (Utilities::MPI::n_mpi_processes(comm) > 1)
-        Utilities::MPI::sum(ArrayView<const double>(b), comm, ArrayView<double>(b));
+        Utilities::MPI::sum(ArrayView<const double>(b),
+                            comm,
+                            ArrayView<double>(b));
     }
   } // namespace blocks
 } // namespace fdem

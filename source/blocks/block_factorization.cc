@@ -30,15 +30,19 @@ namespace fdem
     std::vector<double>
     BlockFactorization::inverse_on_schur_dofs() const
     {
-      Assert(false, ExcMessage("This factorisation keeps no Schur complement."));
+      Assert(false,
+             ExcMessage("This factorisation keeps no Schur complement."));
       return {};
     }
 
     std::vector<double>
     BlockFactorization::inverse_entries(
-      const std::vector<std::pair<types::global_dof_index, types::global_dof_index>> &) const
+      const std::vector<
+        std::pair<types::global_dof_index, types::global_dof_index>> &) const
     {
-      Assert(false, ExcMessage("This factorisation computes no entries of the inverse."));
+      Assert(false,
+             ExcMessage(
+               "This factorisation computes no entries of the inverse."));
       return {};
     }
 
@@ -49,14 +53,17 @@ namespace fdem
       switch (type)
         {
           case DirectSolverType::mumps_schur:
-            return std::make_unique<MumpsSchurSolver>(/*keep_schur_complement=*/true);
+            return std::make_unique<MumpsSchurSolver>(
+              /*keep_schur_complement=*/true);
           case DirectSolverType::mumps:
-            return std::make_unique<MumpsSchurSolver>(/*keep_schur_complement=*/false);
+            return std::make_unique<MumpsSchurSolver>(
+              /*keep_schur_complement=*/false);
           case DirectSolverType::cholmod:
             return std::make_unique<CholmodSolver>();
           case DirectSolverType::amesos_klu:
           case DirectSolverType::amesos_mumps:
-            return std::make_unique<AmesosSolver>(parameters::direct_solver_name(type));
+            return std::make_unique<AmesosSolver>(
+              parameters::direct_solver_name(type));
           case DirectSolverType::umfpack:
             return std::make_unique<UmfpackSolver>();
         }
@@ -68,10 +75,12 @@ namespace fdem
     assert_one_rank(const TrilinosWrappers::SparseMatrix &matrix,
                     const parameters::DirectSolverType    type)
     {
-      AssertThrow(Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator()) == 1,
-                  ExcMessage("Solver/Direct solver: " + parameters::direct_solver_name(type) +
-                             " runs on one MPI rank only; with mpirun use "
-                             "MUMPS_Schur, MUMPS, Amesos_Mumps or Amesos_Klu."));
+      AssertThrow(
+        Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator()) == 1,
+        ExcMessage(
+          "Solver/Direct solver: " + parameters::direct_solver_name(type) +
+          " runs on one MPI rank only; with mpirun use "
+          "MUMPS_Schur, MUMPS, Amesos_Mumps or Amesos_Klu."));
     }
   } // namespace blocks
 } // namespace fdem

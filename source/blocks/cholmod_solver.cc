@@ -44,14 +44,16 @@ namespace fdem
     CholmodSolver::~CholmodSolver() = default;
 
     void
-    CholmodSolver::factorize(const TrilinosWrappers::SparseMatrix &       matrix,
-                             const std::vector<types::global_dof_index> &schur_dofs)
+    CholmodSolver::factorize(
+      const TrilinosWrappers::SparseMatrix       &matrix,
+      const std::vector<types::global_dof_index> &schur_dofs)
     {
-      Assert(schur_dofs.empty(), ExcMessage("CHOLMOD keeps no Schur complement."));
+      Assert(schur_dofs.empty(),
+             ExcMessage("CHOLMOD keeps no Schur complement."));
       (void)schur_dofs;
       assert_one_rank(matrix, parameters::DirectSolverType::cholmod);
-      data = std::make_unique<Data>();
-      cholmod_common &        common = data->common;
+      data                           = std::make_unique<Data>();
+      cholmod_common         &common = data->common;
       const Epetra_CrsMatrix &crs    = matrix.trilinos_matrix();
       n                              = matrix.m();
       const SuiteSparse_long n_rows  = crs.NumMyRows();
@@ -75,7 +77,8 @@ namespace fdem
                                                     CHOLMOD_REAL,
                                                     &common);
       AssertThrow(A != nullptr,
-                  ExcMessage("CHOLMOD could not allocate a block stiffness matrix."));
+                  ExcMessage(
+                    "CHOLMOD could not allocate a block stiffness matrix."));
       auto *p = static_cast<SuiteSparse_long *>(A->p);
       auto *i = static_cast<SuiteSparse_long *>(A->i);
       auto *x = static_cast<double *>(A->x);
@@ -92,8 +95,9 @@ namespace fdem
               }
           });
         }
-      data->factor        = cholmod_l_analyze(A, &common);
-      const bool analysed = data->factor != nullptr && common.status == CHOLMOD_OK;
+      data->factor = cholmod_l_analyze(A, &common);
+      const bool analysed =
+        data->factor != nullptr && common.status == CHOLMOD_OK;
       const bool factorised =
         analysed && cholmod_l_factorize(A, data->factor, &common) != 0 &&
         common.status == CHOLMOD_OK;
@@ -114,15 +118,16 @@ namespace fdem
     {
       Assert(data->factor != nullptr, ExcMessage("factorize() first."));
       cholmod_dense rhs;
-      rhs.nrow         = n;
-      rhs.ncol         = n_rhs;
-      rhs.nzmax        = n * n_rhs;
-      rhs.d            = n;
-      rhs.x            = b.data();
-      rhs.z            = nullptr;
-      rhs.xtype        = CHOLMOD_REAL;
-      rhs.dtype        = CHOLMOD_DOUBLE;
-      cholmod_dense *x = cholmod_l_solve(CHOLMOD_A, data->factor, &rhs, &data->common);
+      rhs.nrow  = n;
+      rhs.ncol  = n_rhs;
+      rhs.nzmax = n * n_rhs;
+      rhs.d     = n;
+      rhs.x     = b.data();
+      rhs.z     = nullptr;
+      rhs.xtype = CHOLMOD_REAL;
+      rhs.dtype = CHOLMOD_DOUBLE;
+      cholmod_dense *x =
+        cholmod_l_solve(CHOLMOD_A, data->factor, &rhs, &data->common);
       AssertThrow(x != nullptr,
                   ExcMessage("A direct solve with a factorised block "
                              "stiffness matrix failed (CHOLMOD status " +

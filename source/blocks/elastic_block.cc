@@ -17,11 +17,11 @@ namespace fdem
   {
     template <int dim>
     ElasticBlock<dim>::ElasticBlock(
-      const std::string &                                             name,
-      const geometry::MeshDescription<dim> &                          mesh,
-      const std::vector<unsigned int> &                               block_ids,
+      const std::string                                            &name,
+      const geometry::MeshDescription<dim>                         &mesh,
+      const std::vector<unsigned int>                              &block_ids,
       const std::map<unsigned int, parameters::MaterialParameters> &materials,
-      const unsigned int                                              fe_degree)
+      const unsigned int                                            fe_degree)
       : name(name)
       , triangulation(MPI_COMM_WORLD,
                       Triangulation<dim>::none,
@@ -42,13 +42,14 @@ namespace fdem
           std::vector<typename Triangulation<dim>::active_cell_iterator> front{
             triangulation.begin_active()};
           reached[front[0]->active_cell_index()] = true;
-          unsigned int n_reached                  = 1;
+          unsigned int n_reached                 = 1;
           while (!front.empty())
             {
               const auto cell = front.back();
               front.pop_back();
               for (const unsigned int f : cell->face_indices())
-                if (!cell->at_boundary(f) && !reached[cell->neighbor(f)->active_cell_index()])
+                if (!cell->at_boundary(f) &&
+                    !reached[cell->neighbor(f)->active_cell_index()])
                   {
                     reached[cell->neighbor(f)->active_cell_index()] = true;
                     ++n_reached;
@@ -96,17 +97,20 @@ namespace fdem
     template <int dim>
     void
     ElasticBlock<dim>::set_surface_loads(
-      const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> &pressures,
-      const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> &tractions)
+      const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>>
+        &pressures,
+      const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>>
+        &tractions)
     {
       this->pressures = pressures;
       this->tractions = tractions;
     }
 
     template <int dim>
-    ElasticBlock<dim>::CellScratch::CellScratch(const Mapping<dim> &       mapping,
-                                                const FiniteElement<dim> & fe,
-                                                const ElementFamily<dim> & family)
+    ElasticBlock<dim>::CellScratch::CellScratch(
+      const Mapping<dim>       &mapping,
+      const FiniteElement<dim> &fe,
+      const ElementFamily<dim> &family)
       : fe_values(mapping,
                   fe,
                   family.cell_quadrature(fe.degree + 1),
@@ -126,17 +130,17 @@ namespace fdem
     void
     ElasticBlock<dim>::assemble_cell(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
-      CellScratch &                                         scratch) const
+      CellScratch                                          &scratch) const
     {
-      FEValues<dim> &     fe_values      = scratch.fe_values;
-      FEFaceValues<dim> & fe_face_values = scratch.fe_face_values;
+      FEValues<dim>      &fe_values      = scratch.fe_values;
+      FEFaceValues<dim>  &fe_face_values = scratch.fe_face_values;
       FullMatrix<double> &cell_matrix    = scratch.matrix;
-      Vector<double> &    cell_rhs       = scratch.rhs;
+      Vector<double>     &cell_rhs       = scratch.rhs;
       const parameters::MaterialParameters &material =
         materials.at(cell->material_id());
-      const double E = material.youngs_modulus, nu = material.poissons_ratio;
-      const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-      const double mu     = E / (2 * (1 + nu));
+      const double   E = material.youngs_modulus, nu = material.poissons_ratio;
+      const double   lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+      const double   mu     = E / (2 * (1 + nu));
       Tensor<1, dim> body_force, saturated_body_force;
       const double   g = loads.gravitational_acceleration;
       for (unsigned int d = 0; d < dim; ++d)
@@ -152,13 +156,13 @@ namespace fdem
 
       const FEValuesExtractors::Vector displacement(0);
       fe_values.reinit(cell);
-      cell_matrix = 0;
-      cell_rhs    = 0;
+      cell_matrix          = 0;
+      cell_rhs             = 0;
       const unsigned int n = fe.n_dofs_per_cell();
       // The shape functions' strains once per point, not once per pair
       // (same operations per entry, so the same K bit for bit).
       std::vector<SymmetricTensor<2, dim>> &eps = scratch.strains;
-      std::vector<double> &                 div = scratch.divergences;
+      std::vector<double>                  &div = scratch.divergences;
       eps.resize(n);
       div.resize(n);
       for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -181,8 +185,7 @@ namespace fdem
               for (unsigned int j = 0; j < n; ++j)
                 cell_matrix(i, j) +=
                   (lambda * div_i * div[j] + 2 * mu * (eps_i * eps[j])) * JxW;
-              cell_rhs(i) +=
-                fe_values[displacement].value(i, q) * weight * JxW;
+              cell_rhs(i) += fe_values[displacement].value(i, q) * weight * JxW;
             }
         }
       for (const auto &face : cell->face_iterators())
@@ -194,13 +197,15 @@ namespace fdem
               continue;
             fe_face_values.reinit(cell, face);
             Vector<double> value(dim);
-            for (const unsigned int q : fe_face_values.quadrature_point_indices())
+            for (const unsigned int q :
+                 fe_face_values.quadrature_point_indices())
               {
                 const Point<dim> &x = fe_face_values.quadrature_point(q);
                 Tensor<1, dim>    traction;
                 // A pressure pushes against the outward normal.
                 if (pressure != pressures.end())
-                  traction -= pressure->second->value(x) * fe_face_values.normal_vector(q);
+                  traction -= pressure->second->value(x) *
+                              fe_face_values.normal_vector(q);
                 if (given != tractions.end())
                   {
                     given->second->vector_value(x, value);
@@ -214,7 +219,8 @@ namespace fdem
                               ExcMessage("A surface load (Pressure or Traction "
                                          "of a boundary, or a pore pressure) "
                                          "is not a finite number at a point "
-                                         "of block '" + name + "'."));
+                                         "of block '" +
+                                         name + "'."));
                 for (unsigned int i = 0; i < n; ++i)
                   cell_rhs(i) += fe_face_values[displacement].value(i, q) *
                                  traction * fe_face_values.JxW(q);
@@ -225,7 +231,7 @@ namespace fdem
     template <int dim>
     void
     ElasticBlock<dim>::assemble_and_factorize(
-      const parameters::LoadParameters &load_parameters,
+      const parameters::LoadParameters  &load_parameters,
       const parameters::DirectSolverType solver_type)
     {
       assemble(load_parameters);
@@ -234,19 +240,20 @@ namespace fdem
 
     template <int dim>
     void
-    ElasticBlock<dim>::assemble(const parameters::LoadParameters &load_parameters)
+    ElasticBlock<dim>::assemble(
+      const parameters::LoadParameters &load_parameters)
     {
-      loads = load_parameters;
-      const auto     start    = std::chrono::steady_clock::now();
-      const MPI_Comm comm     = triangulation.get_communicator();
-      const bool     parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
-      const IndexSet &owned   = dof_handler.locally_owned_dofs();
+      loads                    = load_parameters;
+      const auto      start    = std::chrono::steady_clock::now();
+      const MPI_Comm  comm     = triangulation.get_communicator();
+      const bool      parallel = Utilities::MPI::n_mpi_processes(comm) > 1;
+      const IndexSet &owned    = dof_handler.locally_owned_dofs();
       // The pattern of this rank's cells; rows other ranks own go to them.
       DynamicSparsityPattern dsp(dof_handler.n_dofs());
       DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
       if (parallel)
-        SparsityTools::distribute_sparsity_pattern(dsp, owned, comm,
-                                                   complete_index_set(dof_handler.n_dofs()));
+        SparsityTools::distribute_sparsity_pattern(
+          dsp, owned, comm, complete_index_set(dof_handler.n_dofs()));
       stiffness_matrix.reinit(owned, owned, dsp, comm);
       load_vector.reinit(dof_handler.n_dofs());
 
@@ -266,7 +273,8 @@ namespace fdem
         Utilities::MPI::sum(load_vector, comm, load_vector);
       stiffness_matrix.compress(VectorOperation::add);
       assembly_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
     }
 
     template <int dim>
@@ -281,7 +289,8 @@ namespace fdem
                                  interface_schur_dofs() :
                                  std::vector<types::global_dof_index>());
       factorization_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
     }
 
     template <int dim>
@@ -297,7 +306,8 @@ namespace fdem
 
     template <int dim>
     std::vector<Vector<double>>
-    ElasticBlock<dim>::solve(const std::vector<Vector<double>> &nodal_forces) const
+    ElasticBlock<dim>::solve(
+      const std::vector<Vector<double>> &nodal_forces) const
     {
       std::vector<Vector<double>> u(nodal_forces.size());
       solve_blocked(
@@ -314,7 +324,8 @@ namespace fdem
     {
       Vector<double> residual(dof_handler.n_dofs());
       CellScratch    scratch(mapping, fe, element_family);
-      Vector<double> cell_u(fe.n_dofs_per_cell()), cell_residual(fe.n_dofs_per_cell());
+      Vector<double> cell_u(fe.n_dofs_per_cell()),
+        cell_residual(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (material_id == numbers::invalid_unsigned_int ||
             cell->material_id() == material_id)

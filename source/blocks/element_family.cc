@@ -28,8 +28,7 @@ namespace fdem
                               [&](const CellData<dim> &cell) {
                                 return is_simplex(cell) == simplex;
                               }),
-                  ExcMessage(mesh.source +
-                             ": the mesh mixes simplices and " +
+                  ExcMessage(mesh.source + ": the mesh mixes simplices and " +
                              (dim == 2 ? "quadrilaterals" : "hexahedra") +
                              "; only meshes of one element shape are "
                              "supported."));

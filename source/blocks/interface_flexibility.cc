@@ -25,14 +25,17 @@ namespace fdem
         return {};
       const std::set<types::boundary_id> interfaces(interface_ids.begin(),
                                                     interface_ids.end());
-      const IndexSet on_interface =
-        DoFTools::extract_boundary_dofs(dof_handler, ComponentMask(), interfaces);
+      const IndexSet                     on_interface =
+        DoFTools::extract_boundary_dofs(dof_handler,
+                                        ComponentMask(),
+                                        interfaces);
       std::set<types::global_dof_index> schur;
       for (const types::global_dof_index dof : on_interface)
         if (!constraints.is_constrained(dof))
           schur.insert(dof);
         else
-          for (const auto &[master, weight] : *constraints.get_constraint_entries(dof))
+          for (const auto &[master, weight] :
+               *constraints.get_constraint_entries(dof))
             schur.insert(master);
       return {schur.begin(), schur.end()};
     }
@@ -41,17 +44,20 @@ namespace fdem
     bool
     ElasticBlock<dim>::flexibility_from_schur(
       const std::vector<types::global_dof_index> &dofs,
-      FullMatrix<double> &                        C) const
+      FullMatrix<double>                         &C) const
     {
-      const std::vector<types::global_dof_index> &schur = factorization->schur_dofs();
+      const std::vector<types::global_dof_index> &schur =
+        factorization->schur_dofs();
       if (schur.empty())
         return false;
       // Row r of the constraint map P (u = P u_free): the unconstrained
       // dofs dof r follows, as positions in the Schur list, with weights.
-      std::vector<std::vector<std::pair<unsigned int, double>>> rows(dofs.size());
+      std::vector<std::vector<std::pair<unsigned int, double>>> rows(
+        dofs.size());
       for (unsigned int r = 0; r < dofs.size(); ++r)
         {
-          const auto entry = [&](const types::global_dof_index dof, const double w) {
+          const auto entry = [&](const types::global_dof_index dof,
+                                 const double                  w) {
             const auto it = std::lower_bound(schur.begin(), schur.end(), dof);
             if (it == schur.end() || *it != dof)
               return false;
@@ -70,8 +76,9 @@ namespace fdem
                 return false;
         }
       // C = P (K^{-1})_SS P^T; a fixed dof has an empty row, so zero.
-      const std::vector<double> inverse = factorization->inverse_on_schur_dofs();
-      const std::size_t          n_s     = schur.size();
+      const std::vector<double> inverse =
+        factorization->inverse_on_schur_dofs();
+      const std::size_t n_s = schur.size();
       for (unsigned int r = 0; r < dofs.size(); ++r)
         for (unsigned int c = 0; c < dofs.size(); ++c)
           {
@@ -109,7 +116,8 @@ namespace fdem
     ElasticBlock<dim>::flexibility_diagonal_blocks(
       const std::vector<std::array<types::global_dof_index, dim>> &nodes) const
     {
-      std::vector<FullMatrix<double>> blocks(nodes.size(), FullMatrix<double>(dim, dim));
+      std::vector<FullMatrix<double>> blocks(nodes.size(),
+                                             FullMatrix<double>(dim, dim));
       // Without MUMPS's entries of K^{-1}: the columns of the nodes' dofs
       // are solved in blocks of right-hand sides, whole nodes per pass (63
       // columns in 3D), and only their own blocks kept.
@@ -117,7 +125,9 @@ namespace fdem
         {
           solve_blocked(
             dim * nodes.size(),
-            [&](const unsigned int c, Vector<double> &f) { f[nodes[c / dim][c % dim]] = 1; },
+            [&](const unsigned int c, Vector<double> &f) {
+              f[nodes[c / dim][c % dim]] = 1;
+            },
             [&](const unsigned int c, const Vector<double> &u) {
               for (unsigned int i = 0; i < dim; ++i)
                 blocks[c / dim](i, c % dim) = u[nodes[c / dim][i]];
@@ -135,9 +145,11 @@ namespace fdem
         return Weights(constraints.get_constraint_entries(dof)->begin(),
                        constraints.get_constraint_entries(dof)->end());
       };
-      std::map<std::pair<types::global_dof_index, types::global_dof_index>, std::size_t>
+      std::map<std::pair<types::global_dof_index, types::global_dof_index>,
+               std::size_t>
         entry_index;
-      std::vector<std::pair<types::global_dof_index, types::global_dof_index>> entries;
+      std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+                                            entries;
       std::vector<std::array<Weights, dim>> weights(nodes.size());
       for (unsigned int k = 0; k < nodes.size(); ++k)
         for (unsigned int i = 0; i < dim; ++i)
@@ -147,9 +159,11 @@ namespace fdem
           for (unsigned int j = 0; j < dim; ++j)
             for (const auto &[a, wa] : weights[k][i])
               for (const auto &[b, wb] : weights[k][j])
-                if (entry_index.emplace(std::make_pair(a, b), entries.size()).second)
+                if (entry_index.emplace(std::make_pair(a, b), entries.size())
+                      .second)
                   entries.emplace_back(a, b);
-      const std::vector<double> values = factorization->inverse_entries(entries);
+      const std::vector<double> values =
+        factorization->inverse_entries(entries);
       for (unsigned int k = 0; k < nodes.size(); ++k)
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
@@ -159,13 +173,29 @@ namespace fdem
       return blocks;
     }
 
-    template FullMatrix<double> ElasticBlock<2>::flexibility(const std::vector<types::global_dof_index> &) const;
-    template std::vector<FullMatrix<double>> ElasticBlock<2>::flexibility_diagonal_blocks(const std::vector<std::array<types::global_dof_index, 2>> &) const;
-    template bool ElasticBlock<2>::flexibility_from_schur(const std::vector<types::global_dof_index> &, FullMatrix<double> &) const;
-    template std::vector<types::global_dof_index> ElasticBlock<2>::interface_schur_dofs() const;
-    template FullMatrix<double> ElasticBlock<3>::flexibility(const std::vector<types::global_dof_index> &) const;
-    template std::vector<FullMatrix<double>> ElasticBlock<3>::flexibility_diagonal_blocks(const std::vector<std::array<types::global_dof_index, 3>> &) const;
-    template bool ElasticBlock<3>::flexibility_from_schur(const std::vector<types::global_dof_index> &, FullMatrix<double> &) const;
-    template std::vector<types::global_dof_index> ElasticBlock<3>::interface_schur_dofs() const;
+    template FullMatrix<double>
+    ElasticBlock<2>::flexibility(
+      const std::vector<types::global_dof_index> &) const;
+    template std::vector<FullMatrix<double>>
+    ElasticBlock<2>::flexibility_diagonal_blocks(
+      const std::vector<std::array<types::global_dof_index, 2>> &) const;
+    template bool
+    ElasticBlock<2>::flexibility_from_schur(
+      const std::vector<types::global_dof_index> &,
+      FullMatrix<double> &) const;
+    template std::vector<types::global_dof_index>
+    ElasticBlock<2>::interface_schur_dofs() const;
+    template FullMatrix<double>
+    ElasticBlock<3>::flexibility(
+      const std::vector<types::global_dof_index> &) const;
+    template std::vector<FullMatrix<double>>
+    ElasticBlock<3>::flexibility_diagonal_blocks(
+      const std::vector<std::array<types::global_dof_index, 3>> &) const;
+    template bool
+    ElasticBlock<3>::flexibility_from_schur(
+      const std::vector<types::global_dof_index> &,
+      FullMatrix<double> &) const;
+    template std::vector<types::global_dof_index>
+    ElasticBlock<3>::interface_schur_dofs() const;
   } // namespace blocks
 } // namespace fdem

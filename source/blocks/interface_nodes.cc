@@ -17,14 +17,15 @@ namespace fdem
     std::vector<InterfaceNode<dim>>
     ElasticBlock<dim>::interface_nodes(const types::boundary_id group) const
     {
-      std::vector<InterfaceNode<dim>>               nodes;
+      std::vector<InterfaceNode<dim>>                 nodes;
       std::map<types::global_dof_index, unsigned int> node_of_first_dof;
-      FEFaceValues<dim> fe_face_values(mapping,
-                                       fe,
-                                       element_family.face_quadrature(fe.degree + 1),
-                                       update_values | update_normal_vectors |
-                                         update_JxW_values);
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell()), face_dofs;
+      FEFaceValues<dim>                               fe_face_values(
+        mapping,
+        fe,
+        element_family.face_quadrature(fe.degree + 1),
+        update_values | update_normal_vectors | update_JxW_values);
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell()),
+        face_dofs;
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
@@ -40,9 +41,12 @@ namespace fdem
               std::sort(face_dofs.begin(), face_dofs.end());
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                 {
-                  if (!std::binary_search(face_dofs.begin(), face_dofs.end(), dofs[i]))
+                  if (!std::binary_search(face_dofs.begin(),
+                                          face_dofs.end(),
+                                          dofs[i]))
                     continue;
-                  const auto [component, base] = fe.system_to_component_index(i);
+                  const auto [component, base] =
+                    fe.system_to_component_index(i);
                   const types::global_dof_index first =
                     dofs[fe.component_to_system_index(0, base)];
                   const auto [it, is_new] =
@@ -64,7 +68,8 @@ namespace fdem
                         fe_face_values.shape_value_component(i, q, 0) *
                         fe_face_values.JxW(q);
                       node.area += phi_JxW;
-                      node.area_normal += phi_JxW * fe_face_values.normal_vector(q);
+                      node.area_normal +=
+                        phi_JxW * fe_face_values.normal_vector(q);
                       node.adjacent_area += fe_face_values.JxW(q);
                     }
                 }
@@ -80,7 +85,9 @@ namespace fdem
       return nodes;
     }
 
-    template std::vector<InterfaceNode<2>> ElasticBlock<2>::interface_nodes(const types::boundary_id) const;
-    template std::vector<InterfaceNode<3>> ElasticBlock<3>::interface_nodes(const types::boundary_id) const;
+    template std::vector<InterfaceNode<2>>
+    ElasticBlock<2>::interface_nodes(const types::boundary_id) const;
+    template std::vector<InterfaceNode<3>>
+    ElasticBlock<3>::interface_nodes(const types::boundary_id) const;
   } // namespace blocks
 } // namespace fdem

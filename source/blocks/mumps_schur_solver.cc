@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
-#include <fdem/blocks/mumps_schur_solver.h>
-
 #include <fdem/blocks/crs_rows.h>
+#include <fdem/blocks/mumps_schur_solver.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -58,13 +57,14 @@ namespace fdem
       id.job             = job;
       dmumps_c(&id);
       AssertThrow(id.infog[0] >= 0,
-                  ExcMessage(std::string("MUMPS failed in the ") + what +
-                             " of a block stiffness matrix (INFOG(1) = " +
-                             std::to_string(id.infog[0]) + ", INFOG(2) = " +
-                             std::to_string(id.infog[1]) +
-                             (id.infog[0] == -10 ?
-                                "): the block is not held (check its constraints)." :
-                                ").")));
+                  ExcMessage(
+                    std::string("MUMPS failed in the ") + what +
+                    " of a block stiffness matrix (INFOG(1) = " +
+                    std::to_string(id.infog[0]) +
+                    ", INFOG(2) = " + std::to_string(id.infog[1]) +
+                    (id.infog[0] == -10 ?
+                       "): the block is not held (check its constraints)." :
+                       ").")));
     }
 
     namespace
@@ -77,47 +77,59 @@ namespace fdem
       std::vector<T>
       all_gather_concatenated(const MPI_Comm comm, const std::vector<T> &local)
       {
-        const int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-        const int size    = local.size();
+        const int        n_ranks = Utilities::MPI::n_mpi_processes(comm);
+        const int        size    = local.size();
         std::vector<int> sizes(n_ranks), offsets(n_ranks, 0);
-        int ierr = MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm);
+        int              ierr =
+          MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm);
         AssertThrowMPI(ierr);
         for (int r = 1; r < n_ranks; ++r)
           offsets[r] = offsets[r - 1] + sizes[r - 1];
-        std::vector<T> all(offsets.back() + sizes.back());
+        std::vector<T>     all(offsets.back() + sizes.back());
         const MPI_Datatype type =
-          Utilities::MPI::internal::MPIDataTypes::mpi_type_id(static_cast<const T *>(nullptr));
-        ierr = MPI_Allgatherv(local.data(), size, type, all.data(), sizes.data(),
-                              offsets.data(), type, comm);
+          Utilities::MPI::internal::MPIDataTypes::mpi_type_id(
+            static_cast<const T *>(nullptr));
+        ierr = MPI_Allgatherv(local.data(),
+                              size,
+                              type,
+                              all.data(),
+                              sizes.data(),
+                              offsets.data(),
+                              type,
+                              comm);
         AssertThrowMPI(ierr);
         return all;
       }
 
       /** Broadcasts @p data (same size on every rank) from rank 0. */
       void
-      broadcast_from_host(const MPI_Comm comm, double *data, const std::size_t size)
+      broadcast_from_host(const MPI_Comm    comm,
+                          double           *data,
+                          const std::size_t size)
       {
         Utilities::MPI::broadcast(data, size, 0, comm);
       }
     } // namespace
 
     void
-    MumpsSchurSolver::factorize(const TrilinosWrappers::SparseMatrix &A,
-                                const std::vector<types::global_dof_index> &schur_dofs)
+    MumpsSchurSolver::factorize(
+      const TrilinosWrappers::SparseMatrix       &A,
+      const std::vector<types::global_dof_index> &schur_dofs)
     {
       Assert(keep_schur_complement || schur_dofs.empty(),
              ExcMessage("MUMPS without Schur complement got Schur dofs."));
-      matrix = &A;
-      schur  = schur_dofs;
-      communicator = A.get_mpi_communicator();
-      n_ranks      = Utilities::MPI::n_mpi_processes(communicator);
-      const bool              host = Utilities::MPI::this_mpi_process(communicator) == 0;
+      matrix          = &A;
+      schur           = schur_dofs;
+      communicator    = A.get_mpi_communicator();
+      n_ranks         = Utilities::MPI::n_mpi_processes(communicator);
+      const bool host = Utilities::MPI::this_mpi_process(communicator) == 0;
       const Epetra_CrsMatrix &crs = A.trilinos_matrix();
       const int               n   = A.m();
       schur_index.assign(n, -1);
       for (unsigned int k = 0; k < schur.size(); ++k)
         {
-          Assert(schur_index[schur[k]] < 0, ExcMessage("Schur dofs must be distinct."));
+          Assert(schur_index[schur[k]] < 0,
+                 ExcMessage("Schur dofs must be distinct."));
           schur_index[schur[k]] = k;
         }
 
@@ -130,9 +142,9 @@ namespace fdem
       for (int local_row = 0; local_row < crs.NumMyRows(); ++local_row)
         {
           const int row = crs.GRID(local_row);
-          int     n_entries;
-          double *values;
-          int *   indices;
+          int       n_entries;
+          double   *values;
+          int      *indices;
           crs.ExtractMyRowView(local_row, n_entries, values, indices);
           for (int e = 0; e < n_entries; ++e)
             {
@@ -152,18 +164,20 @@ namespace fdem
         std::vector<double> local_values;
         for (unsigned int k = 0; k < schur.size(); ++k)
           if (crs.MyGRID(static_cast<int>(schur[k])))
-            for_each_entry_in_row(crs, crs.LRID(static_cast<int>(schur[k])),
+            for_each_entry_in_row(crs,
+                                  crs.LRID(static_cast<int>(schur[k])),
                                   [&](const int column, const double value) {
                                     local_rows.push_back(k);
                                     local_columns.push_back(column);
                                     local_values.push_back(value);
                                   });
-        std::vector<int>    all_rows    = local_rows;
+        std::vector<int> all_rows = local_rows;
         if (n_ranks > 1)
           {
-            all_rows          = all_gather_concatenated(communicator, local_rows);
-            local_columns     = all_gather_concatenated(communicator, local_columns);
-            local_values      = all_gather_concatenated(communicator, local_values);
+            all_rows = all_gather_concatenated(communicator, local_rows);
+            local_columns =
+              all_gather_concatenated(communicator, local_columns);
+            local_values = all_gather_concatenated(communicator, local_values);
           }
         // Counting sort by row, keeping each row's entries in their order.
         schur_row_start.assign(schur.size() + 1, 0);
@@ -171,7 +185,8 @@ namespace fdem
           ++schur_row_start[k + 1];
         for (unsigned int k = 0; k < schur.size(); ++k)
           schur_row_start[k + 1] += schur_row_start[k];
-        std::vector<std::size_t> next(schur_row_start.begin(), schur_row_start.end() - 1);
+        std::vector<std::size_t> next(schur_row_start.begin(),
+                                      schur_row_start.end() - 1);
         schur_row_columns.resize(all_rows.size());
         schur_row_values.resize(all_rows.size());
         for (std::size_t e = 0; e < all_rows.size(); ++e)
@@ -225,7 +240,8 @@ namespace fdem
           for (unsigned int k = 0; k < n_schur; ++k)
             data->schur_list[k] = schur[k] + 1;
           if (host)
-            data->schur.assign(static_cast<std::size_t>(n_schur) * n_schur, 0.0);
+            data->schur.assign(static_cast<std::size_t>(n_schur) * n_schur,
+                               0.0);
           // Centralised Schur complement on the host, n_S x n_S.
           icntl(id, 19)    = 1;
           id.size_schur    = n_schur;
@@ -246,7 +262,8 @@ namespace fdem
               std::vector<double> &S = data->schur;
               for (unsigned int j = 0; j < n_schur; ++j)
                 for (unsigned int i = 0; i < j; ++i)
-                  S[j + std::size_t(i) * n_schur] = S[i + std::size_t(j) * n_schur];
+                  S[j + std::size_t(i) * n_schur] =
+                    S[i + std::size_t(j) * n_schur];
               // Cholesky factor of S: with MUMPS's factor of K_II, a complete
               // factorisation of K. LAPACK in place on MUMPS's array, not
               // LAPACKFullMatrix: that would copy n_S^2 numbers (many in 3D).
@@ -259,27 +276,31 @@ namespace fdem
             {
               info = Utilities::MPI::broadcast(communicator, info, 0);
               schur_factor.resize(std::size_t(n_schur) * n_schur);
-              broadcast_from_host(communicator, schur_factor.data(), schur_factor.size());
+              broadcast_from_host(communicator,
+                                  schur_factor.data(),
+                                  schur_factor.size());
             }
           AssertThrow(info == 0,
-                      ExcMessage("The Schur complement of a block stiffness matrix "
-                                 "on its interface dofs is not positive definite: "
-                                 "the block is not held (check its constraints)."));
+                      ExcMessage(
+                        "The Schur complement of a block stiffness matrix "
+                        "on its interface dofs is not positive definite: "
+                        "the block is not held (check its constraints)."));
         }
     }
 
     void
-    MumpsSchurSolver::solve_interior(std::vector<double> &b, const unsigned int n_rhs) const
+    MumpsSchurSolver::solve_interior(std::vector<double> &b,
+                                     const unsigned int   n_rhs) const
     {
       DMUMPS_STRUC_C &id = data->id;
       const auto      n  = static_cast<std::size_t>(id.n);
       for (unsigned int c = 0; c < n_rhs; ++c)
         for (const auto dof : schur)
           b[dof + c * n] = 0;
-      id.rhs          = b.data();
-      id.nrhs         = n_rhs;
-      id.lrhs         = id.n;
-      icntl(id, 26)   = 0; // the interior problem only, x_S = 0
+      id.rhs        = b.data();
+      id.nrhs       = n_rhs;
+      id.lrhs       = id.n;
+      icntl(id, 26) = 0; // the interior problem only, x_S = 0
       // Rank 0's right-hand sides in, the solutions out on rank 0.
       run(3, "solution");
       if (n_ranks > 1)
@@ -290,7 +311,8 @@ namespace fdem
     }
 
     void
-    MumpsSchurSolver::solve(std::vector<double> &b, const unsigned int n_rhs) const
+    MumpsSchurSolver::solve(std::vector<double> &b,
+                            const unsigned int   n_rhs) const
     {
       Assert(matrix != nullptr, ExcMessage("factorize() first."));
       const std::size_t  n       = data->id.n;
@@ -309,11 +331,13 @@ namespace fdem
 
       // r_S -= K_SI y_I: the rows of the Schur dofs, interior columns.
       for (unsigned int k = 0; k < n_schur; ++k)
-        for_each_entry_in_schur_row(k, [&](const int column, const double value) {
-          if (schur_index[column] < 0)
-            for (unsigned int c = 0; c < n_rhs; ++c)
-              r[k + c * n_schur] -= value * b[column + c * n];
-        });
+        for_each_entry_in_schur_row(k,
+                                    [&](const int column, const double value) {
+                                      if (schur_index[column] < 0)
+                                        for (unsigned int c = 0; c < n_rhs; ++c)
+                                          r[k + c * n_schur] -=
+                                            value * b[column + c * n];
+                                    });
       // x_S = S^{-1} r_S with the Cholesky factor.
       const types::blas_int n_s = n_schur, n_r = n_rhs;
       types::blas_int       info = 0;
@@ -324,11 +348,13 @@ namespace fdem
       // the symmetry K_IS = K_SI^T (the rows of the Schur dofs again).
       std::vector<double> correction(n * n_rhs, 0.0);
       for (unsigned int k = 0; k < n_schur; ++k)
-        for_each_entry_in_schur_row(k, [&](const int column, const double value) {
-          if (schur_index[column] < 0)
-            for (unsigned int c = 0; c < n_rhs; ++c)
-              correction[column + c * n] -= value * r[k + c * n_schur];
-        });
+        for_each_entry_in_schur_row(k,
+                                    [&](const int column, const double value) {
+                                      if (schur_index[column] < 0)
+                                        for (unsigned int c = 0; c < n_rhs; ++c)
+                                          correction[column + c * n] -=
+                                            value * r[k + c * n_schur];
+                                    });
       solve_interior(correction, n_rhs);
       for (std::size_t i = 0; i < n * n_rhs; ++i)
         b[i] += correction[i];
@@ -346,23 +372,26 @@ namespace fdem
           const types::blas_int n_s  = schur.size();
           types::blas_int       info = 0;
           potri("L", &n_s, inverse.data(), &n_s, &info);
-          AssertThrow(info == 0, ExcMessage("Inverting the Schur complement of a "
-                                            "block stiffness matrix failed."));
+          AssertThrow(info == 0,
+                      ExcMessage("Inverting the Schur complement of a "
+                                 "block stiffness matrix failed."));
           for (types::blas_int j = 0; j < n_s; ++j)
             for (types::blas_int i = 0; i < j; ++i)
-              inverse[i + std::size_t(j) * n_s] = inverse[j + std::size_t(i) * n_s];
+              inverse[i + std::size_t(j) * n_s] =
+                inverse[j + std::size_t(i) * n_s];
         }
       return inverse;
     }
 
     std::vector<double>
     MumpsSchurSolver::inverse_entries(
-      const std::vector<std::pair<types::global_dof_index, types::global_dof_index>> &entries)
-      const
+      const std::vector<std::pair<types::global_dof_index,
+                                  types::global_dof_index>> &entries) const
     {
       Assert(matrix != nullptr, ExcMessage("factorize() first."));
-      Assert(schur.empty(), ExcMessage("Entries of the inverse need a factorisation "
-                                       "without Schur dofs."));
+      Assert(schur.empty(),
+             ExcMessage("Entries of the inverse need a factorisation "
+                        "without Schur dofs."));
       DMUMPS_STRUC_C &id = data->id;
       const auto      n  = static_cast<std::size_t>(id.n);
       // The requested entries as a sparse matrix by columns (1-based): MUMPS
@@ -370,9 +399,11 @@ namespace fdem
       std::vector<std::size_t> order(entries.size());
       for (std::size_t e = 0; e < order.size(); ++e)
         order[e] = e;
-      std::stable_sort(order.begin(), order.end(), [&](const std::size_t a, const std::size_t b) {
-        return entries[a].second < entries[b].second;
-      });
+      std::stable_sort(order.begin(),
+                       order.end(),
+                       [&](const std::size_t a, const std::size_t b) {
+                         return entries[a].second < entries[b].second;
+                       });
       std::vector<MUMPS_INT> column_start(n + 1, 0), rows(entries.size());
       for (const auto &[i, j] : entries)
         ++column_start[j + 1];

@@ -14,8 +14,8 @@ namespace fdem
     template <int dim>
     Tensor<1, dim>
     rigid_mode(const unsigned int mode,
-               const Point<dim> & x,
-               const Point<dim> & centre,
+               const Point<dim>  &x,
+               const Point<dim>  &centre,
                const double       length)
     {
       Tensor<1, dim> u;
@@ -42,7 +42,7 @@ namespace fdem
 
     FullMatrix<double>
     free_rigid_modes(const AffineConstraints<double> &constraints,
-                     const FullMatrix<double> &       modes_at_dofs)
+                     const FullMatrix<double>        &modes_at_dofs)
     {
       const unsigned int n_modes = modes_at_dofs.n();
       // Gram matrix G = M^T M of the constraint rows M (one row per
@@ -67,11 +67,8 @@ namespace fdem
       std::vector<Vector<double>> eigenvectors;
       Vector<double>              eigenvalues;
       FullMatrix<double>          vectors(n_modes, n_modes);
-      gram.compute_eigenvalues_symmetric(-1.0,
-                                         1e-10 * scale,
-                                         1e-14 * scale,
-                                         eigenvalues,
-                                         vectors);
+      gram.compute_eigenvalues_symmetric(
+        -1.0, 1e-10 * scale, 1e-14 * scale, eigenvalues, vectors);
       FullMatrix<double> basis(n_modes, eigenvalues.size());
       for (unsigned int k = 0; k < eigenvalues.size(); ++k)
         for (unsigned int m = 0; m < n_modes; ++m)
@@ -80,15 +77,16 @@ namespace fdem
     }
 
     std::vector<types::global_dof_index>
-    minimal_support_dofs(const FullMatrix<double> &                  free_modes,
-                         const FullMatrix<double> &                  modes_at_dofs,
+    minimal_support_dofs(const FullMatrix<double> &free_modes,
+                         const FullMatrix<double> &modes_at_dofs,
                          const std::vector<types::global_dof_index> &candidates)
     {
       const unsigned int n_free  = free_modes.n();
       const unsigned int n_modes = free_modes.m();
       // The motion of each candidate dof under each free mode (O(1): the
       // modes are scaled by the block's size).
-      std::vector<Vector<double>> rows(candidates.size(), Vector<double>(n_free));
+      std::vector<Vector<double>> rows(candidates.size(),
+                                       Vector<double>(n_free));
       for (unsigned int c = 0; c < candidates.size(); ++c)
         for (unsigned int k = 0; k < n_free; ++k)
           for (unsigned int m = 0; m < n_modes; ++m)
@@ -102,7 +100,7 @@ namespace fdem
       std::vector<bool>                    taken(candidates.size(), false);
       while (support.size() < n_free)
         {
-          unsigned int best = candidates.size();
+          unsigned int best      = candidates.size();
           double       best_norm = 1e-8;
           for (unsigned int c = 0; c < candidates.size(); ++c)
             if (!taken[c] && rows[c].l2_norm() > best_norm)
@@ -123,8 +121,14 @@ namespace fdem
     }
 
     template Tensor<1, 2>
-    rigid_mode(const unsigned int, const Point<2> &, const Point<2> &, const double);
+    rigid_mode(const unsigned int,
+               const Point<2> &,
+               const Point<2> &,
+               const double);
     template Tensor<1, 3>
-    rigid_mode(const unsigned int, const Point<3> &, const Point<3> &, const double);
+    rigid_mode(const unsigned int,
+               const Point<3> &,
+               const Point<3> &,
+               const double);
   } // namespace blocks
 } // namespace fdem

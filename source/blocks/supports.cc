@@ -22,22 +22,25 @@ namespace fdem
     void
     ElasticBlock<dim>::setup_constraints(
       const std::map<types::boundary_id, parameters::BoundaryParameters>
-        &                                    boundary_conditions,
+                                            &boundary_conditions,
       const std::vector<types::boundary_id> &interface_group_ids)
     {
       interface_ids = interface_group_ids;
-      AffineConstraints<double> fixed, normal, plate;
+      AffineConstraints<double>    fixed, normal, plate;
       std::set<types::boundary_id> normal_ids;
       for (const auto &[id, condition] : boundary_conditions)
         {
           if (condition.constraint == parameters::Constraint::fixed)
             VectorTools::interpolate_boundary_values(
-              mapping, dof_handler, id, Functions::ZeroFunction<dim>(dim), fixed);
+              mapping,
+              dof_handler,
+              id,
+              Functions::ZeroFunction<dim>(dim),
+              fixed);
           else if (condition.constraint == parameters::Constraint::normal)
             normal_ids.insert(id);
           else if (condition.constraint == parameters::Constraint::plate)
             add_plate_constraints(id, plate);
-
         }
       if (!normal_ids.empty())
         VectorTools::compute_no_normal_flux_constraints(
@@ -48,17 +51,20 @@ namespace fdem
       dirichlet_constraints.clear();
       dirichlet_constraints.merge(plate);
       dirichlet_constraints.merge(
-        normal, AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
+        normal,
+        AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
       dirichlet_constraints.merge(
-        fixed, AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
+        fixed,
+        AffineConstraints<double>::MergeConflictBehavior::right_object_wins);
       dirichlet_constraints.close();
       constraints.copy_from(dirichlet_constraints);
     }
 
     template <int dim>
     void
-    ElasticBlock<dim>::add_plate_constraints(const types::boundary_id   id,
-                                             AffineConstraints<double> &plate) const
+    ElasticBlock<dim>::add_plate_constraints(
+      const types::boundary_id   id,
+      AffineConstraints<double> &plate) const
     {
       // The part's normal must be one coordinate axis: its dofs along that
       // axis all follow the first one.
@@ -67,7 +73,8 @@ namespace fdem
       std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == id)
             {
               const Tensor<1, dim> n = cell->face(f)->center() - cell->center();
               int                  face_axis = 0;
@@ -75,9 +82,10 @@ namespace fdem
                 if (std::abs(n[d]) > std::abs(n[face_axis]))
                   face_axis = d;
               AssertThrow(axis < 0 || axis == face_axis,
-                          ExcMessage("Block '" + name +
-                                     "': a boundary part with Constraint = plate "
-                                     "must be flat and normal to a coordinate axis."));
+                          ExcMessage(
+                            "Block '" + name +
+                            "': a boundary part with Constraint = plate "
+                            "must be flat and normal to a coordinate axis."));
               axis = face_axis;
               cell->face(f)->get_dof_indices(face_dofs);
               for (unsigned int i = 0; i < face_dofs.size(); ++i)
@@ -127,10 +135,11 @@ namespace fdem
       // which gives a well-conditioned pin-and-roller support.
       const std::set<types::boundary_id> interfaces(interface_ids.begin(),
                                                     interface_ids.end());
-      const IndexSet on_interface =
-        interfaces.empty() ?
-          IndexSet(dof_handler.n_dofs()) :
-          DoFTools::extract_boundary_dofs(dof_handler, ComponentMask(), interfaces);
+      const IndexSet                     on_interface =
+        interfaces.empty() ? IndexSet(dof_handler.n_dofs()) :
+                                                 DoFTools::extract_boundary_dofs(dof_handler,
+                                                             ComponentMask(),
+                                                             interfaces);
       std::vector<types::global_dof_index> candidates;
       for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
         if (!dirichlet_constraints.is_constrained(i) &&
@@ -175,7 +184,7 @@ namespace fdem
     template <int dim>
     Tensor<1, dim>
     ElasticBlock<dim>::free_mode_displacement(const unsigned int k,
-                                              const Point<dim> & x) const
+                                              const Point<dim>  &x) const
     {
       Tensor<1, dim> u;
       for (unsigned int m = 0; m < n_rigid_modes<dim>; ++m)
@@ -186,12 +195,13 @@ namespace fdem
     template <int dim>
     void
     ElasticBlock<dim>::add_rigid_motion(const Vector<double> &gamma,
-                                        Vector<double> &      u) const
+                                        Vector<double>       &u) const
     {
       for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
         for (unsigned int k = 0; k < gamma.size(); ++k)
-          u[i] += gamma[k] *
-                  free_mode_displacement(k, dof_support_points[i])[dof_components[i]];
+          u[i] +=
+            gamma[k] *
+            free_mode_displacement(k, dof_support_points[i])[dof_components[i]];
     }
 
     template <int dim>
@@ -203,26 +213,50 @@ namespace fdem
 
     template <int dim>
     double
-    ElasticBlock<dim>::free_mode_load(const unsigned int k, const Vector<double> &nodal_forces) const
+    ElasticBlock<dim>::free_mode_load(const unsigned int    k,
+                                      const Vector<double> &nodal_forces) const
     {
       double work = 0;
       for (unsigned int i = 0; i < dof_handler.n_dofs(); ++i)
-        work += nodal_forces[i] *
-                free_mode_displacement(k, dof_support_points[i])[dof_components[i]];
+        work +=
+          nodal_forces[i] *
+          free_mode_displacement(k, dof_support_points[i])[dof_components[i]];
       return work;
     }
 
-    template void ElasticBlock<2>::setup_constraints(const std::map<types::boundary_id, parameters::BoundaryParameters> &, const std::vector<types::boundary_id> &);
-    template void ElasticBlock<2>::find_free_rigid_modes();
-    template Tensor<1, 2> ElasticBlock<2>::free_mode_displacement(const unsigned int, const Point<2> &) const;
-    template void ElasticBlock<2>::add_rigid_motion(const Vector<double> &, Vector<double> &) const;
-    template double ElasticBlock<2>::free_mode_load(const unsigned int) const;
-    template double ElasticBlock<2>::free_mode_load(const unsigned int, const Vector<double> &) const;
-    template void ElasticBlock<3>::setup_constraints(const std::map<types::boundary_id, parameters::BoundaryParameters> &, const std::vector<types::boundary_id> &);
-    template void ElasticBlock<3>::find_free_rigid_modes();
-    template Tensor<1, 3> ElasticBlock<3>::free_mode_displacement(const unsigned int, const Point<3> &) const;
-    template void ElasticBlock<3>::add_rigid_motion(const Vector<double> &, Vector<double> &) const;
-    template double ElasticBlock<3>::free_mode_load(const unsigned int) const;
-    template double ElasticBlock<3>::free_mode_load(const unsigned int, const Vector<double> &) const;
+    template void
+    ElasticBlock<2>::setup_constraints(
+      const std::map<types::boundary_id, parameters::BoundaryParameters> &,
+      const std::vector<types::boundary_id> &);
+    template void
+    ElasticBlock<2>::find_free_rigid_modes();
+    template Tensor<1, 2>
+    ElasticBlock<2>::free_mode_displacement(const unsigned int,
+                                            const Point<2> &) const;
+    template void
+    ElasticBlock<2>::add_rigid_motion(const Vector<double> &,
+                                      Vector<double> &) const;
+    template double
+    ElasticBlock<2>::free_mode_load(const unsigned int) const;
+    template double
+    ElasticBlock<2>::free_mode_load(const unsigned int,
+                                    const Vector<double> &) const;
+    template void
+    ElasticBlock<3>::setup_constraints(
+      const std::map<types::boundary_id, parameters::BoundaryParameters> &,
+      const std::vector<types::boundary_id> &);
+    template void
+    ElasticBlock<3>::find_free_rigid_modes();
+    template Tensor<1, 3>
+    ElasticBlock<3>::free_mode_displacement(const unsigned int,
+                                            const Point<3> &) const;
+    template void
+    ElasticBlock<3>::add_rigid_motion(const Vector<double> &,
+                                      Vector<double> &) const;
+    template double
+    ElasticBlock<3>::free_mode_load(const unsigned int) const;
+    template double
+    ElasticBlock<3>::free_mode_load(const unsigned int,
+                                    const Vector<double> &) const;
   } // namespace blocks
 } // namespace fdem

@@ -14,23 +14,29 @@ namespace fdem
   namespace blocks
   {
     void
-    UmfpackSolver::factorize(const TrilinosWrappers::SparseMatrix &       A,
-                             const std::vector<types::global_dof_index> &schur_dofs)
+    UmfpackSolver::factorize(
+      const TrilinosWrappers::SparseMatrix       &A,
+      const std::vector<types::global_dof_index> &schur_dofs)
     {
-      Assert(schur_dofs.empty(), ExcMessage("UMFPACK keeps no Schur complement."));
+      Assert(schur_dofs.empty(),
+             ExcMessage("UMFPACK keeps no Schur complement."));
       (void)schur_dofs;
       assert_one_rank(A, parameters::DirectSolverType::umfpack);
       const Epetra_CrsMatrix &crs = A.trilinos_matrix();
       DynamicSparsityPattern  dsp(crs.NumMyRows());
       for (int row = 0; row < crs.NumMyRows(); ++row)
-        for_each_entry_in_row(crs, row, [&](const int column, double) { dsp.add(row, column); });
+        for_each_entry_in_row(crs, row, [&](const int column, double) {
+          dsp.add(row, column);
+        });
       matrix.clear();
       pattern.copy_from(dsp);
       matrix.reinit(pattern);
       for (int row = 0; row < crs.NumMyRows(); ++row)
-        for_each_entry_in_row(crs, row, [&](const int column, const double value) {
-          matrix.set(row, column, value);
-        });
+        for_each_entry_in_row(crs,
+                              row,
+                              [&](const int column, const double value) {
+                                matrix.set(row, column, value);
+                              });
       umfpack.factorize(matrix);
     }
 

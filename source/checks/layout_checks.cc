@@ -33,7 +33,7 @@ namespace fdem
       std::vector<unsigned int>
       merged_vertices(const std::vector<Point<dim>> &vertices)
       {
-        const unsigned int n = vertices.size();
+        const unsigned int        n = vertices.size();
         std::vector<unsigned int> merged(n);
         std::iota(merged.begin(), merged.end(), 0u);
         if (n == 0)
@@ -45,14 +45,17 @@ namespace fdem
               low[d]  = std::min(low[d], x[d]);
               high[d] = std::max(high[d], x[d]);
             }
-        const double tolerance = 1e-9 * low.distance(high);
+        const double              tolerance = 1e-9 * low.distance(high);
         std::vector<unsigned int> order(merged);
-        std::sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
-          return vertices[a][0] < vertices[b][0];
-        });
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](const unsigned int a, const unsigned int b) {
+                    return vertices[a][0] < vertices[b][0];
+                  });
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = i + 1;
-               j < n && vertices[order[j]][0] - vertices[order[i]][0] <= tolerance;
+               j < n &&
+               vertices[order[j]][0] - vertices[order[i]][0] <= tolerance;
                ++j)
             if (vertices[order[i]].distance(vertices[order[j]]) <= tolerance)
               merged[order[j]] = std::min(merged[order[j]], merged[order[i]]);
@@ -65,7 +68,8 @@ namespace fdem
 
       template <typename Container>
       FaceKey
-      face_key(const Container &face_vertices, const std::vector<unsigned int> &merged)
+      face_key(const Container                 &face_vertices,
+               const std::vector<unsigned int> &merged)
       {
         FaceKey key;
         key.fill(numbers::invalid_unsigned_int);
@@ -76,7 +80,8 @@ namespace fdem
         return key;
       }
 
-      /** Length (2D) or area (3D) and centre of a face given by its vertices in order. */
+      /** Length (2D) or area (3D) and centre of a face given by its vertices in
+       * order. */
       template <int dim>
       std::pair<double, Point<dim>>
       measure_and_centre(const std::vector<Point<dim>> &x)
@@ -89,12 +94,14 @@ namespace fdem
           measure = x[0].distance(x[1]);
         else if (x.size() == 3)
           measure = 0.5 * cross_product_3d(x[1] - x[0], x[2] - x[0]).norm();
-        else // a quadrilateral in lexicographic order: half the diagonals' cross product
+        else // a quadrilateral in lexicographic order: half the diagonals'
+             // cross product
           measure = 0.5 * cross_product_3d(x[3] - x[0], x[2] - x[1]).norm();
         return {measure, centre};
       }
 
-      /** Every face of the mesh's cells: its blocks (one or two) and geometry. */
+      /** Every face of the mesh's cells: its blocks (one or two) and geometry.
+       */
       template <int dim>
       struct FaceTable
       {
@@ -104,8 +111,8 @@ namespace fdem
           double       measure = 0;
           Point<dim>   centre;
         };
-        std::vector<unsigned int>  merged;
-        std::map<FaceKey, Face>    faces;
+        std::vector<unsigned int> merged;
+        std::map<FaceKey, Face>   faces;
         /** Face groups of each face in mesh.faces. */
         std::map<FaceKey, std::set<types::boundary_id>> groups;
 
@@ -114,19 +121,24 @@ namespace fdem
         {
           for (const auto &cell : mesh.cells)
             {
-              const ReferenceCell shape = ReferenceCell::n_vertices_to_type(dim, cell.vertices.size());
+              const ReferenceCell shape =
+                ReferenceCell::n_vertices_to_type(dim, cell.vertices.size());
               for (const unsigned int f : shape.face_indices())
                 {
                   std::vector<unsigned int> vertices;
-                  for (const unsigned int i : shape.face_reference_cell(f).vertex_indices())
-                    vertices.push_back(cell.vertices[shape.face_to_cell_vertices(f, i, 1)]);
-                  const auto [it, inserted] = faces.emplace(face_key(vertices, merged), Face());
+                  for (const unsigned int i :
+                       shape.face_reference_cell(f).vertex_indices())
+                    vertices.push_back(
+                      cell.vertices[shape.face_to_cell_vertices(f, i, 1)]);
+                  const auto [it, inserted] =
+                    faces.emplace(face_key(vertices, merged), Face());
                   if (inserted)
                     {
                       std::vector<Point<dim>> x;
                       for (const unsigned int v : vertices)
                         x.push_back(mesh.vertices[v]);
-                      std::tie(it->second.measure, it->second.centre) = measure_and_centre(x);
+                      std::tie(it->second.measure, it->second.centre) =
+                        measure_and_centre(x);
                       it->second.block_a = cell.material_id;
                     }
                   else if (it->second.block_a != cell.material_id)
@@ -172,22 +184,26 @@ namespace fdem
     template <int dim>
     std::vector<std::string>
     check_mesh_layout(const geometry::MeshDescription<dim> &mesh,
-                      const std::vector<std::string> &      interface_names,
-                      const std::vector<std::string> &      boundary_names)
+                      const std::vector<std::string>       &interface_names,
+                      const std::vector<std::string>       &boundary_names)
     {
-      const FaceTable<dim> table(mesh);
+      const FaceTable<dim>         table(mesh);
       std::set<types::boundary_id> declared;
       for (unsigned int g = 0; g < mesh.face_group_names.size(); ++g)
-        if (std::count(interface_names.begin(), interface_names.end(), mesh.face_group_names[g]) ||
-            std::count(boundary_names.begin(), boundary_names.end(), mesh.face_group_names[g]))
+        if (std::count(interface_names.begin(),
+                       interface_names.end(),
+                       mesh.face_group_names[g]) ||
+            std::count(boundary_names.begin(),
+                       boundary_names.end(),
+                       mesh.face_group_names[g]))
           declared.insert(g);
 
       // Undeclared faces between two blocks, gathered per pair of blocks.
       struct Stretch
       {
-        double                  measure = 0;
-        Point<dim>              weighted_centre;
-        std::vector<Point<dim>> centres;
+        double                       measure = 0;
+        Point<dim>                   weighted_centre;
+        std::vector<Point<dim>>      centres;
         std::set<types::boundary_id> groups;
       };
       std::map<std::pair<unsigned int, unsigned int>, Stretch> stretches;
@@ -197,7 +213,8 @@ namespace fdem
             continue;
           const auto it = table.groups.find(key);
           if (it != table.groups.end() &&
-              std::any_of(it->second.begin(), it->second.end(),
+              std::any_of(it->second.begin(),
+                          it->second.end(),
                           [&](const auto g) { return declared.count(g) > 0; }))
             continue;
           Stretch &stretch = stretches[std::minmax(face.block_a, face.block_b)];
@@ -209,49 +226,62 @@ namespace fdem
         }
       if (!stretches.empty())
         {
-          // The largest stretch, located by the face centre nearest to its centroid
-          // (on the faces themselves, also where the stretch is curved).
+          // The largest stretch, located by the face centre nearest to its
+          // centroid (on the faces themselves, also where the stretch is
+          // curved).
           const auto &[blocks, stretch] =
-            *std::max_element(stretches.begin(), stretches.end(), [](const auto &a, const auto &b) {
-              return a.second.measure < b.second.measure;
-            });
+            *std::max_element(stretches.begin(),
+                              stretches.end(),
+                              [](const auto &a, const auto &b) {
+                                return a.second.measure < b.second.measure;
+                              });
           const Point<dim> centroid = stretch.weighted_centre / stretch.measure;
-          const Point<dim> where    = *std::min_element(
-            stretch.centres.begin(), stretch.centres.end(), [&](const auto &a, const auto &b) {
-              return a.distance(centroid) < b.distance(centroid);
-            });
+          const Point<dim> where =
+            *std::min_element(stretch.centres.begin(),
+                              stretch.centres.end(),
+                              [&](const auto &a, const auto &b) {
+                                return a.distance(centroid) <
+                                       b.distance(centroid);
+                              });
           std::string groups;
           for (const auto g : stretch.groups)
-            groups += (groups.empty() ? "" : ", ") + ("'" + mesh.face_group_names[g] + "'");
-          const std::string others =
-            stretches.size() > 1 ? " (and " + std::to_string(stretches.size() - 1) +
-                                     " more pairs of blocks)" :
-                                   "";
-          AssertThrow(false,
-                      ExcMessage("Blocks '" + mesh.block_names[blocks.first] + "' and '" +
-                                 mesh.block_names[blocks.second] + "' of " + mesh.source +
-                                 " share faces of total " + (dim == 2 ? "length " : "area ") +
-                                 number_text(stretch.measure) + " around " + internal::point_text(where) +
-                                 (groups.empty() ? " in no face group" :
-                                                   " in face groups not listed (" + groups + ")") +
-                                 others +
-                                 ": list them under Interfaces/Names for contact, or under "
-                                 "Boundaries/Names to leave an open crack."));
+            groups += (groups.empty() ? "" : ", ") +
+                      ("'" + mesh.face_group_names[g] + "'");
+          const std::string others = stretches.size() > 1 ?
+                                       " (and " +
+                                         std::to_string(stretches.size() - 1) +
+                                         " more pairs of blocks)" :
+                                       "";
+          AssertThrow(
+            false,
+            ExcMessage(
+              "Blocks '" + mesh.block_names[blocks.first] + "' and '" +
+              mesh.block_names[blocks.second] + "' of " + mesh.source +
+              " share faces of total " + (dim == 2 ? "length " : "area ") +
+              number_text(stretch.measure) + " around " +
+              internal::point_text(where) +
+              (groups.empty() ? " in no face group" :
+                                " in face groups not listed (" + groups + ")") +
+              others +
+              ": list them under Interfaces/Names for contact, or under "
+              "Boundaries/Names to leave an open crack."));
         }
       return {};
     }
 
     template <int dim>
     std::vector<std::string>
-    check_interfaces(const geometry::MeshDescription<dim> &                         mesh,
-                     const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
-                     const std::vector<contact::Interface<dim>> &                   interfaces,
-                     const std::map<std::string, parameters::InterfaceParameters> & parameters)
+    check_interfaces(
+      const geometry::MeshDescription<dim>                          &mesh,
+      const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
+      const std::vector<contact::Interface<dim>>                    &interfaces,
+      const std::map<std::string, parameters::InterfaceParameters>  &parameters)
     {
       // The pairs' count and support first: an interface of one pair is
       // better told so than that its sides overlap little.
-      std::vector<std::string> warnings = internal::check_support(blocks, interfaces, parameters);
-      const FaceTable<dim>     table(mesh);
+      std::vector<std::string> warnings =
+        internal::check_support(blocks, interfaces, parameters);
+      const FaceTable<dim> table(mesh);
       for (const auto &interface : interfaces)
         {
           // The face group's measure on each side, and the measure its pairs
@@ -264,9 +294,11 @@ namespace fdem
                 if (it == table.faces.end())
                   continue;
                 const auto &face = it->second;
-                if (face.block_a == interface.block_I || face.block_b == interface.block_I)
+                if (face.block_a == interface.block_I ||
+                    face.block_b == interface.block_I)
                   side_I += face.measure;
-                if (face.block_a == interface.block_J || face.block_b == interface.block_J)
+                if (face.block_a == interface.block_J ||
+                    face.block_b == interface.block_J)
                   side_J += face.measure;
               }
           double paired = 0;
@@ -274,32 +306,35 @@ namespace fdem
             paired += pair.area;
           for (const auto &shared : interface.shared_nodes)
             paired += shared.area;
-          const double shorter = std::min(side_I, side_J);
+          const double      shorter = std::min(side_I, side_J);
           const std::string measures =
-            std::string(dim == 2 ? "length" : "area") + " " + number_text(paired) +
-            " against " + number_text(side_I) + " on '" + blocks[interface.block_I]->name +
-            "' and " + number_text(side_J) + " on '" + blocks[interface.block_J]->name + "'";
+            std::string(dim == 2 ? "length" : "area") + " " +
+            number_text(paired) + " against " + number_text(side_I) + " on '" +
+            blocks[interface.block_I]->name + "' and " + number_text(side_J) +
+            " on '" + blocks[interface.block_J]->name + "'";
           AssertThrow(paired >= 0.5 * shorter,
-                      ExcMessage("Interfaces/" + interface.name +
-                                 ": its two sides face each other over much less than "
-                                 "their extent (its node pairs cover a " + measures +
-                                 "); the blocks touch only in places: check that both "
-                                 "sides of the face group are the same surface, or "
-                                 "raise 'Search distance' if they are apart."));
+                      ExcMessage(
+                        "Interfaces/" + interface.name +
+                        ": its two sides face each other over much less than "
+                        "their extent (its node pairs cover a " +
+                        measures +
+                        "); the blocks touch only in places: check that both "
+                        "sides of the face group are the same surface, or "
+                        "raise 'Search distance' if they are apart."));
           if (paired < 0.9 * shorter)
-            warnings.push_back(postprocess::warning_text("partial-contact",
-                                                         "Interfaces/" + interface.name +
-                                                           ": its node pairs cover only " +
-                                                           number_text(100 * paired / shorter) +
-                                                           " % of its shorter side (" + measures + ")."));
+            warnings.push_back(postprocess::warning_text(
+              "partial-contact",
+              "Interfaces/" + interface.name + ": its node pairs cover only " +
+                number_text(100 * paired / shorter) +
+                " % of its shorter side (" + measures + ")."));
         }
       return warnings;
     }
 
     void
     report(const std::vector<std::string> &found,
-           std::vector<std::string> &      warnings,
-           std::ostream &                  log)
+           std::vector<std::string>       &warnings,
+           std::ostream                   &log)
     {
       for (const std::string &warning : found)
         {
@@ -316,20 +351,24 @@ namespace fdem
     }
 
     template std::vector<std::string>
-    check_mesh_layout(const geometry::MeshDescription<2> &, const std::vector<std::string> &,
+    check_mesh_layout(const geometry::MeshDescription<2> &,
+                      const std::vector<std::string> &,
                       const std::vector<std::string> &);
     template std::vector<std::string>
-    check_mesh_layout(const geometry::MeshDescription<3> &, const std::vector<std::string> &,
+    check_mesh_layout(const geometry::MeshDescription<3> &,
+                      const std::vector<std::string> &,
                       const std::vector<std::string> &);
     template std::vector<std::string>
-    check_interfaces(const geometry::MeshDescription<2> &,
-                     const std::vector<std::unique_ptr<blocks::ElasticBlock<2>>> &,
-                     const std::vector<contact::Interface<2>> &,
-                     const std::map<std::string, parameters::InterfaceParameters> &);
+    check_interfaces(
+      const geometry::MeshDescription<2> &,
+      const std::vector<std::unique_ptr<blocks::ElasticBlock<2>>> &,
+      const std::vector<contact::Interface<2>> &,
+      const std::map<std::string, parameters::InterfaceParameters> &);
     template std::vector<std::string>
-    check_interfaces(const geometry::MeshDescription<3> &,
-                     const std::vector<std::unique_ptr<blocks::ElasticBlock<3>>> &,
-                     const std::vector<contact::Interface<3>> &,
-                     const std::map<std::string, parameters::InterfaceParameters> &);
+    check_interfaces(
+      const geometry::MeshDescription<3> &,
+      const std::vector<std::unique_ptr<blocks::ElasticBlock<3>>> &,
+      const std::vector<contact::Interface<3>> &,
+      const std::map<std::string, parameters::InterfaceParameters> &);
   } // namespace checks
 } // namespace fdem

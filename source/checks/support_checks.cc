@@ -27,14 +27,15 @@ namespace fdem
        * equations stay regular.
        */
       double
-      nnls_residual(const std::vector<Vector<double>> &columns, const Vector<double> &b)
+      nnls_residual(const std::vector<Vector<double>> &columns,
+                    const Vector<double>              &b)
       {
-        const unsigned int        n = columns.size();
-        std::vector<double>       x(n, 0.0);
-        std::vector<bool>         passive(n, false), excluded(n, false);
-        Vector<double>            residual(b);
-        const double              tolerance = 1e-12 * std::max(b.l2_norm(), 1e-300);
-        const auto                passive_set = [&]() {
+        const unsigned int  n = columns.size();
+        std::vector<double> x(n, 0.0);
+        std::vector<bool>   passive(n, false), excluded(n, false);
+        Vector<double>      residual(b);
+        const double        tolerance   = 1e-12 * std::max(b.l2_norm(), 1e-300);
+        const auto          passive_set = [&]() {
           std::vector<unsigned int> set;
           for (unsigned int j = 0; j < n; ++j)
             if (passive[j])
@@ -58,7 +59,8 @@ namespace fdem
         };
         for (unsigned int outer = 0; outer < 3 * n + 10; ++outer)
           {
-            // The column most downhill, among those independent of the passive set.
+            // The column most downhill, among those independent of the passive
+            // set.
             int    best   = -1;
             double best_w = tolerance;
             for (unsigned int j = 0; j < n; ++j)
@@ -100,7 +102,9 @@ namespace fdem
               {
                 const std::vector<unsigned int> set = passive_set();
                 const Vector<double>            z   = least_squares(set);
-                if (std::all_of(z.begin(), z.end(), [](const double v) { return v > 0; }))
+                if (std::all_of(z.begin(), z.end(), [](const double v) {
+                      return v > 0;
+                    }))
                   {
                     for (unsigned int i = 0; i < set.size(); ++i)
                       x[set[i]] = z[i];
@@ -134,15 +138,19 @@ namespace fdem
 
     template <int dim>
     std::vector<std::string>
-    pair_triple_points_once(std::vector<contact::Interface<dim>> &                         interfaces,
-                            const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks)
+    pair_triple_points_once(
+      std::vector<contact::Interface<dim>>                          &interfaces,
+      const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks)
     {
       // Union-find over the paired nodes (block, first dof): a pair whose two
       // nodes are already joined through earlier pairs closes a loop.
-      std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int> node_index;
-      std::vector<unsigned int>                                               parent;
-      const auto node = [&](const unsigned int block, const types::global_dof_index dof) {
-        const auto [it, inserted] = node_index.emplace(std::make_pair(block, dof), parent.size());
+      std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
+                                node_index;
+      std::vector<unsigned int> parent;
+      const auto                node = [&](const unsigned int            block,
+                            const types::global_dof_index dof) {
+        const auto [it, inserted] =
+          node_index.emplace(std::make_pair(block, dof), parent.size());
         if (inserted)
           parent.push_back(parent.size());
         return it->second;
@@ -156,21 +164,24 @@ namespace fdem
       std::vector<std::vector<unsigned int>> new_index(interfaces.size());
       for (unsigned int i = 0; i < interfaces.size(); ++i)
         {
-          auto &                           interface = interfaces[i];
+          auto                               &interface = interfaces[i];
           std::vector<contact::NodePair<dim>> kept;
           for (const auto &pair : interface.pairs)
             {
-              const unsigned int a = root(node(interface.block_I, pair.dofs_I[0]));
-              const unsigned int b = root(node(interface.block_J, pair.dofs_J[0]));
+              const unsigned int a =
+                root(node(interface.block_I, pair.dofs_I[0]));
+              const unsigned int b =
+                root(node(interface.block_J, pair.dofs_J[0]));
               if (a == b)
                 {
                   new_index[i].push_back(numbers::invalid_unsigned_int);
-                  removed.push_back("  interface '" + interface.name + "': the pair at " +
-                                    internal::point_text(pair.position_J) + " between '" +
-                                    blocks[interface.block_I]->name + "' and '" +
-                                    blocks[interface.block_J]->name +
-                                    "' is left out: its nodes are joined through pairs "
-                                    "of interfaces listed before it (blocks meet there)");
+                  removed.push_back(
+                    "  interface '" + interface.name + "': the pair at " +
+                    internal::point_text(pair.position_J) + " between '" +
+                    blocks[interface.block_I]->name + "' and '" +
+                    blocks[interface.block_J]->name +
+                    "' is left out: its nodes are joined through pairs "
+                    "of interfaces listed before it (blocks meet there)");
                   continue;
                 }
               parent[a] = b;
@@ -179,13 +190,16 @@ namespace fdem
             }
           interface.pairs = kept;
           AssertThrow(!interface.pairs.empty(),
-                      ExcMessage("Interfaces/" + interface.name +
-                                 ": all its node pairs are joined through interfaces "
-                                 "listed before it."));
-          // Nodes paired in an earlier interface point at that interface's pairs.
+                      ExcMessage(
+                        "Interfaces/" + interface.name +
+                        ": all its node pairs are joined through interfaces "
+                        "listed before it."));
+          // Nodes paired in an earlier interface point at that interface's
+          // pairs.
           std::vector<typename contact::Interface<dim>::SharedNode> shared;
           for (auto node : interface.shared_nodes)
-            if (new_index[node.interface][node.pair] != numbers::invalid_unsigned_int)
+            if (new_index[node.interface][node.pair] !=
+                numbers::invalid_unsigned_int)
               {
                 node.pair = new_index[node.interface][node.pair];
                 shared.push_back(node);
@@ -200,9 +214,11 @@ namespace fdem
     {
       template <int dim>
       std::vector<std::string>
-      check_support(const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
-                    const std::vector<contact::Interface<dim>> &                   interfaces,
-                    const std::map<std::string, parameters::InterfaceParameters> & parameters)
+      check_support(
+        const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
+        const std::vector<contact::Interface<dim>> &interfaces,
+        const std::map<std::string, parameters::InterfaceParameters>
+          &parameters)
       {
         // Enough pairs to carry a moment: two places in 2D, three not on a
         // line in 3D (nodes paired in an earlier interface count here).
@@ -212,7 +228,8 @@ namespace fdem
             for (const auto &pair : interface.pairs)
               places.push_back(pair.position_J);
             for (const auto &shared : interface.shared_nodes)
-              places.push_back(interfaces[shared.interface].pairs[shared.pair].position_J);
+              places.push_back(
+                interfaces[shared.interface].pairs[shared.pair].position_J);
             double size = 0;
             for (const auto &x : places)
               size = std::max(size, x.distance(places[0]));
@@ -222,35 +239,45 @@ namespace fdem
                 n_independent = 2;
                 if constexpr (dim == 3)
                   {
-                    // The farthest from places[0], then the farthest from that line.
-                    const Point<3> far = *std::max_element(
-                      places.begin(), places.end(), [&](const auto &a, const auto &b) {
-                        return a.distance(places[0]) < b.distance(places[0]);
-                      });
-                    const Tensor<1, 3> axis = (far - places[0]) / far.distance(places[0]);
-                    double            off  = 0;
+                    // The farthest from places[0], then the farthest from that
+                    // line.
+                    const Point<3> far =
+                      *std::max_element(places.begin(),
+                                        places.end(),
+                                        [&](const auto &a, const auto &b) {
+                                          return a.distance(places[0]) <
+                                                 b.distance(places[0]);
+                                        });
+                    const Tensor<1, 3> axis =
+                      (far - places[0]) / far.distance(places[0]);
+                    double off = 0;
                     for (const auto &x : places)
-                      off = std::max(off, cross_product_3d(x - places[0], axis).norm());
+                      off =
+                        std::max(off,
+                                 cross_product_3d(x - places[0], axis).norm());
                     if (off > 1e-6 * size)
                       n_independent = 3;
                   }
               }
-            AssertThrow(n_independent >= dim,
-                        ExcMessage("Interfaces/" + interface.name + ": its node pairs (" +
-                                   std::to_string(places.size()) +
-                                   ") cannot carry a moment; an interface needs at least " +
-                                   (dim == 2 ? "2 pairs" : "3 pairs not on one line") +
-                                   ": check that its sides meet over more than a point, "
-                                   "or refine the mesh along it."));
+            AssertThrow(
+              n_independent >= dim,
+              ExcMessage(
+                "Interfaces/" + interface.name + ": its node pairs (" +
+                std::to_string(places.size()) +
+                ") cannot carry a moment; an interface needs at least " +
+                (dim == 2 ? "2 pairs" : "3 pairs not on one line") +
+                ": check that its sides meet over more than a point, "
+                "or refine the mesh along it."));
           }
 
         // A free block held only by frictionless interfaces: its load on the
         // free modes, omega^T F, must lie in the cone of what the pairs' normal
         // forces can do on those modes (with the neighbours held fixed, which
-        // only helps). Compression pushes block I along n and block J against it.
+        // only helps). Compression pushes block I along n and block J against
+        // it.
         for (unsigned int b = 0; b < blocks.size(); ++b)
           {
-            const auto &       block = *blocks[b];
+            const auto        &block = *blocks[b];
             const unsigned int m     = block.n_free_rigid_modes();
             if (m == 0)
               continue;
@@ -261,19 +288,21 @@ namespace fdem
               {
                 if (interface.block_I != b && interface.block_J != b)
                   continue;
-                touched = true;
+                touched       = true;
                 const auto &p = parameters.at(interface.name);
                 frictionless  = frictionless && p.frictionless;
                 names += (names.empty() ? "'" : ", '") + interface.name + "'";
                 for (const auto &pair : interface.pairs)
                   {
-                    const bool      on_I = interface.block_I == b;
-                    Vector<double>  column(m);
+                    const bool     on_I = interface.block_I == b;
+                    Vector<double> column(m);
                     for (unsigned int k = 0; k < m; ++k)
-                      column[k] = (on_I ? 1 : -1) *
-                                  (block.free_mode_displacement(k, on_I ? pair.position_I :
-                                                                          pair.position_J) *
-                                   pair.frame[0]);
+                      column[k] =
+                        (on_I ? 1 : -1) *
+                        (block.free_mode_displacement(k,
+                                                      on_I ? pair.position_I :
+                                                             pair.position_J) *
+                         pair.frame[0]);
                     if (column.l2_norm() == 0)
                       continue;
                     column /= column.l2_norm();
@@ -296,33 +325,39 @@ namespace fdem
             std::ostringstream share;
             share.precision(3);
             share << 100 * left;
-            AssertThrow(left < 1e-6,
-                        ExcMessage("Block '" + block.name +
-                                   "' is held only by frictionless interfaces (" + names +
-                                   ") whose normal forces cannot balance its load (" +
-                                   share.str() +
-                                   " % of the load on its free rigid motions is left over "
-                                   "even with its neighbours fixed): give an interface "
-                                   "friction, or a boundary condition that holds it."));
+            AssertThrow(
+              left < 1e-6,
+              ExcMessage(
+                "Block '" + block.name +
+                "' is held only by frictionless interfaces (" + names +
+                ") whose normal forces cannot balance its load (" +
+                share.str() +
+                " % of the load on its free rigid motions is left over "
+                "even with its neighbours fixed): give an interface "
+                "friction, or a boundary condition that holds it."));
           }
         return {};
       }
 
       template std::vector<std::string>
-      check_support(const std::vector<std::unique_ptr<blocks::ElasticBlock<2>>> &,
-                    const std::vector<contact::Interface<2>> &,
-                    const std::map<std::string, parameters::InterfaceParameters> &);
+      check_support(
+        const std::vector<std::unique_ptr<blocks::ElasticBlock<2>>> &,
+        const std::vector<contact::Interface<2>> &,
+        const std::map<std::string, parameters::InterfaceParameters> &);
       template std::vector<std::string>
-      check_support(const std::vector<std::unique_ptr<blocks::ElasticBlock<3>>> &,
-                    const std::vector<contact::Interface<3>> &,
-                    const std::map<std::string, parameters::InterfaceParameters> &);
+      check_support(
+        const std::vector<std::unique_ptr<blocks::ElasticBlock<3>>> &,
+        const std::vector<contact::Interface<3>> &,
+        const std::map<std::string, parameters::InterfaceParameters> &);
     } // namespace internal
 
     template std::vector<std::string>
-    pair_triple_points_once(std::vector<contact::Interface<2>> &,
-                            const std::vector<std::unique_ptr<blocks::ElasticBlock<2>>> &);
+    pair_triple_points_once(
+      std::vector<contact::Interface<2>> &,
+      const std::vector<std::unique_ptr<blocks::ElasticBlock<2>>> &);
     template std::vector<std::string>
-    pair_triple_points_once(std::vector<contact::Interface<3>> &,
-                            const std::vector<std::unique_ptr<blocks::ElasticBlock<3>>> &);
+    pair_triple_points_once(
+      std::vector<contact::Interface<3>> &,
+      const std::vector<std::unique_ptr<blocks::ElasticBlock<3>>> &);
   } // namespace checks
 } // namespace fdem

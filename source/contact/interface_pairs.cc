@@ -2,10 +2,9 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/contact/interface_pairs.h>
 
-#include <algorithm>
-
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fdem
@@ -34,8 +33,8 @@ namespace fdem
               if (std::abs(n[d]) < std::abs(n[axis]))
                 axis = d;
             Tensor<1, 3> e;
-            e[axis]               = 1;
-            Tensor<1, 3> t1       = e - (e * n) * n;
+            e[axis]         = 1;
+            Tensor<1, 3> t1 = e - (e * n) * n;
             t1 /= t1.norm();
             frame[1] = t1;
             frame[2] = cross_product_3d(n, t1);
@@ -54,13 +53,13 @@ namespace fdem
 
     template <int dim>
     Interface<dim>
-    make_interface(const std::string &               name,
-                   const types::boundary_id          face_group,
-                   const unsigned int                index_I,
-                   const blocks::ElasticBlock<dim> & block_I,
-                   const unsigned int                index_J,
-                   const blocks::ElasticBlock<dim> & block_J,
-                   const double                      search_distance)
+    make_interface(const std::string               &name,
+                   const types::boundary_id         face_group,
+                   const unsigned int               index_I,
+                   const blocks::ElasticBlock<dim> &block_I,
+                   const unsigned int               index_J,
+                   const blocks::ElasticBlock<dim> &block_J,
+                   const double                     search_distance)
     {
       Interface<dim> interface;
       interface.name       = name;
@@ -91,11 +90,11 @@ namespace fdem
             {
               if (used_J[j])
                 continue;
-              const auto &         b = nodes_J[j];
-              const Tensor<1, dim> n = b.area_normal / b.area_normal.norm();
-              const Tensor<1, dim> d = a.position - b.position;
+              const auto          &b   = nodes_J[j];
+              const Tensor<1, dim> n   = b.area_normal / b.area_normal.norm();
+              const Tensor<1, dim> d   = a.position - b.position;
               const double         gap = d * n;
-              const double tolerance   = 1e-6 * node_spacing<dim>(b.area);
+              const double         tolerance = 1e-6 * node_spacing<dim>(b.area);
               if ((d - gap * n).norm() > tolerance || gap < -tolerance ||
                   gap > search_distance + tolerance)
                 continue;
@@ -110,16 +109,16 @@ namespace fdem
               ++interface.n_unpaired_I;
               continue;
             }
-          used_J[best]      = true;
-          const auto &b     = nodes_J[best];
+          used_J[best]    = true;
+          const auto   &b = nodes_J[best];
           NodePair<dim> pair;
-          pair.position_I   = a.position;
-          pair.position_J   = b.position;
-          pair.dofs_I       = a.dofs;
-          pair.dofs_J       = b.dofs;
-          pair.frame        = local_frame<dim>(b.area_normal / b.area_normal.norm());
-          pair.area         = b.area;
-          pair.initial_gap  = std::max(0.0, best_gap);
+          pair.position_I = a.position;
+          pair.position_J = b.position;
+          pair.dofs_I     = a.dofs;
+          pair.dofs_J     = b.dofs;
+          pair.frame = local_frame<dim>(b.area_normal / b.area_normal.norm());
+          pair.area  = b.area;
+          pair.initial_gap = std::max(0.0, best_gap);
           interface.pairs.push_back(pair);
         }
       for (unsigned int j = 0; j < nodes_J.size(); ++j)
@@ -145,7 +144,8 @@ namespace fdem
           for (unsigned int k = 0; k < interfaces[i].pairs.size(); ++k)
             {
               const auto &other = interfaces[i].pairs[k];
-              if (interfaces[i].block_I == last.block_I && interfaces[i].block_J == last.block_J &&
+              if (interfaces[i].block_I == last.block_I &&
+                  interfaces[i].block_J == last.block_J &&
                   other.dofs_I == pair.dofs_I && other.dofs_J == pair.dofs_J)
                 {
                   last.shared_nodes.push_back({i, k, pair.area});
@@ -154,7 +154,9 @@ namespace fdem
             }
         return false;
       };
-      last.pairs.erase(std::remove_if(last.pairs.begin(), last.pairs.end(), paired_before),
+      last.pairs.erase(std::remove_if(last.pairs.begin(),
+                                      last.pairs.end(),
+                                      paired_before),
                        last.pairs.end());
       last.n_shared_nodes = last.shared_nodes.size();
     }
@@ -164,12 +166,20 @@ namespace fdem
     template void
     remove_pairs_of_earlier_interfaces(std::vector<Interface<3>> &);
     template Interface<2>
-    make_interface(const std::string &, const types::boundary_id, const unsigned int,
-                   const blocks::ElasticBlock<2> &, const unsigned int,
-                   const blocks::ElasticBlock<2> &, const double);
+    make_interface(const std::string &,
+                   const types::boundary_id,
+                   const unsigned int,
+                   const blocks::ElasticBlock<2> &,
+                   const unsigned int,
+                   const blocks::ElasticBlock<2> &,
+                   const double);
     template Interface<3>
-    make_interface(const std::string &, const types::boundary_id, const unsigned int,
-                   const blocks::ElasticBlock<3> &, const unsigned int,
-                   const blocks::ElasticBlock<3> &, const double);
+    make_interface(const std::string &,
+                   const types::boundary_id,
+                   const unsigned int,
+                   const blocks::ElasticBlock<3> &,
+                   const unsigned int,
+                   const blocks::ElasticBlock<3> &,
+                   const double);
   } // namespace contact
 } // namespace fdem

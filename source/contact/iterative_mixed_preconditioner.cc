@@ -26,7 +26,7 @@ namespace fdem
     IterativeMixedSolver<dim>::setup_preconditioner()
     {
       const FullMatrix<double> &rigid_coupling = system.rigid_coupling;
-      const SystemScales &      scales         = system.scales;
+      const SystemScales       &scales         = system.scales;
       const unsigned int        n_pairs        = system.n_pairs();
       const unsigned int        n_forces       = dim * n_pairs;
       const unsigned int        n_rigid        = system.n_rigid_unknowns();
@@ -48,13 +48,15 @@ namespace fdem
           for (unsigned int r = 0; r < n_rigid; ++r)
             for (unsigned int c = 0; c < n_rigid; ++c)
               WW_scaled(r, c) = WW(r, c) / (scales.rigid[r] * scales.rigid[c]);
-          if (linear_algebra::DenseLU(WW_scaled).reciprocal_condition_number() > 1e-12)
+          if (linear_algebra::DenseLU(WW_scaled).reciprocal_condition_number() >
+              1e-12)
             {
               std::vector<Vector<double>> W(n_rigid, Vector<double>(n_forces));
               for (unsigned int r = 0; r < n_rigid; ++r)
                 for (unsigned int j = 0; j < n_forces; ++j)
                   W[r][j] = rigid_coupling(j, r);
-              const std::vector<Vector<double>> CW = system.flexibility_products(W);
+              const std::vector<Vector<double>> CW =
+                system.flexibility_products(W);
               // B = W (W^T W)^{-1} (n_forces x n_rigid), X = W^T C W.
               FullMatrix<double> B(n_forces, n_rigid), X(n_rigid, n_rigid);
               for (unsigned int j = 0; j < n_forces; ++j)
@@ -107,8 +109,10 @@ namespace fdem
       // per coarse vector, in blocks of right-hand sides. (On the block on a
       // plane at 625 pairs, groups of 16 took the GMRES iterations of an
       // all-stick solve from 104 to 57, groups of 9 to 48.)
-      const unsigned int max_size = std::max(
-        16u, static_cast<unsigned int>(std::ceil(std::sqrt(static_cast<double>(n_pairs)) / 2)));
+      const unsigned int max_size =
+        std::max(16u,
+                 static_cast<unsigned int>(
+                   std::ceil(std::sqrt(static_cast<double>(n_pairs)) / 2)));
       std::vector<unsigned int> order(n_pairs);
       for (unsigned int p = 0; p < n_pairs; ++p)
         order[p] = p;
@@ -126,8 +130,9 @@ namespace fdem
           for (unsigned int k = begin; k < end; ++k)
             for (unsigned int d = 0; d < dim; ++d)
               {
-                low[d]  = std::min(low[d], system.pair(order[k]).position_I[d]);
-                high[d] = std::max(high[d], system.pair(order[k]).position_I[d]);
+                low[d] = std::min(low[d], system.pair(order[k]).position_I[d]);
+                high[d] =
+                  std::max(high[d], system.pair(order[k]).position_I[d]);
               }
           unsigned int axis = 0;
           for (unsigned int d = 1; d < dim; ++d)
@@ -138,7 +143,8 @@ namespace fdem
                            order.begin() + middle,
                            order.begin() + end,
                            [&](const unsigned int a, const unsigned int b) {
-                             return system.pair(a).position_I[axis] < system.pair(b).position_I[axis];
+                             return system.pair(a).position_I[axis] <
+                                    system.pair(b).position_I[axis];
                            });
           bisect(begin, middle);
           bisect(middle, end);
@@ -150,7 +156,8 @@ namespace fdem
       // leaves the resultants on the free blocks, which the rigid rows fix,
       // alone.
       const unsigned int          n_indicators = dim * n_groups;
-      std::vector<Vector<double>> indicators(n_indicators, Vector<double>(n_forces));
+      std::vector<Vector<double>> indicators(n_indicators,
+                                             Vector<double>(n_forces));
       for (unsigned int p = 0; p < n_pairs; ++p)
         for (unsigned int i = 0; i < dim; ++i)
           indicators[dim * pair_group[p] + i][dim * p + i] = 1;
@@ -176,12 +183,14 @@ namespace fdem
         largest = std::max(largest, gram(a, a));
       Vector<double>     eigenvalues;
       FullMatrix<double> eigenvectors;
-      gram.compute_eigenvalues_symmetric(1e-10 * largest, 2 * n_pairs, 0, eigenvalues, eigenvectors);
+      gram.compute_eigenvalues_symmetric(
+        1e-10 * largest, 2 * n_pairs, 0, eigenvalues, eigenvectors);
       const unsigned int          n_coarse = eigenvalues.size();
       std::vector<Vector<double>> Z(n_coarse, Vector<double>(n_forces));
       for (unsigned int c = 0; c < n_coarse; ++c)
         for (unsigned int a = 0; a < n_indicators; ++a)
-          Z[c].add(eigenvectors(a, c) / std::sqrt(eigenvalues[c]), indicators[a]);
+          Z[c].add(eigenvectors(a, c) / std::sqrt(eigenvalues[c]),
+                   indicators[a]);
       const std::vector<Vector<double>> CZ = system.flexibility_products(Z);
       coarse_basis.reinit(n_forces, n_coarse);
       coarse_flexibility.reinit(n_forces, n_coarse);

@@ -60,15 +60,15 @@ namespace fdem
     ContactSolution
     IterativeMixedSolver<dim>::solve(const std::vector<PairRows<dim>> &rows)
     {
-      const Vector<double> &    external_gap     = system.external_gap;
-      const Vector<double> &    rigid_loads      = system.rigid_loads;
-      const FullMatrix<double> &rigid_coupling   = system.rigid_coupling;
-      const SystemScales &      scales           = system.scales;
-      const double              mean_flexibility = system.mean_self_flexibility();
-      const unsigned int        n_forces         = external_gap.size();
-      const unsigned int        n_rigid          = rigid_loads.size();
-      const unsigned int        n                = n_forces + n_rigid;
-      const unsigned int        n_pairs          = system.n_pairs();
+      const Vector<double>     &external_gap   = system.external_gap;
+      const Vector<double>     &rigid_loads    = system.rigid_loads;
+      const FullMatrix<double> &rigid_coupling = system.rigid_coupling;
+      const SystemScales       &scales         = system.scales;
+      const double       mean_flexibility      = system.mean_self_flexibility();
+      const unsigned int n_forces              = external_gap.size();
+      const unsigned int n_rigid               = rigid_loads.size();
+      const unsigned int n                     = n_forces + n_rigid;
+      const unsigned int n_pairs               = system.n_pairs();
       // gamma_r = rigid_scale[r] x_r: x_r = gamma_r w_r / c_0 is a force.
       std::vector<double> rigid_scale(n_rigid);
       for (unsigned int r = 0; r < n_rigid; ++r)
@@ -90,33 +90,34 @@ namespace fdem
       for (unsigned int r = 0; r < n_rigid; ++r)
         rhs[n_forces + r] = -rigid_loads[r];
 
-      const FunctionOperator mixed_operator{[&](Vector<double> &y, const Vector<double> &x) {
-        Vector<double> f(n_forces), gamma(n_rigid), d(n_forces), w(n_forces);
-        for (unsigned int i = 0; i < n_forces; ++i)
-          f[i] = x[i];
-        for (unsigned int r = 0; r < n_rigid; ++r)
-          gamma[r] = rigid_scale[r] * x[n_forces + r];
-        d = system.flexibility_products({f})[0];
-        rigid_coupling.vmult(w, gamma);
-        d -= w;
-        y.reinit(n);
-        for (unsigned int p = 0; p < n_pairs; ++p)
-          for (unsigned int i = 0; i < dim; ++i)
+      const FunctionOperator mixed_operator{
+        [&](Vector<double> &y, const Vector<double> &x) {
+          Vector<double> f(n_forces), gamma(n_rigid), d(n_forces), w(n_forces);
+          for (unsigned int i = 0; i < n_forces; ++i)
+            f[i] = x[i];
+          for (unsigned int r = 0; r < n_rigid; ++r)
+            gamma[r] = rigid_scale[r] * x[n_forces + r];
+          d = system.flexibility_products({f})[0];
+          rigid_coupling.vmult(w, gamma);
+          d -= w;
+          y.reinit(n);
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                double value = 0;
+                for (unsigned int k = 0; k < dim; ++k)
+                  value += rows[p].gap[i][k] * d[dim * p + k] +
+                           rows[p].force[i][k] * f[dim * p + k];
+                y[dim * p + i] = value;
+              }
+          if (n_rigid > 0)
             {
-              double value = 0;
-              for (unsigned int k = 0; k < dim; ++k)
-                value += rows[p].gap[i][k] * d[dim * p + k] +
-                         rows[p].force[i][k] * f[dim * p + k];
-              y[dim * p + i] = value;
+              Vector<double> load(n_rigid);
+              rigid_coupling.Tvmult(load, f);
+              for (unsigned int r = 0; r < n_rigid; ++r)
+                y[n_forces + r] = -load[r];
             }
-        if (n_rigid > 0)
-          {
-            Vector<double> load(n_rigid);
-            rigid_coupling.Tvmult(load, f);
-            for (unsigned int r = 0; r < n_rigid; ++r)
-              y[n_forces + r] = -load[r];
-          }
-      }};
+        }};
 
       // The preconditioner: M_p^{-1}, H_p = M_p^{-1} G_p W'_p (W' = W
       // diag(rigid_scale)), and S = diag(1/w) sum_p W_p^T H_p (dimensionless).
@@ -126,7 +127,8 @@ namespace fdem
       FullMatrix<double>          H(n_forces, n_rigid);
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
-          const Tensor<2, dim> M   = rows[p].gap * projected_self_flexibility[p] + rows[p].force;
+          const Tensor<2, dim> M =
+            rows[p].gap * projected_self_flexibility[p] + rows[p].force;
           const Tensor<1, dim> rho = row_magnitudes(rows[p], scales);
           Tensor<2, dim>       M_scaled; // rows over rho, columns times F_0
           for (unsigned int i = 0; i < dim; ++i)
@@ -135,14 +137,16 @@ namespace fdem
           const double size = M_scaled.norm();
           // A pair whose block is singular (no such state is known) is
           // preconditioned by the identity: GMRES still solves the true system.
-          M_inverse[p] = std::abs(determinant(M_scaled)) > 1e-14 * std::pow(size, dim) ?
-                           invert(M) :
-                           Tensor<2, dim>(unit_symmetric_tensor<dim>());
+          M_inverse[p] =
+            std::abs(determinant(M_scaled)) > 1e-14 * std::pow(size, dim) ?
+              invert(M) :
+              Tensor<2, dim>(unit_symmetric_tensor<dim>());
           const Tensor<2, dim> MG = M_inverse[p] * rows[p].gap;
           for (unsigned int r = 0; r < n_rigid; ++r)
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int k = 0; k < dim; ++k)
-                H(dim * p + i, r) += MG[i][k] * rigid_scale[r] * rigid_coupling(dim * p + k, r);
+                H(dim * p + i, r) +=
+                  MG[i][k] * rigid_scale[r] * rigid_coupling(dim * p + k, r);
         }
       std::unique_ptr<linear_algebra::DenseLU> rigid_lu;
       solution.reciprocal_condition = 1;
@@ -154,40 +158,42 @@ namespace fdem
             for (unsigned int c = 0; c < n_rigid; ++c)
               S(r, c) /= scales.rigid[r];
           rigid_lu = std::make_unique<linear_algebra::DenseLU>(S);
-          solution.reciprocal_condition = rigid_lu->reciprocal_condition_number();
+          solution.reciprocal_condition =
+            rigid_lu->reciprocal_condition_number();
           // The rigid modes can be held (RigidModeTest): a preconditioner
           // whose rigid part has no inverse is a numerical breakdown.
           if (!rigid_lu->factorized())
             {
-              const double condition        = solution.reciprocal_condition;
-              solution                      = system.unsolved(SolveFailure::numerical);
-              solution.factorized           = false;
+              const double condition = solution.reciprocal_condition;
+              solution               = system.unsolved(SolveFailure::numerical);
+              solution.factorized    = false;
               solution.reciprocal_condition = condition;
               return solution;
             }
         }
 
-      const std::function<void(Vector<double> &, const Vector<double> &)> pair_preconditioner =
-        [&](Vector<double> &z, const Vector<double> &r) {
-        z.reinit(n);
-        Vector<double> t(n_forces), coarse_rhs(n_rigid);
-        for (unsigned int p = 0; p < n_pairs; ++p)
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int k = 0; k < dim; ++k)
-              t[dim * p + i] += M_inverse[p][i][k] * r[dim * p + k];
-        if (n_rigid > 0)
-          {
-            rigid_coupling.Tvmult(coarse_rhs, t);
-            for (unsigned int c = 0; c < n_rigid; ++c)
-              coarse_rhs[c] = (-r[n_forces + c] - coarse_rhs[c]) / scales.rigid[c];
-            rigid_lu->solve(coarse_rhs);
-            H.vmult_add(t, coarse_rhs);
-            for (unsigned int c = 0; c < n_rigid; ++c)
-              z[n_forces + c] = coarse_rhs[c];
-          }
-        for (unsigned int i = 0; i < n_forces; ++i)
-          z[i] = t[i];
-      };
+      const std::function<void(Vector<double> &, const Vector<double> &)>
+        pair_preconditioner = [&](Vector<double> &z, const Vector<double> &r) {
+          z.reinit(n);
+          Vector<double> t(n_forces), coarse_rhs(n_rigid);
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int k = 0; k < dim; ++k)
+                t[dim * p + i] += M_inverse[p][i][k] * r[dim * p + k];
+          if (n_rigid > 0)
+            {
+              rigid_coupling.Tvmult(coarse_rhs, t);
+              for (unsigned int c = 0; c < n_rigid; ++c)
+                coarse_rhs[c] =
+                  (-r[n_forces + c] - coarse_rhs[c]) / scales.rigid[c];
+              rigid_lu->solve(coarse_rhs);
+              H.vmult_add(t, coarse_rhs);
+              for (unsigned int c = 0; c < n_rigid; ++c)
+                z[n_forces + c] = coarse_rhs[c];
+            }
+          for (unsigned int i = 0; i < n_forces; ++i)
+            z[i] = t[i];
+        };
 
       // The coarse correction (A-DEF1, e.g. Tang et al. 2009, J Sci Comput
       // 39, 340-370): with Q = Z E^{-1} Z^T R and E = Z^T R A Z, the
@@ -225,28 +231,30 @@ namespace fdem
       const linear_algebra::DenseLU coarse_lu(E);
       // A coarse problem without a digit left (no such state is known) is
       // left out: the pairs' preconditioner alone is still a preconditioner.
-      const bool coarse = n_coarse > 0 && coarse_lu.reciprocal_condition_number() > 1e-14;
-      const FunctionOperator preconditioner{[&](Vector<double> &z, const Vector<double> &r) {
-        if (!coarse)
-          {
-            pair_preconditioner(z, r);
-            return;
-          }
-        Vector<double> r_forces(n_forces), y(n_coarse), Ay(n_forces);
-        for (unsigned int j = 0; j < n_forces; ++j)
-          r_forces[j] = r[j];
-        RZ.Tvmult(y, r_forces);
-        coarse_lu.solve(y);
-        AZ.vmult(Ay, y);
-        Vector<double> left = r;
-        for (unsigned int j = 0; j < n_forces; ++j)
-          left[j] -= Ay[j];
-        pair_preconditioner(z, left);
-        Vector<double> Zy(n_forces);
-        coarse_basis.vmult(Zy, y);
-        for (unsigned int j = 0; j < n_forces; ++j)
-          z[j] += Zy[j];
-      }};
+      const bool coarse =
+        n_coarse > 0 && coarse_lu.reciprocal_condition_number() > 1e-14;
+      const FunctionOperator preconditioner{
+        [&](Vector<double> &z, const Vector<double> &r) {
+          if (!coarse)
+            {
+              pair_preconditioner(z, r);
+              return;
+            }
+          Vector<double> r_forces(n_forces), y(n_coarse), Ay(n_forces);
+          for (unsigned int j = 0; j < n_forces; ++j)
+            r_forces[j] = r[j];
+          RZ.Tvmult(y, r_forces);
+          coarse_lu.solve(y);
+          AZ.vmult(Ay, y);
+          Vector<double> left = r;
+          for (unsigned int j = 0; j < n_forces; ++j)
+            left[j] -= Ay[j];
+          pair_preconditioner(z, left);
+          Vector<double> Zy(n_forces);
+          coarse_basis.vmult(Zy, y);
+          for (unsigned int j = 0; j < n_forces; ++j)
+            z[j] += Zy[j];
+        }};
 
       // Start from the last solution: between status iterations only the
       // pairs that changed move it.
@@ -256,15 +264,20 @@ namespace fdem
         x = last_iterate;
       Vector<double> preconditioned_rhs(n);
       preconditioner.vmult(preconditioned_rhs, rhs);
-      const double target = system.krylov_control.tolerance * preconditioned_rhs.l2_norm();
+      const double target =
+        system.krylov_control.tolerance * preconditioned_rhs.l2_norm();
       if (target == 0)
         x = 0;
       else
         {
-          SolverControl control(system.krylov_control.max_iterations, target, false, false);
+          SolverControl control(system.krylov_control.max_iterations,
+                                target,
+                                false,
+                                false);
           // Up to 400 Krylov vectors: a restart costs more iterations than
           // the vectors cost memory (n x 400 numbers).
-          typename SolverGMRES<Vector<double>>::AdditionalData data(std::min(n, 400u));
+          typename SolverGMRES<Vector<double>>::AdditionalData data(
+            std::min(n, 400u));
           SolverGMRES<Vector<double>> gmres(control, data);
           try
             {
@@ -272,10 +285,10 @@ namespace fdem
             }
           catch (const SolverControl::NoConvergence &)
             {
-              solution                     = system.unsolved(SolveFailure::numerical);
-              solution.factorized          = false;
+              solution            = system.unsolved(SolveFailure::numerical);
+              solution.factorized = false;
               solution.reciprocal_condition = 0;
-              solution.n_krylov_iterations = control.last_step();
+              solution.n_krylov_iterations  = control.last_step();
               return solution;
             }
           n_iterations = control.last_step();
@@ -286,11 +299,12 @@ namespace fdem
       Vector<double> forces(n_forces);
       for (unsigned int i = 0; i < n_forces; ++i)
         forces[i] = x[i];
-      const double condition          = solution.reciprocal_condition;
-      solution                        = system.solution_from(x, system.flexibility_products({forces})[0]);
-      solution.factorized             = false;
-      solution.reciprocal_condition   = condition;
-      solution.n_krylov_iterations    = n_iterations;
+      const double condition = solution.reciprocal_condition;
+      solution =
+        system.solution_from(x, system.flexibility_products({forces})[0]);
+      solution.factorized           = false;
+      solution.reciprocal_condition = condition;
+      solution.n_krylov_iterations  = n_iterations;
       return solution;
     }
 

@@ -39,7 +39,8 @@ namespace fdem
 
       if (solver_type == MixedSystemSolver::dense)
         flexibility.reinit(n_forces, n_forces);
-      const bool keep_moving = keep_moving_part && solver_type == MixedSystemSolver::dense;
+      const bool keep_moving =
+        keep_moving_part && solver_type == MixedSystemSolver::dense;
       if (keep_moving)
         {
           moving_flexibility.reinit(n_forces, n_forces);
@@ -60,15 +61,18 @@ namespace fdem
                 {
                   touch.pairs.push_back(p);
                   touch.signs.push_back(on_I ? -1.0 : 1.0);
-                  const auto &pair_dofs = on_I ? pairs[p]->dofs_I : pairs[p]->dofs_J;
-                  touch.dofs.insert(touch.dofs.end(), pair_dofs.begin(), pair_dofs.end());
+                  const auto &pair_dofs =
+                    on_I ? pairs[p]->dofs_I : pairs[p]->dofs_J;
+                  touch.dofs.insert(touch.dofs.end(),
+                                    pair_dofs.begin(),
+                                    pair_dofs.end());
                 }
           if (touch.pairs.empty())
             continue;
           const std::vector<unsigned int> &touching = touch.pairs;
-          const std::vector<double> &      sign     = touch.signs;
-          const auto &                     dofs     = touch.dofs;
-          const auto                       local_tensor = [](const FullMatrix<double> &C_b,
+          const std::vector<double>       &sign     = touch.signs;
+          const auto                      &dofs     = touch.dofs;
+          const auto local_tensor = [](const FullMatrix<double> &C_b,
                                        const unsigned int        k,
                                        const unsigned int        l,
                                        const unsigned int        offset_k,
@@ -76,7 +80,8 @@ namespace fdem
             Tensor<2, dim> C_kl;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
-                C_kl[i][j] = C_b(offset_k + dim * k + i, offset_l + dim * l + j);
+                C_kl[i][j] =
+                  C_b(offset_k + dim * k + i, offset_l + dim * l + j);
             return C_kl;
           };
 
@@ -87,34 +92,37 @@ namespace fdem
               for (unsigned int k = 0; k < touching.size(); ++k)
                 for (unsigned int l = 0; l < touching.size(); ++l)
                   {
-                    const Tensor<2, dim> local = sign[k] * sign[l] *
-                                                 pairs[touching[k]]->frame *
-                                                 local_tensor(C_b, k, l, 0, 0) *
-                                                 transpose(pairs[touching[l]]->frame);
+                    const Tensor<2, dim> local =
+                      sign[k] * sign[l] * pairs[touching[k]]->frame *
+                      local_tensor(C_b, k, l, 0, 0) *
+                      transpose(pairs[touching[l]]->frame);
                     for (unsigned int i = 0; i < dim; ++i)
                       for (unsigned int j = 0; j < dim; ++j)
-                        flexibility(dim * touching[k] + i, dim * touching[l] + j) +=
-                          local[i][j];
+                        flexibility(dim * touching[k] + i,
+                                    dim * touching[l] + j) += local[i][j];
                     if (keep_moving && blocks[b]->n_free_rigid_modes() > 0)
                       for (unsigned int i = 0; i < dim; ++i)
                         for (unsigned int j = 0; j < dim; ++j)
-                          moving_flexibility(dim * touching[k] + i, dim * touching[l] + j) +=
+                          moving_flexibility(dim * touching[k] + i,
+                                             dim * touching[l] + j) +=
                             local[i][j];
                   }
             }
           else
             {
               // Only the pairs' own blocks: T_k C_b,kk T_k^T (s_k^2 = 1).
-              std::vector<std::array<types::global_dof_index, dim>> nodes(touching.size());
+              std::vector<std::array<types::global_dof_index, dim>> nodes(
+                touching.size());
               for (unsigned int k = 0; k < touching.size(); ++k)
                 for (unsigned int i = 0; i < dim; ++i)
                   nodes[k][i] = dofs[dim * k + i];
               const std::vector<FullMatrix<double>> C_kk =
                 blocks[b]->flexibility_diagonal_blocks(nodes);
               for (unsigned int k = 0; k < touching.size(); ++k)
-                self_flexibility[touching[k]] += pairs[touching[k]]->frame *
-                                                 local_tensor(C_kk[k], 0, 0, 0, 0) *
-                                                 transpose(pairs[touching[k]]->frame);
+                self_flexibility[touching[k]] +=
+                  pairs[touching[k]]->frame *
+                  local_tensor(C_kk[k], 0, 0, 0, 0) *
+                  transpose(pairs[touching[k]]->frame);
             }
 
           // g_bar: the relative displacement under the external loads.
@@ -124,7 +132,8 @@ namespace fdem
               Tensor<1, dim> u;
               for (unsigned int i = 0; i < dim; ++i)
                 u[i] = u_bar[dofs[dim * k + i]];
-              const Tensor<1, dim> local = -sign[k] * (pairs[touching[k]]->frame * u);
+              const Tensor<1, dim> local =
+                -sign[k] * (pairs[touching[k]]->frame * u);
               for (unsigned int i = 0; i < dim; ++i)
                 external_gap[dim * touching[k] + i] += local[i];
               if (keep_moving && blocks[b]->n_free_rigid_modes() > 0)
@@ -136,13 +145,15 @@ namespace fdem
           for (unsigned int m = 0; m < blocks[b]->n_free_rigid_modes(); ++m)
             {
               const unsigned int column = first_rigid_unknown[b] + m;
-              rigid_loads[column]      = blocks[b]->free_mode_load(m);
+              rigid_loads[column]       = blocks[b]->free_mode_load(m);
               for (unsigned int k = 0; k < touching.size(); ++k)
                 {
                   const NodePair<dim> &pair = *pairs[touching[k]];
-                  const Point<dim> &x = sign[k] < 0 ? pair.position_I : pair.position_J;
+                  const Point<dim>    &x =
+                    sign[k] < 0 ? pair.position_I : pair.position_J;
                   const Tensor<1, dim> local =
-                    -sign[k] * (pair.frame * blocks[b]->free_mode_displacement(m, x));
+                    -sign[k] *
+                    (pair.frame * blocks[b]->free_mode_displacement(m, x));
                   for (unsigned int i = 0; i < dim; ++i)
                     rigid_coupling(dim * touching[k] + i, column) += local[i];
                 }
@@ -180,7 +191,8 @@ namespace fdem
     const IterativeMixedSolver<dim> &
     MixedSystem<dim>::iterative_solver() const
     {
-      AssertThrow(iterative, ExcMessage("This mixed system uses the dense solver."));
+      AssertThrow(iterative,
+                  ExcMessage("This mixed system uses the dense solver."));
       return *iterative;
     }
 
@@ -204,7 +216,7 @@ namespace fdem
           }
       // A direction whose flexibility is 1e-12 of the largest is held: a
       // ratio of flexibilities, the same in any units and for any E.
-      held_flexibility = 1e-12 * max_diagonal;
+      held_flexibility            = 1e-12 * max_diagonal;
       const unsigned int n_forces = dim * pairs.size();
       const unsigned int n_rigid  = rigid_loads.size();
       if (sum_diagonal > 0)
@@ -224,7 +236,8 @@ namespace fdem
         {
           base_force_scale = 0;
           for (const auto &block : blocks)
-            base_force_scale = std::max(base_force_scale, block->load_vector.l1_norm());
+            base_force_scale =
+              std::max(base_force_scale, block->load_vector.l1_norm());
         }
       scales.force = base_force_scale;
       if (!(scales.force > 0))
@@ -247,9 +260,11 @@ namespace fdem
     void
     MixedSystem<dim>::set_moving_compliance_scale(const double scale)
     {
-      AssertThrow(can_scale_moving_compliance(),
-                  ExcMessage("The moving blocks' compliance can be scaled only in a dense "
-                             "mixed system that kept its moving part."));
+      AssertThrow(
+        can_scale_moving_compliance(),
+        ExcMessage(
+          "The moving blocks' compliance can be scaled only in a dense "
+          "mixed system that kept its moving part."));
       const double change = scale - moving_compliance_scale;
       flexibility.add(change, moving_flexibility);
       base_external_gap.add(change, moving_external_gap);
@@ -261,13 +276,15 @@ namespace fdem
 
     template <int dim>
     typename MixedSystem<dim>::LoadCase
-    MixedSystem<dim>::load_case(const std::vector<Vector<double>> &displacements,
-                                const std::vector<Vector<double>> &loads) const
+    MixedSystem<dim>::load_case(
+      const std::vector<Vector<double>> &displacements,
+      const std::vector<Vector<double>> &loads) const
     {
       AssertDimension(displacements.size(), blocks.size());
       AssertDimension(loads.size(), blocks.size());
       const bool     keep_moving = moving_external_gap.size() > 0;
-      Vector<double> gap(external_gap.size()), moving_gap(keep_moving ? external_gap.size() : 0);
+      Vector<double> gap(external_gap.size()),
+        moving_gap(keep_moving ? external_gap.size() : 0);
       Vector<double> loads_on_modes(rigid_loads.size());
       // The same sums as the constructor's g_bar and omega^T F, for this load.
       for (const BlockTouch &touch : touches)
@@ -278,7 +295,8 @@ namespace fdem
               Tensor<1, dim> u;
               for (unsigned int i = 0; i < dim; ++i)
                 u[i] = displacements[b][touch.dofs[dim * k + i]];
-              const Tensor<1, dim> local = -touch.signs[k] * (pairs[touch.pairs[k]]->frame * u);
+              const Tensor<1, dim> local =
+                -touch.signs[k] * (pairs[touch.pairs[k]]->frame * u);
               for (unsigned int i = 0; i < dim; ++i)
                 {
                   gap[dim * touch.pairs[k] + i] += local[i];
@@ -287,15 +305,17 @@ namespace fdem
                 }
             }
           for (unsigned int m = 0; m < blocks[b]->n_free_rigid_modes(); ++m)
-            loads_on_modes[first_rigid_unknown[b] + m] = blocks[b]->free_mode_load(m, loads[b]);
+            loads_on_modes[first_rigid_unknown[b] + m] =
+              blocks[b]->free_mode_load(m, loads[b]);
         }
       return {std::move(gap), std::move(moving_gap), std::move(loads_on_modes)};
     }
 
     template <int dim>
     unsigned int
-    MixedSystem<dim>::add_load_case(const std::vector<Vector<double>> &displacements,
-                                    const std::vector<Vector<double>> &loads)
+    MixedSystem<dim>::add_load_case(
+      const std::vector<Vector<double>> &displacements,
+      const std::vector<Vector<double>> &loads)
     {
       LoadCase parts = load_case(displacements, loads);
       case_gaps.push_back(std::move(parts.gap));
@@ -306,7 +326,8 @@ namespace fdem
 
     template <int dim>
     void
-    MixedSystem<dim>::replace_load_case(const unsigned int index, const LoadCase &parts)
+    MixedSystem<dim>::replace_load_case(const unsigned int index,
+                                        const LoadCase    &parts)
     {
       AssertIndexRange(index, case_gaps.size());
       AssertDimension(parts.gap.size(), case_gaps[index].size());
@@ -318,7 +339,9 @@ namespace fdem
 
     template <int dim>
     void
-    MixedSystem<dim>::set_load_coefficients(const double base_factor, const std::vector<double> &coefficients)
+    MixedSystem<dim>::set_load_coefficients(
+      const double               base_factor,
+      const std::vector<double> &coefficients)
     {
       AssertThrow(coefficients.size() <= case_gaps.size(),
                   ExcMessage("More load coefficients than load cases."));
@@ -347,7 +370,8 @@ namespace fdem
             external_gap.add(c, case_gaps[k]);
             // A case's g_bar was computed at compliance scale 1.
             if (case_moving_gaps[k].size() > 0 && moving_compliance_scale != 1)
-              external_gap.add(c * (moving_compliance_scale - 1), case_moving_gaps[k]);
+              external_gap.add(c * (moving_compliance_scale - 1),
+                               case_moving_gaps[k]);
             rigid_loads.add(c, case_rigid_loads[k]);
           }
     }
@@ -362,11 +386,13 @@ namespace fdem
 
     template <int dim>
     std::vector<Vector<double>>
-    MixedSystem<dim>::flexibility_products(const std::vector<Vector<double>> &sources)
+    MixedSystem<dim>::flexibility_products(
+      const std::vector<Vector<double>> &sources)
     {
       // C f = sum_b s_k T_k K_b^{-1} (sum_l s_l T_l^T f_l): the load of the
       // pair forces on each block, one solve, its displacements at the pairs.
-      std::vector<Vector<double>> products(sources.size(), Vector<double>(external_gap.size()));
+      std::vector<Vector<double>> products(sources.size(),
+                                           Vector<double>(external_gap.size()));
       for (const BlockTouch &touch : touches)
         blocks[touch.block]->solve_blocked(
           sources.size(),
@@ -377,7 +403,8 @@ namespace fdem
                 Tensor<1, dim>     f;
                 for (unsigned int i = 0; i < dim; ++i)
                   f[i] = sources[c][dim * p + i];
-                const Tensor<1, dim> global = touch.signs[k] * (transpose(pairs[p]->frame) * f);
+                const Tensor<1, dim> global =
+                  touch.signs[k] * (transpose(pairs[p]->frame) * f);
                 for (unsigned int i = 0; i < dim; ++i)
                   load[touch.dofs[dim * k + i]] += global[i];
               }
@@ -389,7 +416,8 @@ namespace fdem
                 Tensor<1, dim>     u_k;
                 for (unsigned int i = 0; i < dim; ++i)
                   u_k[i] = u[touch.dofs[dim * k + i]];
-                const Tensor<1, dim> local = touch.signs[k] * (pairs[p]->frame * u_k);
+                const Tensor<1, dim> local =
+                  touch.signs[k] * (pairs[p]->frame * u_k);
                 for (unsigned int i = 0; i < dim; ++i)
                   products[c][dim * p + i] += local[i];
               }
@@ -409,19 +437,22 @@ namespace fdem
     template <int dim>
     ContactSolution
     MixedSystem<dim>::solve(const std::vector<PairState<dim>> &states,
-                            const std::vector<PairStrength> &  strengths)
+                            const std::vector<PairStrength>   &strengths)
     {
       Assert(states.size() == pairs.size(), ExcInternalError());
       Assert(strengths.size() == pairs.size(), ExcInternalError());
       std::vector<PairRows<dim>> rows(pairs.size());
       for (unsigned int p = 0; p < pairs.size(); ++p)
-        rows[p] = pair_rows(states[p], strengths[p], self_flexibility[p], held_flexibility);
+        rows[p] = pair_rows(states[p],
+                            strengths[p],
+                            self_flexibility[p],
+                            held_flexibility);
       // Whether the free modes can be held at all is a question of
       // mechanics, answered on the small dimensionless rigid-mode system
       // before any factorisation: a mechanism is never left to the
       // condition number of the whole system (doc/theory.md).
-      const RigidModeTest test =
-        rigid_mode_test(rigid_coupling, rigid_loads, rows, scales, rigid_mode_tolerance);
+      const RigidModeTest test = rigid_mode_test(
+        rigid_coupling, rigid_loads, rows, scales, rigid_mode_tolerance);
       ContactSolution solution;
       if (!test.holds)
         {
@@ -464,7 +495,8 @@ namespace fdem
 
     template <int dim>
     ContactSolution
-    MixedSystem<dim>::solution_from(const Vector<double> &x, Vector<double> elastic) const
+    MixedSystem<dim>::solution_from(const Vector<double> &x,
+                                    Vector<double>        elastic) const
     {
       const unsigned int n_forces = external_gap.size();
       const unsigned int n_rigid  = rigid_loads.size();

@@ -19,7 +19,7 @@ namespace fdem
     template <int dim>
     PairRows<dim>
     pair_rows(const PairState<dim> &state,
-              const PairStrength &  strength,
+              const PairStrength   &strength,
               const Tensor<2, dim> &self_flexibility,
               const double          held_flexibility)
     {
@@ -49,7 +49,8 @@ namespace fdem
           // linearised f_t = s z/|z| reads
           //   d . f_t + mu f_n = c A                     (the limit along d)
           //   (1 - alpha) e . f_t - alpha r e . g_t = 0  (turning towards g_t).
-          // At a fixed point e . f_t = e . g_t = 0: force and slip are parallel.
+          // At a fixed point e . f_t = e . g_t = 0: force and slip are
+          // parallel.
           const double       d1 = state.slip_direction[0];
           const double       d2 = state.slip_direction[dim - 2];
           const double       e1 = -d2, e2 = d1;
@@ -90,8 +91,14 @@ namespace fdem
     template double
     tangential_stiffness(const Tensor<2, 3> &);
     template PairRows<2>
-    pair_rows(const PairState<2> &, const PairStrength &, const Tensor<2, 2> &, const double);
+    pair_rows(const PairState<2> &,
+              const PairStrength &,
+              const Tensor<2, 2> &,
+              const double);
     template PairRows<3>
-    pair_rows(const PairState<3> &, const PairStrength &, const Tensor<2, 3> &, const double);
+    pair_rows(const PairState<3> &,
+              const PairStrength &,
+              const Tensor<2, 3> &,
+              const double);
   } // namespace contact
 } // namespace fdem

@@ -37,10 +37,19 @@ namespace fdem
         types::blas_int       info = 0, lwork = -1;
         std::vector<double>   tau(n);
         double                size = 0;
-        geqrf(&rows, &columns, a.data(), &rows, tau.data(), &size, &lwork, &info);
-        lwork = std::max<types::blas_int>(1, static_cast<types::blas_int>(size));
+        geqrf(
+          &rows, &columns, a.data(), &rows, tau.data(), &size, &lwork, &info);
+        lwork =
+          std::max<types::blas_int>(1, static_cast<types::blas_int>(size));
         std::vector<double> work(lwork);
-        geqrf(&rows, &columns, a.data(), &rows, tau.data(), work.data(), &lwork, &info);
+        geqrf(&rows,
+              &columns,
+              a.data(),
+              &rows,
+              tau.data(),
+              work.data(),
+              &lwork,
+              &info);
         AssertThrow(info == 0, ExcInternalError());
         LAPACKFullMatrix<double> R(n, n);
         for (unsigned int j = 0; j < n; ++j)
@@ -77,9 +86,9 @@ namespace fdem
       template <int dim>
       void
       admissible_forces(const std::vector<Tensor<1, dim>> &h,
-                        const std::vector<double> &        v,
-                        std::vector<Tensor<1, dim>> &      basis,
-                        Tensor<1, dim> &                   f_0)
+                        const std::vector<double>         &v,
+                        std::vector<Tensor<1, dim>>       &basis,
+                        Tensor<1, dim>                    &f_0)
       {
         // Gram-Schmidt on the rows, keeping the combination that maps v:
         // q_k = (h_k - sum_{l<k} (h_k . q_l) q_l) / |.|, and w_k the value of
@@ -151,10 +160,10 @@ namespace fdem
 
     template <int dim>
     RigidModeTest
-    rigid_mode_test(const FullMatrix<double> &        rigid_coupling,
-                    const Vector<double> &            rigid_loads,
+    rigid_mode_test(const FullMatrix<double>         &rigid_coupling,
+                    const Vector<double>             &rigid_loads,
                     const std::vector<PairRows<dim>> &rows,
-                    const SystemScales &              scales,
+                    const SystemScales               &scales,
                     const double                      tolerance)
     {
       RigidModeTest      test;
@@ -224,24 +233,28 @@ namespace fdem
 
       // A tall matrix by columns from a list of its rows, padded with zero
       // rows up to n_rigid (that changes neither rank nor range).
-      const auto by_columns = [n_rigid](const std::vector<std::vector<double>> &list,
-                                        unsigned int &                          m) {
-        m = std::max<unsigned int>(list.size(), n_rigid);
-        std::vector<double> a(std::size_t(m) * n_rigid, 0.0);
-        for (unsigned int i = 0; i < list.size(); ++i)
-          for (unsigned int j = 0; j < n_rigid; ++j)
-            a[std::size_t(j) * m + i] = list[i][j];
-        return a;
-      };
+      const auto by_columns =
+        [n_rigid](const std::vector<std::vector<double>> &list,
+                  unsigned int                           &m) {
+          m = std::max<unsigned int>(list.size(), n_rigid);
+          std::vector<double> a(std::size_t(m) * n_rigid, 0.0);
+          for (unsigned int i = 0; i < list.size(); ++i)
+            for (unsigned int j = 0; j < n_rigid; ++j)
+              a[std::size_t(j) * m + i] = list[i][j];
+          return a;
+        };
       unsigned int              m_E = 0, m_K = 0;
       FullMatrix<double>        V_T;
-      std::vector<double>       E_T     = by_columns(E_columns, m_E);
-      std::vector<double>       K       = by_columns(K_rows, m_K);
-      const std::vector<double> sigma_E = tall_singular_values(std::move(E_T), m_E, n_rigid, &V_T);
-      const std::vector<double> sigma_K = tall_singular_values(std::move(K), m_K, n_rigid);
+      std::vector<double>       E_T = by_columns(E_columns, m_E);
+      std::vector<double>       K   = by_columns(K_rows, m_K);
+      const std::vector<double> sigma_E =
+        tall_singular_values(std::move(E_T), m_E, n_rigid, &V_T);
+      const std::vector<double> sigma_K =
+        tall_singular_values(std::move(K), m_K, n_rigid);
       test.equilibrium_ratio = ratio(sigma_E);
       test.kinematic_ratio   = ratio(sigma_K);
-      test.holds = test.equilibrium_ratio > tolerance && test.kinematic_ratio > tolerance;
+      test.holds =
+        test.equilibrium_ratio > tolerance && test.kinematic_ratio > tolerance;
 
       if (test.equilibrium_ratio <= tolerance)
         {
@@ -271,10 +284,16 @@ namespace fdem
     template Tensor<1, 3>
     row_magnitudes(const PairRows<3> &, const SystemScales &);
     template RigidModeTest
-    rigid_mode_test(const FullMatrix<double> &, const Vector<double> &,
-                    const std::vector<PairRows<2>> &, const SystemScales &, const double);
+    rigid_mode_test(const FullMatrix<double> &,
+                    const Vector<double> &,
+                    const std::vector<PairRows<2>> &,
+                    const SystemScales &,
+                    const double);
     template RigidModeTest
-    rigid_mode_test(const FullMatrix<double> &, const Vector<double> &,
-                    const std::vector<PairRows<3>> &, const SystemScales &, const double);
+    rigid_mode_test(const FullMatrix<double> &,
+                    const Vector<double> &,
+                    const std::vector<PairRows<3>> &,
+                    const SystemScales &,
+                    const double);
   } // namespace contact
 } // namespace fdem

@@ -70,13 +70,15 @@ namespace fdem
       bool
       changed(const PairState<dim> &next, const PairState<dim> &previous)
       {
-        if (next.status != previous.status || next.at_cutoff != previous.at_cutoff)
+        if (next.status != previous.status ||
+            next.at_cutoff != previous.at_cutoff)
           return true;
         if (next.status != PairStatus::slip)
           return false;
         double distance = 0;
         for (unsigned int i = 0; i < dim - 1; ++i)
-          distance += std::pow(next.slip_direction[i] - previous.slip_direction[i], 2);
+          distance +=
+            std::pow(next.slip_direction[i] - previous.slip_direction[i], 2);
         return std::sqrt(distance) > 1e-10;
       }
 
@@ -86,7 +88,8 @@ namespace fdem
        */
       template <int dim>
       bool
-      same_statuses(const std::vector<PairState<dim>> &a, const std::vector<PairState<dim>> &b)
+      same_statuses(const std::vector<PairState<dim>> &a,
+                    const std::vector<PairState<dim>> &b)
       {
         for (unsigned int p = 0; p < a.size(); ++p)
           if (a[p].status != b[p].status || a[p].at_cutoff != b[p].at_cutoff ||
@@ -104,7 +107,7 @@ namespace fdem
       template <int dim>
       typename std::vector<std::vector<PairState<dim>>>::const_iterator
       find_cycle(const std::vector<std::vector<PairState<dim>>> &history,
-                 const std::vector<PairState<dim>> &              next)
+                 const std::vector<PairState<dim>>              &next)
       {
         bool differs_after = false;
         for (auto h = history.end(); h != history.begin();)
@@ -141,17 +144,21 @@ namespace fdem
        */
       template <int dim>
       double
-      tangential_angle(const std::array<double, dim - 1> &d, const std::array<double, dim - 1> &v)
+      tangential_angle(const std::array<double, dim - 1> &d,
+                       const std::array<double, dim - 1> &v)
       {
-        const double cosine = d[0] * v[0] + (dim == 3 ? d[dim - 2] * v[dim - 2] : 0.0);
-        const double sine   = dim == 3 ? d[0] * v[dim - 2] - d[dim - 2] * v[0] : 0.0;
+        const double cosine =
+          d[0] * v[0] + (dim == 3 ? d[dim - 2] * v[dim - 2] : 0.0);
+        const double sine =
+          dim == 3 ? d[0] * v[dim - 2] - d[dim - 2] * v[0] : 0.0;
         return std::atan2(std::abs(sine), cosine) * 180 / numbers::PI;
       }
     } // namespace
 
     template <int dim>
     std::vector<PairState<dim>>
-    initial_states(const MixedSystem<dim> &system, const std::vector<PairStrength> &strengths)
+    initial_states(const MixedSystem<dim>          &system,
+                   const std::vector<PairStrength> &strengths)
     {
       std::vector<PairState<dim>> states(system.n_pairs());
       for (unsigned int p = 0; p < states.size(); ++p)
@@ -167,10 +174,11 @@ namespace fdem
     }
 
     template <int dim>
-    StatusIteration<dim>::StatusIteration(MixedSystem<dim> &               system,
-                                          const std::vector<PairStrength> &strengths,
-                                          const StatusIterationControl &   control,
-                                          std::ostream &                   log)
+    StatusIteration<dim>::StatusIteration(
+      MixedSystem<dim>                &system,
+      const std::vector<PairStrength> &strengths,
+      const StatusIterationControl    &control,
+      std::ostream                    &log)
       : system(system)
       , strengths(strengths)
       , control(control)
@@ -180,8 +188,9 @@ namespace fdem
       // the elastic relative displacements; where those are zero, by the
       // model's characteristic force and displacement (SystemScales). All
       // tolerances are fractions of them, dimensionless.
-      , gap_scale(system.external_gap.linfty_norm() > 0 ? system.external_gap.linfty_norm() :
-                                                          system.scales.displacement)
+      , gap_scale(system.external_gap.linfty_norm() > 0 ?
+                    system.external_gap.linfty_norm() :
+                    system.scales.displacement)
       , frozen(n_pairs)
       , tried_closed(n_pairs, false)
     {}
@@ -191,8 +200,8 @@ namespace fdem
     StatusIteration<dim>::run(std::vector<PairState<dim>> states)
     {
       ContactOutcome<dim> outcome;
-      const auto          end = [&](const ContactResult      result,
-                           const ContactSolution &  solution,
+      const auto          end = [&](const ContactResult    result,
+                           const ContactSolution &solution,
                            StatusIterationRecord *record) {
         outcome.result = result;
         if (record != nullptr)
@@ -213,11 +222,13 @@ namespace fdem
           record.factorized           = solution.factorized;
           if (!solution.solved)
             {
-              const bool mechanism = solution.failure == SolveFailure::mechanism;
+              const bool mechanism =
+                solution.failure == SolveFailure::mechanism;
               if (mechanism && close_all_open_pairs(states))
                 continue;
               log_failure(solution);
-              return end(mechanism ? ContactResult::singular : ContactResult::numerical_breakdown,
+              return end(mechanism ? ContactResult::singular :
+                                     ContactResult::numerical_breakdown,
                          solution,
                          &record);
             }
@@ -228,9 +239,12 @@ namespace fdem
             return end(ContactResult::runaway, solution, &record);
 
           const double largest_force = solution.forces.linfty_norm();
-          const double force_scale   = largest_force > 0 ? largest_force : system.scales.force;
-          const Tolerances tolerances{1e-10 * force_scale, 1e-10 * elastic_scale};
-          std::vector<PairState<dim>> next = update_statuses(states, solution, tolerances);
+          const double force_scale =
+            largest_force > 0 ? largest_force : system.scales.force;
+          const Tolerances            tolerances{1e-10 * force_scale,
+                                      1e-10 * elastic_scale};
+          std::vector<PairState<dim>> next =
+            update_statuses(states, solution, tolerances);
 
           count_changes(states, next, record);
           outcome.iterations.push_back(record);
@@ -238,7 +252,8 @@ namespace fdem
 
           if (record.n_changes == 0)
             {
-              outcome.max_slip_angle = max_slip_angle(states, solution, tolerances.gap);
+              outcome.max_slip_angle =
+                max_slip_angle(states, solution, tolerances.gap);
               return end(ContactResult::converged, solution, nullptr);
             }
           if (iteration + 1 >= control.max_iterations)
@@ -252,15 +267,18 @@ namespace fdem
 
     template <int dim>
     bool
-    StatusIteration<dim>::close_all_open_pairs(std::vector<PairState<dim>> &states)
+    StatusIteration<dim>::close_all_open_pairs(
+      std::vector<PairState<dim>> &states)
     {
       // (With some pairs closed a singular system is a free mechanism, such
       // as a rotation about one touching pair: closing every gap there would
       // force contacts the block never reaches.)
       const bool all_open =
-        std::all_of(states.begin(), states.end(), [](const PairState<dim> &state) {
-          return state.status == PairStatus::open;
-        });
+        std::all_of(states.begin(),
+                    states.end(),
+                    [](const PairState<dim> &state) {
+                      return state.status == PairStatus::open;
+                    });
       if (!all_open)
         return false;
       unsigned int n_closed = 0;
@@ -288,17 +306,19 @@ namespace fdem
         {
           log << "    no rigid-mode equilibrium: singular-value ratio of the "
                  "equilibrium matrix "
-              << test.equilibrium_ratio << ", of the kinematic matrix " << test.kinematic_ratio;
+              << test.equilibrium_ratio << ", of the kinematic matrix "
+              << test.kinematic_ratio;
           if (test.equilibrium_ratio <= system.rigid_mode_tolerance)
             log << ", unbalanced load " << test.unbalanced_load;
           log << std::endl;
         }
       else
-        log << "    numerical breakdown: the rigid modes can be held (singular-value "
-               "ratios "
-            << test.equilibrium_ratio << ", " << test.kinematic_ratio
-            << ") but the system was not solved to accuracy (reciprocal condition "
-            << solution.reciprocal_condition << ")" << std::endl;
+        log
+          << "    numerical breakdown: the rigid modes can be held (singular-value "
+             "ratios "
+          << test.equilibrium_ratio << ", " << test.kinematic_ratio
+          << ") but the system was not solved to accuracy (reciprocal condition "
+          << solution.reciprocal_condition << ")" << std::endl;
     }
 
     template <int dim>
@@ -309,17 +329,20 @@ namespace fdem
       // Rigid relative motion far beyond the elastic scale.
       Vector<double> rigid(solution.forces.size());
       system.rigid_coupling.vmult(rigid, solution.rigid_motions);
-      const bool finite = std::all_of(solution.forces.begin(),
-                                      solution.forces.end(),
-                                      [](const double f) { return std::isfinite(f); });
-      return !finite || rigid.linfty_norm() > control.runaway_factor * elastic_scale;
+      const bool finite =
+        std::all_of(solution.forces.begin(),
+                    solution.forces.end(),
+                    [](const double f) { return std::isfinite(f); });
+      return !finite ||
+             rigid.linfty_norm() > control.runaway_factor * elastic_scale;
     }
 
     template <int dim>
     void
-    StatusIteration<dim>::turn_slip_direction(PairState<dim> &       state,
-                                              const unsigned int     p,
-                                              const ContactSolution &solution) const
+    StatusIteration<dim>::turn_slip_direction(
+      PairState<dim>        &state,
+      const unsigned int     p,
+      const ContactSolution &solution) const
     {
       // 3D: the slip direction follows z = f_t + r g_t (the Newton step of
       // the Alart-Curnier projection, see PairState). At the fixed point z,
@@ -350,16 +373,17 @@ namespace fdem
 
     template <int dim>
     std::vector<PairState<dim>>
-    StatusIteration<dim>::update_statuses(const std::vector<PairState<dim>> &states,
-                                          const ContactSolution &            solution,
-                                          const Tolerances &                 tolerances) const
+    StatusIteration<dim>::update_statuses(
+      const std::vector<PairState<dim>> &states,
+      const ContactSolution             &solution,
+      const Tolerances                  &tolerances) const
     {
-      const Vector<double> &      f    = solution.forces;
-      const Vector<double> &      g    = solution.relative_displacements;
+      const Vector<double>       &f    = solution.forces;
+      const Vector<double>       &g    = solution.relative_displacements;
       std::vector<PairState<dim>> next = states;
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
-          PairState<dim> &    state    = next[p];
+          PairState<dim>     &state    = next[p];
           const PairStrength &strength = strengths[p];
           const double        f_n      = f[dim * p];
           const double        g_n      = g[dim * p];
@@ -367,7 +391,8 @@ namespace fdem
             {
               case PairStatus::stick:
               case PairStatus::slip:
-                if (!state.at_cutoff && f_n > strength.tensile_force + tolerances.force)
+                if (!state.at_cutoff &&
+                    f_n > strength.tensile_force + tolerances.force)
                   {
                     state.status = PairStatus::open;
                     break;
@@ -383,7 +408,9 @@ namespace fdem
                         // |f_t| is 0 (a capacity at or below zero).
                         const double norm = tangential_norm<dim>(f, p);
                         state.direction_weight =
-                          norm > 0 ? std::max(strength.shear_capacity(f_n), 0.0) / norm : 0.0;
+                          norm > 0 ?
+                            std::max(strength.shear_capacity(f_n), 0.0) / norm :
+                            0.0;
                       }
                   }
                 else
@@ -392,10 +419,12 @@ namespace fdem
                     for (unsigned int i = 1; i < dim; ++i)
                       along += state.slip_direction[i - 1] * g[dim * p + i];
                     const bool has_strength =
-                      strength.friction_coefficient > 0 || strength.cohesion_force > 0;
+                      strength.friction_coefficient > 0 ||
+                      strength.cohesion_force > 0;
                     // Slip against the force: the pair sticks. (A
                     // frictionless pair has no force to slip against.)
-                    if (!frozen[p].slipping && along < -tolerances.gap && has_strength)
+                    if (!frozen[p].slipping && along < -tolerances.gap &&
+                        has_strength)
                       state.status = PairStatus::stick;
                     else if (dim == 3)
                       turn_slip_direction(state, p, solution);
@@ -407,11 +436,13 @@ namespace fdem
                     // Closing: a pair that slid while open closes slipping
                     // along its slide (Sec. 6.1), not stuck at its start.
                     const bool frictionless =
-                      strength.friction_coefficient == 0 && strength.cohesion_force == 0;
-                    if (frictionless || tangential_norm<dim>(g, p) > tolerances.gap)
+                      strength.friction_coefficient == 0 &&
+                      strength.cohesion_force == 0;
+                    if (frictionless ||
+                        tangential_norm<dim>(g, p) > tolerances.gap)
                       {
-                        state.status           = PairStatus::slip;
-                        state.slip_direction   = tangential_direction<dim>(g, p);
+                        state.status         = PairStatus::slip;
+                        state.slip_direction = tangential_direction<dim>(g, p);
                         state.direction_weight = 0;
                       }
                     else
@@ -425,9 +456,10 @@ namespace fdem
 
     template <int dim>
     void
-    StatusIteration<dim>::count_changes(const std::vector<PairState<dim>> &states,
-                                        const std::vector<PairState<dim>> &next,
-                                        StatusIterationRecord &            record) const
+    StatusIteration<dim>::count_changes(
+      const std::vector<PairState<dim>> &states,
+      const std::vector<PairState<dim>> &next,
+      StatusIterationRecord             &record) const
     {
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
@@ -436,7 +468,8 @@ namespace fdem
               states[p].status == PairStatus::slip)
             record.max_turn =
               std::max(record.max_turn,
-                       tangential_angle<dim>(next[p].slip_direction, states[p].slip_direction));
+                       tangential_angle<dim>(next[p].slip_direction,
+                                             states[p].slip_direction));
           record.n_stick += next[p].status == PairStatus::stick;
           record.n_slip += next[p].status == PairStatus::slip;
           record.n_open += next[p].status == PairStatus::open;
@@ -448,31 +481,34 @@ namespace fdem
     void
     StatusIteration<dim>::log_iteration(const unsigned int           iteration,
                                         const StatusIterationRecord &record,
-                                        const ContactSolution &      solution) const
+                                        const ContactSolution &solution) const
     {
-      log << "    contact iteration " << std::setw(3) << iteration + 1 << ": " << record.n_stick
-          << " stick, " << record.n_slip << " slip, " << record.n_open << " open";
+      log << "    contact iteration " << std::setw(3) << iteration + 1 << ": "
+          << record.n_stick << " stick, " << record.n_slip << " slip, "
+          << record.n_open << " open";
       if (record.n_at_cutoff > 0)
         log << " (" << record.n_at_cutoff << " at the tension cut-off)";
       log << ", " << record.n_changes << " changed";
       if (dim == 3)
-        log << ", slip directions turned up to " << std::setprecision(3) << record.max_turn
-            << " deg" << std::setprecision(6);
+        log << ", slip directions turned up to " << std::setprecision(3)
+            << record.max_turn << " deg" << std::setprecision(6);
       log << "; " << system.describe_solve(solution) << std::endl;
     }
 
     template <int dim>
     double
-    StatusIteration<dim>::max_slip_angle(const std::vector<PairState<dim>> &states,
-                                         const ContactSolution &            solution,
-                                         const double                       gap_tolerance) const
+    StatusIteration<dim>::max_slip_angle(
+      const std::vector<PairState<dim>> &states,
+      const ContactSolution             &solution,
+      const double                       gap_tolerance) const
     {
       // How far a slipping pair's force is from its slip direction (0 in
       // 2D; in 3D the direction is the trial force's).
       const Vector<double> &g     = solution.relative_displacements;
       double                angle = 0;
       for (unsigned int p = 0; p < n_pairs; ++p)
-        if (states[p].status == PairStatus::slip && tangential_norm<dim>(g, p) > gap_tolerance)
+        if (states[p].status == PairStatus::slip &&
+            tangential_norm<dim>(g, p) > gap_tolerance)
           angle = std::max(angle,
                            tangential_angle<dim>(states[p].slip_direction,
                                                  tangential_part<dim>(g, p)));
@@ -482,7 +518,7 @@ namespace fdem
     template <int dim>
     bool
     StatusIteration<dim>::break_cycle(std::vector<PairState<dim>> &next,
-                                      const Vector<double> &       forces)
+                                      const Vector<double>        &forces)
     {
       // A state seen before closes a cycle: break it (Sec. 6.2, 6.3).
       const auto seen = find_cycle(history, next);
@@ -491,7 +527,8 @@ namespace fdem
       unsigned int n_frozen = 0;
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
-          bool was_open = false, was_closed = false, was_stick = false, was_slip = false;
+          bool was_open = false, was_closed = false, was_stick = false,
+               was_slip = false;
           for (auto h = seen; h != history.end(); ++h)
             {
               const PairStatus s = (*h)[p].status;
@@ -516,8 +553,8 @@ namespace fdem
               ++n_frozen;
             }
         }
-      log << "    status cycle of length " << history.end() - seen << " broken: " << n_frozen
-          << " pairs held" << std::endl;
+      log << "    status cycle of length " << history.end() - seen
+          << " broken: " << n_frozen << " pairs held" << std::endl;
       // Cycles are looked for from here on: the held pairs changed the
       // problem.
       history.clear();
@@ -526,13 +563,14 @@ namespace fdem
 
     template <int dim>
     ContactOutcome<dim>
-    solve_contact_problem(MixedSystem<dim> &               system,
+    solve_contact_problem(MixedSystem<dim>                &system,
                           const std::vector<PairStrength> &strengths,
                           std::vector<PairState<dim>>      states,
-                          const StatusIterationControl &   control,
-                          std::ostream &                   log)
+                          const StatusIterationControl    &control,
+                          std::ostream                    &log)
     {
-      return StatusIteration<dim>(system, strengths, control, log).run(std::move(states));
+      return StatusIteration<dim>(system, strengths, control, log)
+        .run(std::move(states));
     }
 
     template std::vector<PairState<2>>
@@ -542,12 +580,16 @@ namespace fdem
     template class StatusIteration<2>;
     template class StatusIteration<3>;
     template ContactOutcome<2>
-    solve_contact_problem(MixedSystem<2> &, const std::vector<PairStrength> &,
-                          std::vector<PairState<2>>, const StatusIterationControl &,
+    solve_contact_problem(MixedSystem<2> &,
+                          const std::vector<PairStrength> &,
+                          std::vector<PairState<2>>,
+                          const StatusIterationControl &,
                           std::ostream &);
     template ContactOutcome<3>
-    solve_contact_problem(MixedSystem<3> &, const std::vector<PairStrength> &,
-                          std::vector<PairState<3>>, const StatusIterationControl &,
+    solve_contact_problem(MixedSystem<3> &,
+                          const std::vector<PairStrength> &,
+                          std::vector<PairState<3>>,
+                          const StatusIterationControl &,
                           std::ostream &);
   } // namespace contact
 } // namespace fdem

@@ -13,18 +13,19 @@ namespace fdem
   {
     template <int dim>
     void
-    create_block_triangulation(const MeshDescription<dim> &     mesh,
+    create_block_triangulation(const MeshDescription<dim>      &mesh,
                                const std::vector<unsigned int> &blocks,
-                               Triangulation<dim> &             triangulation)
+                               Triangulation<dim>              &triangulation)
     {
-      std::vector<unsigned int> local_index(mesh.vertices.size(),
+      std::vector<unsigned int>  local_index(mesh.vertices.size(),
                                             numbers::invalid_unsigned_int);
-      std::vector<unsigned int> global_index;
-      std::vector<Point<dim>>   vertices;
+      std::vector<unsigned int>  global_index;
+      std::vector<Point<dim>>    vertices;
       std::vector<CellData<dim>> cells;
       for (unsigned int c = 0; c < mesh.cells.size(); ++c)
-        if (std::find(blocks.begin(), blocks.end(), mesh.cells[c].material_id) !=
-            blocks.end())
+        if (std::find(blocks.begin(),
+                      blocks.end(),
+                      mesh.cells[c].material_id) != blocks.end())
           {
             CellData<dim> local_cell = mesh.cells[c];
             local_cell.material_id   = mesh.material_key(c);
@@ -53,12 +54,12 @@ namespace fdem
           std::vector<unsigned int> key(face.vertices.begin(),
                                         face.vertices.end());
           std::sort(key.begin(), key.end());
-          const auto [it, inserted] = group_of_face.emplace(key, face.boundary_id);
+          const auto [it, inserted] =
+            group_of_face.emplace(key, face.boundary_id);
           (void)inserted;
           AssertThrow(it->second == face.boundary_id,
                       ExcMessage(mesh.source + ": a face belongs to both '" +
-                                 mesh.face_group_names[it->second] +
-                                 "' and '" +
+                                 mesh.face_group_names[it->second] + "' and '" +
                                  mesh.face_group_names[face.boundary_id] +
                                  "'; a face may belong to one group only."));
         }
@@ -72,9 +73,8 @@ namespace fdem
                 key.push_back(global_index[face->vertex_index(v)]);
               std::sort(key.begin(), key.end());
               const auto it = group_of_face.find(key);
-              face->set_boundary_id(it == group_of_face.end() ?
-                                      unnamed_boundary_id :
-                                      it->second);
+              face->set_boundary_id(
+                it == group_of_face.end() ? unnamed_boundary_id : it->second);
             }
     }
 

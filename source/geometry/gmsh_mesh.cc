@@ -163,8 +163,8 @@ namespace fdem
                     std::vector<std::size_t> corners(n_corners);
                     for (unsigned int i = 0; i < n_corners; ++i)
                       corners[i] =
-                        nodes[t][e * n_nodes +
-                                 internal::gmsh_corner(structdim, n_corners, i)];
+                        nodes[t][e * n_nodes + internal::gmsh_corner(
+                                                 structdim, n_corners, i)];
                     corner_tags.push_back(corners);
                   }
               }
@@ -225,8 +225,8 @@ namespace fdem
         double         scale = 1;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            edges[d] = vertices[cell.vertices[d + 1]] -
-                       vertices[cell.vertices[0]];
+            edges[d] =
+              vertices[cell.vertices[d + 1]] - vertices[cell.vertices[0]];
             scale *= edges[d].norm();
           }
         return (scale > 0) ? determinant(edges) / scale : 0.;
@@ -237,12 +237,13 @@ namespace fdem
 
     template <int dim>
     MeshDescription<dim>
-    extract_current_gmsh_model(const std::string &             source,
+    extract_current_gmsh_model(const std::string              &source,
                                const std::vector<std::string> &material_names)
     {
       static_assert(dim == 2 || dim == 3, "Only 2D and 3D meshes.");
-      const std::string hypercubes = (dim == 2) ? "quadrilaterals" : "hexahedra";
-      const std::string simplices  = (dim == 2) ? "triangles" : "tetrahedra";
+      const std::string hypercubes =
+        (dim == 2) ? "quadrilaterals" : "hexahedra";
+      const std::string simplices = (dim == 2) ? "triangles" : "tetrahedra";
 
       MeshDescription<dim> mesh;
       mesh.source = source;
@@ -257,7 +258,9 @@ namespace fdem
       // Groups named in material_names are material regions, the others
       // blocks (gmsh_materials.cc).
       gmsh::vectorpair block_groups, material_groups;
-      split_block_and_material_groups<dim>(material_names, block_groups, material_groups);
+      split_block_and_material_groups<dim>(material_names,
+                                           block_groups,
+                                           material_groups);
       const std::string kind_of_group = (dim == 2) ? "Surface" : "Volume";
       AssertThrow(!block_groups.empty(),
                   ExcMessage(source + ": there is no physical group of " +
@@ -266,22 +269,23 @@ namespace fdem
                              "(\"rock\") = {...}."));
 
       // Cells by block; an element may be listed in one block only.
-      std::map<std::size_t, unsigned int>                  block_of_element;
-      std::vector<std::vector<std::size_t>>                cell_corner_tags;
-      std::vector<unsigned int>                            cell_blocks;
-      std::vector<std::size_t>                             cell_element_tags;
+      std::map<std::size_t, unsigned int>   block_of_element;
+      std::vector<std::vector<std::size_t>> cell_corner_tags;
+      std::vector<unsigned int>             cell_blocks;
+      std::vector<std::size_t>              cell_element_tags;
       for (const auto &group : block_groups)
         {
           const unsigned int block = mesh.block_names.size();
           mesh.block_names.push_back(group_name(dim, group.second, "block"));
           std::vector<std::size_t> element_tags;
-          get_group_elements<dim>(
-            group.second,
-            source + ": block '" + mesh.block_names.back() +
-              "' has elements that are neither " + simplices + " nor " +
-              hypercubes + (dim == 3 ? " (prisms or pyramids)." : "."),
-            element_tags,
-            cell_corner_tags);
+          get_group_elements<dim>(group.second,
+                                  source + ": block '" +
+                                    mesh.block_names.back() +
+                                    "' has elements that are neither " +
+                                    simplices + " nor " + hypercubes +
+                                    (dim == 3 ? " (prisms or pyramids)." : "."),
+                                  element_tags,
+                                  cell_corner_tags);
           for (const std::size_t tag : element_tags)
             {
               const auto inserted = block_of_element.emplace(tag, block);
@@ -350,8 +354,8 @@ namespace fdem
       for (unsigned int c = 0; c < cell_corner_tags.size(); ++c)
         AssertThrow((cell_corner_tags[c].size() == dim + 1) == simplex,
                     ExcMessage(source + ": the mesh mixes " + simplices +
-                               " and " + hypercubes +
-                               " (block '" + mesh.block_names[cell_blocks[c]] +
+                               " and " + hypercubes + " (block '" +
+                               mesh.block_names[cell_blocks[c]] +
                                "'); mixed meshes are not supported: mesh "
                                "all blocks with Recombine, or none."));
 
@@ -407,8 +411,8 @@ namespace fdem
           const std::string  name =
             group_name(dim - 1, group.second, "face group");
           mesh.face_group_names.push_back(name);
-          std::vector<std::size_t>                                 element_tags;
-          std::vector<std::vector<std::size_t>>                    corner_tags;
+          std::vector<std::size_t>              element_tags;
+          std::vector<std::vector<std::size_t>> corner_tags;
           get_group_elements<dim - 1>(group.second,
                                       source + ": face group '" + name +
                                         "' has elements that are not " +
@@ -420,11 +424,11 @@ namespace fdem
           for (const auto &corners : corner_tags)
             {
               AssertThrow(dim == 2 || (corners.size() == dim) == simplex,
-                          ExcMessage(source + ": face group '" + name +
-                                     "' has " +
-                                     (simplex ? "quadrilaterals" : "triangles") +
-                                     ", but the cells are " +
-                                     (simplex ? simplices : hypercubes) + "."));
+                          ExcMessage(
+                            source + ": face group '" + name + "' has " +
+                            (simplex ? "quadrilaterals" : "triangles") +
+                            ", but the cells are " +
+                            (simplex ? simplices : hypercubes) + "."));
               CellData<dim - 1> face(corners.size());
               for (unsigned int i = 0; i < corners.size(); ++i)
                 {
@@ -449,9 +453,6 @@ namespace fdem
         }
       return mesh;
     }
-
-
-
 
 
 
@@ -499,10 +500,12 @@ namespace fdem
     extract_current_gmsh_model<3>(const std::string &,
                                   const std::vector<std::string> &);
     template MeshDescription<2>
-    read_gmsh_file<2>(const std::string &, const std::function<void()> &,
+    read_gmsh_file<2>(const std::string &,
+                      const std::function<void()> &,
                       const std::vector<std::string> &);
     template MeshDescription<3>
-    read_gmsh_file<3>(const std::string &, const std::function<void()> &,
+    read_gmsh_file<3>(const std::string &,
+                      const std::function<void()> &,
                       const std::vector<std::string> &);
     void
     add_physical_group(const int               structdim,
@@ -510,9 +513,8 @@ namespace fdem
                        const std::string      &name)
     {
       if (!entities.empty())
-        gmsh::model::setPhysicalName(structdim,
-                                     gmsh::model::addPhysicalGroup(structdim, entities),
-                                     name);
+        gmsh::model::setPhysicalName(
+          structdim, gmsh::model::addPhysicalGroup(structdim, entities), name);
     }
 
   } // namespace geometry

@@ -109,11 +109,11 @@ namespace fdem
         // (10567 on the paper's slope, 550 m^2, at h = 0.25 m; 4.1 million
         // Q2 dofs at h = 0.035 m, doc/scaling.md).
         const double everywhere_fine = area / (h_s * h_s);
-        const double banded          = area / (h * h) + length * h / (h_s * h_s);
+        const double banded = area / (h * h) + length * h / (h_s * h_s);
         MeshEstimate e;
-        e.entry = (h_s < h && length * h / (h_s * h_s) > area / (h * h)) ?
-                    "Geometry/Slope/Mesh size on sliding surface" :
-                    "Geometry/Slope/Mesh size";
+        e.entry      = (h_s < h && length * h / (h_s * h_s) > area / (h * h)) ?
+                         "Geometry/Slope/Mesh size on sliding surface" :
+                         "Geometry/Slope/Mesh size";
         e.n_vertices = 1.2 * std::min(everywhere_fine, banded);
         e.n_cells    = e.n_vertices;
         e.n_pairs    = length / h_s;
@@ -124,14 +124,14 @@ namespace fdem
       estimate_hertz(const Hertz &hertz)
       {
         const double r = hertz.radius, lc = hertz.contact_zone_width;
-        const double near  = lc / hertz.n_contact_zone_elements;
+        const double near = lc / hertz.n_contact_zone_elements;
         // Gmsh's Threshold field takes Mesh size far off even when it is
         // finer than the contact zone's elements.
         const double far   = hertz.mesh_size;
         const double total = numbers::PI * r * r / 4 +
                              hertz.foundation_width * hertz.foundation_depth;
         // Both curves of the contact zone, each with its band on one side.
-        const auto   band = [&](const double d) {
+        const auto band = [&](const double d) {
           return 2 * (lc * d + numbers::PI * d * d / 2);
         };
         const double fine = 0.5 * lc, coarse = fine + 4 * std::abs(far - near);
@@ -158,8 +158,9 @@ namespace fdem
         const auto n_across = [](const double distance, const double size) {
           return std::max(1.0, std::round(distance / size));
         };
-        double block = b.n_elements_along_length * double(b.n_elements_across_height);
-        double plan  = b.n_elements_along_length +
+        double block =
+          b.n_elements_along_length * double(b.n_elements_across_height);
+        double plan = b.n_elements_along_length +
                       2 * n_across(b.foundation_overhang,
                                    b.block_length / b.n_elements_along_length);
         double pairs = b.n_elements_along_length + 1.0;
@@ -197,8 +198,8 @@ namespace fdem
         const double xy_sphere = lines(p.cap_half_width);
         const double xy        = lines(p.foundation_width);
         MeshEstimate e;
-        e.entry = "Geometry/Hertz sphere: Elements in contact zone, Growth "
-                  "ratio, Mesh size and the lengths";
+        e.entry   = "Geometry/Hertz sphere: Elements in contact zone, Growth "
+                    "ratio, Mesh size and the lengths";
         e.n_cells = xy * xy * lines(p.foundation_depth) +
                     xy_sphere * xy_sphere * lines(p.load_height);
         e.n_vertices = e.n_cells;
@@ -211,11 +212,12 @@ namespace fdem
       {
         const std::array<Point<3>, 4> c = wedge.corners();
         const Tensor<1, 3> a = c[1] - c[0], b = c[2] - c[0], d = c[3] - c[0];
-        const double volume = std::abs(a * cross_product_3d(b, d)) / 6;
-        double       area   = 0, planes = 0;
+        const double       volume = std::abs(a * cross_product_3d(b, d)) / 6;
+        double             area = 0, planes = 0;
         for (unsigned int i = 0; i < 4; ++i)
           {
-            const Tensor<1, 3> u = c[(i + 1) % 4] - c[i], v = c[(i + 2) % 4] - c[i];
+            const Tensor<1, 3> u = c[(i + 1) % 4] - c[i],
+                               v = c[(i + 2) % 4] - c[i];
             area += 0.5 * cross_product_3d(u, v).norm();
           }
         // Planes A and B: the faces (apex, top, crest end on A or B).
@@ -243,8 +245,13 @@ namespace fdem
         };
         // Tetrahedra of edge s: about 8.5 per s^3, 5.5 per vertex.
         const double tetrahedra =
-          8.5 * cells_in_graded_region(
-                  3, grown, box, near, far, inradius, inradius + 4 * std::abs(far - near));
+          8.5 * cells_in_graded_region(3,
+                                       grown,
+                                       box,
+                                       near,
+                                       far,
+                                       inradius,
+                                       inradius + 4 * std::abs(far - near));
         MeshEstimate e;
         e.entry = "Geometry/Wedge/Mesh size and Rock extent";
         // Split into four hexahedra each: new vertices on every edge, face
@@ -259,10 +266,13 @@ namespace fdem
 
 
     double
-    MeshEstimate::memory_MiB(const unsigned int dim, const unsigned int fe_degree) const
+    MeshEstimate::memory_MiB(const unsigned int dim,
+                             const unsigned int fe_degree) const
     {
-      const double n_dofs = dim * n_vertices * std::pow(double(fe_degree), int(dim));
-      return (2950 * n_dofs + 122.0 * dim * dim * n_pairs * n_pairs) / (1 << 20);
+      const double n_dofs =
+        dim * n_vertices * std::pow(double(fe_degree), int(dim));
+      return (2950 * n_dofs + 122.0 * dim * dim * n_pairs * n_pairs) /
+             (1 << 20);
     }
 
 
@@ -312,7 +322,8 @@ namespace fdem
     {
       // The curves (2D) or surfaces (3D) meshed first: Gmsh then goes on
       // from them when it meshes the rest.
-      GmshSession::run("Gmsh could not mesh the boundaries in '" + file_name + "'",
+      GmshSession::run("Gmsh could not mesh the boundaries in '" + file_name +
+                         "'",
                        [&]() { gmsh::model::mesh::generate(dim - 1); });
       gmsh::vectorpair entities;
       gmsh::model::getEntities(entities, dim);
@@ -327,7 +338,8 @@ namespace fdem
             {
               std::vector<int>                      types;
               std::vector<std::vector<std::size_t>> tags, nodes;
-              gmsh::model::mesh::getElements(types, tags, nodes, boundary_dim, std::abs(tag));
+              gmsh::model::mesh::getElements(
+                types, tags, nodes, boundary_dim, std::abs(tag));
               for (const auto &t : tags)
                 n += t.size();
             }
@@ -349,7 +361,10 @@ namespace fdem
                         const unsigned int                    dim,
                         const unsigned int                    fe_degree)
     {
-      return check_mesh_estimate(estimate_mesh(geometry), geometry, dim, fe_degree);
+      return check_mesh_estimate(estimate_mesh(geometry),
+                                 geometry,
+                                 dim,
+                                 fe_degree);
     }
 
 
@@ -362,8 +377,8 @@ namespace fdem
     {
       if (e.entry.empty())
         return e;
-      const double mib   = e.memory_MiB(dim, fe_degree);
-      const double limit = memory_limit_MiB(geometry);
+      const double       mib   = e.memory_MiB(dim, fe_degree);
+      const double       limit = memory_limit_MiB(geometry);
       std::ostringstream message;
       message.precision(3);
       message << e.entry << ": about " << e.n_cells << " elements and "
@@ -371,7 +386,8 @@ namespace fdem
               << " MiB, more than the " << limit
               << " MiB allowed (Geometry/Memory limit; 0 is this machine's "
                  "memory or ulimit -v); use a coarser mesh or raise the limit.";
-      AssertThrow(std::isfinite(mib) && mib <= limit, ExcMessage(message.str()));
+      AssertThrow(std::isfinite(mib) && mib <= limit,
+                  ExcMessage(message.str()));
       return e;
     }
   } // namespace geometry

@@ -125,10 +125,12 @@ namespace fdem
       NodeReader read(in, binary != 0, size_t_bytes);
 
       std::map<std::size_t, std::array<double, 3>> seen;
-      const auto add = [&](const std::size_t tag, const std::array<double, 3> &x) {
+      const auto add = [&](const std::size_t            tag,
+                           const std::array<double, 3> &x) {
         const auto inserted = seen.emplace(tag, x);
         AssertThrow(inserted.second || inserted.first->second == x,
-                    ExcMessage("Gmsh file '" + file_name + "': node " + std::to_string(tag) +
+                    ExcMessage("Gmsh file '" + file_name + "': node " +
+                               std::to_string(tag) +
                                " is listed twice, at two different places."));
       };
       // A count larger than the file could hold is left to Gmsh (which
@@ -194,7 +196,8 @@ namespace fdem
        * depth first; @p open holds the files being read.
        */
       void
-      follow_includes(const std::filesystem::path &file, std::vector<std::filesystem::path> &open)
+      follow_includes(const std::filesystem::path        &file,
+                      std::vector<std::filesystem::path> &open)
       {
         namespace fs = std::filesystem;
         std::error_code error;
@@ -217,11 +220,15 @@ namespace fdem
         std::stringstream text;
         text << in.rdbuf();
         // Comments out, so that a commented-out Include does not count.
-        const std::string code = std::regex_replace(
-          text.str(), std::regex(R"(//[^\n]*|/\*[\s\S]*?\*/)"), " ");
+        const std::string code =
+          std::regex_replace(text.str(),
+                             std::regex(R"(//[^\n]*|/\*[\s\S]*?\*/)"),
+                             " ");
         static const std::regex include(R"re(\b(Include|Merge)\s*"([^"]*)")re");
         open.push_back(canonical);
-        for (std::sregex_iterator m(code.begin(), code.end(), include), end; m != end; ++m)
+        for (std::sregex_iterator m(code.begin(), code.end(), include), end;
+             m != end;
+             ++m)
           {
             fs::path target = (*m)[2].str();
             if (target.is_relative())

@@ -12,7 +12,13 @@
 // Hand-declared: deal.II 9.4's lapack_templates.h has no lacn2 (the
 // estimator inside gecon, here applied to an updated inverse).
 extern "C" void
-dlacn2_(const int *n, double *v, double *x, int *isgn, double *est, int *kase, int *isave);
+dlacn2_(const int *n,
+        double    *v,
+        double    *x,
+        int       *isgn,
+        double    *est,
+        int       *kase,
+        int       *isave);
 
 namespace fdem
 {
@@ -27,9 +33,11 @@ namespace fdem
        * backward error. The matrices are dimensionless (MixedSystem), so
        * this says the same in any units.
        */
-      constexpr double singular_condition = std::numeric_limits<double>::epsilon();
+      constexpr double singular_condition =
+        std::numeric_limits<double>::epsilon();
 
-      /** Most steps of iterative refinement of one solve (LAPACK's dgerfs: 5). */
+      /** Most steps of iterative refinement of one solve (LAPACK's dgerfs: 5).
+       */
       constexpr unsigned int max_refinement_steps = 5;
 
       /**
@@ -66,14 +74,14 @@ namespace fdem
        * (NaN if y is not finite).
        */
       BackwardErrors
-      refined_solve(const dealii::FullMatrix<double> &    A,
-                    const std::vector<double> &           s,
-                    const std::function<void(double *)> & apply_inverse,
-                    std::vector<double> &                 y,
-                    const unsigned int                    max_steps)
+      refined_solve(const dealii::FullMatrix<double>    &A,
+                    const std::vector<double>           &s,
+                    const std::function<void(double *)> &apply_inverse,
+                    std::vector<double>                 &y,
+                    const unsigned int                   max_steps)
       {
-        const unsigned int  n = A.m();
-        std::vector<double> b = y, r(n), z(n);
+        const unsigned int  n      = A.m();
+        std::vector<double> b      = y, r(n), z(n);
         double              b_norm = 0, B_norm = 0;
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -84,7 +92,7 @@ namespace fdem
               row += std::abs(A_i[j] * s[j]);
             B_norm = std::max(B_norm, std::abs(s[i]) * row);
           }
-        const double nan            = std::numeric_limits<double>::quiet_NaN();
+        const double        nan = std::numeric_limits<double>::quiet_NaN();
         std::vector<double> size(n);
         const auto          backward_error = [&]() {
           BackwardErrors errors;
@@ -109,18 +117,21 @@ namespace fdem
           if (!std::isfinite(r_norm) || !std::isfinite(y_norm))
             return BackwardErrors{nan, nan};
           const double scale = B_norm * y_norm + b_norm;
-          errors.normwise    = scale > 0 ? r_norm / scale : (r_norm > 0 ? 1.0 : 0.0);
+          errors.normwise =
+            scale > 0 ? r_norm / scale : (r_norm > 0 ? 1.0 : 0.0);
           // Rows whose whole content is at round-off of the system (e.g.
           // f = 0 of an open pair: B_ii y_i ~ 1e-20) have no relative
           // accuracy to reach; the normwise error covers them.
-          const double negligible = std::numeric_limits<double>::epsilon() * scale;
+          const double negligible =
+            std::numeric_limits<double>::epsilon() * scale;
           for (unsigned int i = 0; i < n; ++i)
             if (size[i] > negligible)
-              errors.componentwise = std::max(errors.componentwise, std::abs(r[i]) / size[i]);
+              errors.componentwise =
+                std::max(errors.componentwise, std::abs(r[i]) / size[i]);
           return errors;
         };
         apply_inverse(y.data());
-        BackwardErrors errors = backward_error();
+        BackwardErrors      errors = backward_error();
         std::vector<double> previous_y;
         for (unsigned int step = 0;
              step < max_steps && errors.componentwise > componentwise_target;
@@ -174,7 +185,8 @@ namespace fdem
     }
 
     ReusableLU::Result
-    ReusableLU::solve(const dealii::FullMatrix<double> &matrix, dealii::Vector<double> &rhs)
+    ReusableLU::solve(const dealii::FullMatrix<double> &matrix,
+                      dealii::Vector<double>           &rhs)
     {
       Assert(matrix.m() == matrix.n(), dealii::ExcInternalError());
       Assert(rhs.size() == matrix.m(), dealii::ExcInternalError());
@@ -182,7 +194,7 @@ namespace fdem
       std::vector<double> scale = row_and_column_scale(matrix);
       if (!control.reuse || !lu || factorized_matrix.m() != n)
         {
-          Result fresh         = factorize_and_solve(matrix, std::move(scale), rhs);
+          Result fresh = factorize_and_solve(matrix, std::move(scale), rhs);
           fresh.why_factorized = control.reuse ? "first system" : "reuse off";
           return fresh;
         }
@@ -205,7 +217,8 @@ namespace fdem
           // The very matrix that was factorised (and so the same scaling):
           // the same operations as right after its factorisation.
           result.reciprocal_condition = factorized_condition;
-          result.solved               = factorized_solved && solve_factorized(matrix, rhs, result);
+          result.solved =
+            factorized_solved && solve_factorized(matrix, rhs, result);
           ++n_reused_solves;
           return result;
         }
@@ -213,7 +226,8 @@ namespace fdem
       const char *why = nullptr;
       if (changed.size() > control.max_changed_fraction * n)
         why = "many rows changed";
-      else if (!factorized_solved || factorized_condition < control.min_reused_condition)
+      else if (!factorized_solved ||
+               factorized_condition < control.min_reused_condition)
         why = "last factorised system ill-conditioned";
       else if (!solve_updated(matrix, scale, changed, rhs, result))
         why = "update inaccurate or ill-conditioned";
@@ -231,30 +245,33 @@ namespace fdem
     ReusableLU::Result
     ReusableLU::factorize_and_solve(const dealii::FullMatrix<double> &matrix,
                                     std::vector<double>               scale,
-                                    dealii::Vector<double> &          rhs)
+                                    dealii::Vector<double>           &rhs)
     {
       const unsigned int  n = matrix.m();
       std::vector<double> column_major(static_cast<std::size_t>(n) * n);
       for (unsigned int j = 0; j < n; ++j)
         for (unsigned int i = 0; i < n; ++i)
-          column_major[static_cast<std::size_t>(j) * n + i] = matrix(i, j) * scale[i] * scale[j];
+          column_major[static_cast<std::size_t>(j) * n + i] =
+            matrix(i, j) * scale[i] * scale[j];
       lu = std::make_unique<DenseLU>(n, std::move(column_major));
       ++n_factorizations;
       factorized_matrix    = matrix;
       factorized_scale     = std::move(scale);
       factorized_condition = lu->reciprocal_condition_number();
-      factorized_solved    = lu->factorized() && factorized_condition > singular_condition;
+      factorized_solved =
+        lu->factorized() && factorized_condition > singular_condition;
 
       Result result;
       result.reciprocal_condition = factorized_condition;
-      result.solved               = factorized_solved && solve_factorized(matrix, rhs, result);
+      result.solved =
+        factorized_solved && solve_factorized(matrix, rhs, result);
       return result;
     }
 
     bool
     ReusableLU::solve_factorized(const dealii::FullMatrix<double> &matrix,
-                                 dealii::Vector<double> &          rhs,
-                                 Result &                          result) const
+                                 dealii::Vector<double>           &rhs,
+                                 Result                           &result) const
     {
       // The factorised matrix itself: its factors, refined if need be (an
       // ill-conditioned system is refined, not declared singular).
@@ -263,8 +280,12 @@ namespace fdem
       std::vector<double>        y(n);
       for (unsigned int i = 0; i < n; ++i)
         y[i] = rhs[i] * s[i];
-      const BackwardErrors errors =
-        refined_solve(matrix, s, [this](double *x) { lu->solve(x, 1); }, y, max_refinement_steps);
+      const BackwardErrors errors = refined_solve(
+        matrix,
+        s,
+        [this](double *x) { lu->solve(x, 1); },
+        y,
+        max_refinement_steps);
       result.backward_error = errors.normwise;
       if (!(errors.normwise <= control.backward_error_tolerance))
         return false;
@@ -275,10 +296,10 @@ namespace fdem
 
     bool
     ReusableLU::solve_updated(const dealii::FullMatrix<double> &matrix,
-                              const std::vector<double> &       scale,
-                              const std::vector<unsigned int> & changed,
-                              dealii::Vector<double> &          rhs,
-                              Result &                          result) const
+                              const std::vector<double>        &scale,
+                              const std::vector<unsigned int>  &changed,
+                              dealii::Vector<double>           &rhs,
+                              Result                           &result) const
     {
       const unsigned int         n  = matrix.m();
       const unsigned int         k  = changed.size();
@@ -291,7 +312,8 @@ namespace fdem
           const unsigned int i = changed[c];
           for (unsigned int j = 0; j < n; ++j)
             D[static_cast<std::size_t>(c) * n + j] =
-              matrix(i, j) * s0[i] * s0[j] - factorized_matrix(i, j) * s0[i] * s0[j];
+              matrix(i, j) * s0[i] * s0[j] -
+              factorized_matrix(i, j) * s0[i] * s0[j];
         }
 
       // Z = B_0^{-1} P (column-major, n x k) and the capacitance I + D Z.
@@ -305,13 +327,15 @@ namespace fdem
           {
             double sum = c == d ? 1.0 : 0.0;
             for (unsigned int j = 0; j < n; ++j)
-              sum += D[static_cast<std::size_t>(c) * n + j] * Z[static_cast<std::size_t>(d) * n + j];
+              sum += D[static_cast<std::size_t>(c) * n + j] *
+                     Z[static_cast<std::size_t>(d) * n + j];
             capacitance[static_cast<std::size_t>(d) * k + c] = sum;
           }
       const DenseLU capacitance_lu(k, std::move(capacitance));
       // A singular capacitance means a singular B: let dgecon judge it.
       if (!capacitance_lu.factorized() ||
-          capacitance_lu.reciprocal_condition_number() < control.min_reused_condition)
+          capacitance_lu.reciprocal_condition_number() <
+            control.min_reused_condition)
         return false;
 
       std::vector<double> t(k);
@@ -353,8 +377,9 @@ namespace fdem
       std::vector<double> y(n);
       for (unsigned int i = 0; i < n; ++i)
         y[i] = rhs[i] * s0[i];
-      const BackwardErrors errors = refined_solve(matrix, s0, apply_inverse, y, max_refinement_steps);
-      const double         error  = errors.normwise;
+      const BackwardErrors errors =
+        refined_solve(matrix, s0, apply_inverse, y, max_refinement_steps);
+      const double error = errors.normwise;
       if (!(error <= control.backward_error_tolerance))
         return false;
 
@@ -379,7 +404,13 @@ namespace fdem
       int                 kase = 0, isave[3] = {0, 0, 0};
       for (;;)
         {
-          dlacn2_(&size, v.data(), x.data(), signs.data(), &inverse_norm, &kase, isave);
+          dlacn2_(&size,
+                  v.data(),
+                  x.data(),
+                  signs.data(),
+                  &inverse_norm,
+                  &kase,
+                  isave);
           if (kase == 0)
             break;
           for (unsigned int i = 0; i < n; ++i)
@@ -391,7 +422,8 @@ namespace fdem
           for (unsigned int i = 0; i < n; ++i)
             x[i] *= R[i];
         }
-      if (!std::isfinite(A_norm) || !(inverse_norm > 0) || !std::isfinite(inverse_norm))
+      if (!std::isfinite(A_norm) || !(inverse_norm > 0) ||
+          !std::isfinite(inverse_norm))
         return false;
       const double condition = (1.0 / A_norm) / inverse_norm;
       if (!(condition >= control.min_reused_condition))

@@ -27,7 +27,7 @@ namespace fdem
       // the error in one line instead.
       std::ostringstream quiet;
       std::streambuf    *cerr_buffer = std::cerr.rdbuf(quiet.rdbuf());
-      const auto restore = [&]() { std::cerr.rdbuf(cerr_buffer); };
+      const auto         restore     = [&]() { std::cerr.rdbuf(cerr_buffer); };
       try
         {
           // Evaluating once makes the parser report unknown names now.
@@ -106,7 +106,7 @@ namespace fdem
     }
 
     void
-    BoundaryParameters::parse_parameters(ParameterHandler & prm,
+    BoundaryParameters::parse_parameters(ParameterHandler  &prm,
                                          const std::string &path,
                                          const unsigned int dim)
     {
@@ -123,11 +123,13 @@ namespace fdem
       if (Utilities::trim(traction) == "0")
         traction = "0";
       AssertThrow(traction == "0" || expression_parses(traction, dim, dim),
-                  ExcMessage(path + "/Traction: cannot parse '" + traction +
-                             "' as " + std::to_string(dim) +
-                             " functions of the coordinates separated by ';'."));
+                  ExcMessage(
+                    path + "/Traction: cannot parse '" + traction + "' as " +
+                    std::to_string(dim) +
+                    " functions of the coordinates separated by ';'."));
       pressure = Utilities::trim(pressure);
-      AssertThrow(pressure == "piezometric" || expression_parses(pressure, dim, 1),
+      AssertThrow(pressure == "piezometric" ||
+                    expression_parses(pressure, dim, 1),
                   ExcMessage(path + "/Pressure: cannot parse '" + pressure +
                              "' as a function of " +
                              (dim == 2 ? "x, y." : "x, y, z.")));
@@ -143,65 +145,72 @@ namespace fdem
         "Largest initial gap (length) between a node of one side and the node "
         "of the other side found along the interface normal; 0 pairs only "
         "coincident nodes.");
-      prm.declare_entry("Friction angle",
-                        "30",
-                        Patterns::Double(0, 90),
-                        "Friction angle phi of the interface (degrees, 0 <= "
-                        "phi < 90): Mohr-Coulomb |tau| <= c + sigma_n tan(phi).");
-      prm.declare_entry("Cohesion",
-                        "0",
-                        Patterns::Double(0),
-                        "Cohesion c of the interface (force/length^2, e.g. kPa).");
-      prm.declare_entry("Tensile strength",
-                        "0",
-                        Patterns::Double(0),
-                        "Tensile strength sigma_t of the interface "
-                        "(force/length^2): a closed pair opens when its tension "
-                        "exceeds sigma_t times its area.");
-      prm.declare_entry("Frictionless",
-                        "false",
-                        Patterns::Bool(),
-                        "A frictionless interface carries no tangential force "
-                        "(friction angle and cohesion are ignored; cohesion must "
-                        "be 0).");
+      prm.declare_entry(
+        "Friction angle",
+        "30",
+        Patterns::Double(0, 90),
+        "Friction angle phi of the interface (degrees, 0 <= "
+        "phi < 90): Mohr-Coulomb |tau| <= c + sigma_n tan(phi).");
+      prm.declare_entry(
+        "Cohesion",
+        "0",
+        Patterns::Double(0),
+        "Cohesion c of the interface (force/length^2, e.g. kPa).");
+      prm.declare_entry(
+        "Tensile strength",
+        "0",
+        Patterns::Double(0),
+        "Tensile strength sigma_t of the interface "
+        "(force/length^2): a closed pair opens when its tension "
+        "exceeds sigma_t times its area.");
+      prm.declare_entry(
+        "Frictionless",
+        "false",
+        Patterns::Bool(),
+        "A frictionless interface carries no tangential force "
+        "(friction angle and cohesion are ignored; cohesion must "
+        "be 0).");
       prm.declare_entry("Sliding surface",
                         "true",
                         Patterns::Bool(),
                         "Part of the sliding surface: the safety factor K "
                         "divides this interface's cohesion and tan(friction "
                         "angle) (eq. 10) and sums its forces (eq. 11).");
-      prm.declare_entry("Reduced by K",
-                        "false",
-                        Patterns::Bool(),
-                        "Only with Sliding surface = false: part of the "
-                        "mechanism but not of the sliding surface (an interslice "
-                        "between two blocks of the sliding mass). The safety "
-                        "factor K divides its cohesion and tan(friction angle) "
-                        "(eq. 10) as on the sliding surface, but its forces do "
-                        "not enter F_R and F_tau (eq. 11). A sliding surface is "
-                        "always reduced.");
-      prm.declare_entry("Strength",
-                        "given",
-                        Patterns::Selection("given|material"),
-                        "Where the interface's c and phi come from: given (the "
-                        "Cohesion and Friction angle above, the same all along) "
-                        "or material (each node pair takes the Cohesion and "
-                        "Friction angle of the material it runs through: that "
-                        "of the cells of the moving block, block I, at the "
-                        "pair; those above are then not used). Tensile strength "
-                        "and Frictionless stay the interface's.");
-      prm.declare_entry("Pore pressure",
-                        "0",
-                        Patterns::Anything(),
-                        "Pore (water) pressure in the interface (force/length^2) "
-                        "as a function of x, y (and z in 3D), or 'piezometric' "
-                        "for the hydrostatic pressure below Water/Piezometric "
-                        "line. It pushes both sides apart; friction acts on the "
-                        "effective normal force.");
+      prm.declare_entry(
+        "Reduced by K",
+        "false",
+        Patterns::Bool(),
+        "Only with Sliding surface = false: part of the "
+        "mechanism but not of the sliding surface (an interslice "
+        "between two blocks of the sliding mass). The safety "
+        "factor K divides its cohesion and tan(friction angle) "
+        "(eq. 10) as on the sliding surface, but its forces do "
+        "not enter F_R and F_tau (eq. 11). A sliding surface is "
+        "always reduced.");
+      prm.declare_entry(
+        "Strength",
+        "given",
+        Patterns::Selection("given|material"),
+        "Where the interface's c and phi come from: given (the "
+        "Cohesion and Friction angle above, the same all along) "
+        "or material (each node pair takes the Cohesion and "
+        "Friction angle of the material it runs through: that "
+        "of the cells of the moving block, block I, at the "
+        "pair; those above are then not used). Tensile strength "
+        "and Frictionless stay the interface's.");
+      prm.declare_entry(
+        "Pore pressure",
+        "0",
+        Patterns::Anything(),
+        "Pore (water) pressure in the interface (force/length^2) "
+        "as a function of x, y (and z in 3D), or 'piezometric' "
+        "for the hydrostatic pressure below Water/Piezometric "
+        "line. It pushes both sides apart; friction acts on the "
+        "effective normal force.");
     }
 
     void
-    InterfaceParameters::parse_parameters(ParameterHandler & prm,
+    InterfaceParameters::parse_parameters(ParameterHandler  &prm,
                                           const std::string &path,
                                           const unsigned int dim)
     {
@@ -211,21 +220,25 @@ namespace fdem
       tensile_strength = prm.get_double("Tensile strength");
       frictionless     = prm.get_bool("Frictionless");
       AssertThrow(friction_angle < 90,
-                  ExcMessage(path + "/Friction angle: must be below 90 degrees."));
+                  ExcMessage(path +
+                             "/Friction angle: must be below 90 degrees."));
       AssertThrow(!(frictionless && cohesion > 0),
-                  ExcMessage(path + "/Cohesion: a frictionless interface cannot "
-                                    "have cohesion; set it to 0."));
-      sliding_surface = prm.get_bool("Sliding surface");
-      reduced_by_K    = sliding_surface || prm.get_bool("Reduced by K");
+                  ExcMessage(path +
+                             "/Cohesion: a frictionless interface cannot "
+                             "have cohesion; set it to 0."));
+      sliding_surface        = prm.get_bool("Sliding surface");
+      reduced_by_K           = sliding_surface || prm.get_bool("Reduced by K");
       strength_from_material = prm.get("Strength") == "material";
       AssertThrow(!(frictionless && strength_from_material),
                   ExcMessage(path + "/Strength: a frictionless interface takes "
                                     "no strength from its materials; set it to "
                                     "'given'."));
-      pore_pressure   = Utilities::trim(prm.get("Pore pressure"));
-      AssertThrow(pore_pressure == "piezometric" || expression_parses(pore_pressure, dim, 1),
-                  ExcMessage(path + "/Pore pressure: cannot parse '" + pore_pressure +
-                             "' as a function of the coordinates (or 'piezometric')."));
+      pore_pressure = Utilities::trim(prm.get("Pore pressure"));
+      AssertThrow(pore_pressure == "piezometric" ||
+                    expression_parses(pore_pressure, dim, 1),
+                  ExcMessage(
+                    path + "/Pore pressure: cannot parse '" + pore_pressure +
+                    "' as a function of the coordinates (or 'piezometric')."));
     }
 
     void
@@ -242,13 +255,14 @@ namespace fdem
                         "1.0",
                         Patterns::Anything(),
                         "K of the first iteration, > 0 (dimensionless).");
-      prm.declare_entry("Tolerance",
-                        "1e-6",
-                        Patterns::Anything(),
-                        "Relative tolerance, > 0 (dimensionless): the iteration "
-                        "stops when K* reproduces K to it (eq. 13), and a K is "
-                        "reported only if a solved state shows that (its "
-                        "certificate).");
+      prm.declare_entry(
+        "Tolerance",
+        "1e-6",
+        Patterns::Anything(),
+        "Relative tolerance, > 0 (dimensionless): the iteration "
+        "stops when K* reproduces K to it (eq. 13), and a K is "
+        "reported only if a solved state shows that (its "
+        "certificate).");
       prm.declare_entry("Maximum iterations",
                         "60",
                         Patterns::Integer(1),
@@ -259,42 +273,46 @@ namespace fdem
                         Patterns::Anything(),
                         "If no K down to this value has a static solution, the "
                         "model has none (> 0, dimensionless).");
-      prm.declare_entry("Bracket agreement",
-                        "0.01",
-                        Patterns::Double(0, 1),
-                        "A limit bracketed by a solved K_lo and a K_hi just above "
-                        "it whose solve fails as a mechanism is certified when K* "
-                        "at K_lo agrees with K_lo to Tolerance; or, conservatively, "
-                        "when K* exceeds K_lo, and the smallest K above it whose "
-                        "solve fails as a mechanism lies beyond K_lo, by at most "
-                        "this much (relative, dimensionless): equilibrium is then "
-                        "lost before eq. (12) reaches its limit (e.g. a wedge whose "
-                        "second plane lifts off), or solves between failed "
-                        "numerically; K_lo is reported and the run warns. Larger "
-                        "disagreements (an undeclared contact gives K* many times "
-                        "K) are refused. 0 asks for agreement to Tolerance.");
-      prm.declare_entry("Stiffness check",
-                        "true",
-                        Patterns::Bool(),
-                        "After the safety factor, compute it again with the "
-                        "moving blocks (those with free rigid modes) Stiffness "
-                        "check factor times stiffer and times softer: contact "
-                        "solves only, on the same factorisation. A K that "
-                        "changes by more than Stiffness check warning means the "
-                        "sliding surface is not a mechanism for a rigid block and "
-                        "K measures the blocks' elasticity. Dense mixed system "
-                        "only; set false to save its memory (one more matrix of "
-                        "the size of C) on large models.");
-      prm.declare_entry("Stiffness check factor",
-                        "10",
-                        Patterns::Double(1.0 + 1e-12, 1e6),
-                        "How much stiffer and softer the moving blocks are made "
-                        "for the stiffness check (dimensionless, > 1).");
-      prm.declare_entry("Stiffness check warning",
-                        "0.01",
-                        Patterns::Double(0, 1e6),
-                        "Relative change of K in the stiffness check beyond which "
-                        "the run warns (dimensionless, >= 0).");
+      prm.declare_entry(
+        "Bracket agreement",
+        "0.01",
+        Patterns::Double(0, 1),
+        "A limit bracketed by a solved K_lo and a K_hi just above "
+        "it whose solve fails as a mechanism is certified when K* "
+        "at K_lo agrees with K_lo to Tolerance; or, conservatively, "
+        "when K* exceeds K_lo, and the smallest K above it whose "
+        "solve fails as a mechanism lies beyond K_lo, by at most "
+        "this much (relative, dimensionless): equilibrium is then "
+        "lost before eq. (12) reaches its limit (e.g. a wedge whose "
+        "second plane lifts off), or solves between failed "
+        "numerically; K_lo is reported and the run warns. Larger "
+        "disagreements (an undeclared contact gives K* many times "
+        "K) are refused. 0 asks for agreement to Tolerance.");
+      prm.declare_entry(
+        "Stiffness check",
+        "true",
+        Patterns::Bool(),
+        "After the safety factor, compute it again with the "
+        "moving blocks (those with free rigid modes) Stiffness "
+        "check factor times stiffer and times softer: contact "
+        "solves only, on the same factorisation. A K that "
+        "changes by more than Stiffness check warning means the "
+        "sliding surface is not a mechanism for a rigid block and "
+        "K measures the blocks' elasticity. Dense mixed system "
+        "only; set false to save its memory (one more matrix of "
+        "the size of C) on large models.");
+      prm.declare_entry(
+        "Stiffness check factor",
+        "10",
+        Patterns::Double(1.0 + 1e-12, 1e6),
+        "How much stiffer and softer the moving blocks are made "
+        "for the stiffness check (dimensionless, > 1).");
+      prm.declare_entry(
+        "Stiffness check warning",
+        "0.01",
+        Patterns::Double(0, 1e6),
+        "Relative change of K in the stiffness check beyond which "
+        "the run warns (dimensionless, >= 0).");
       prm.leave_subsection();
     }
 
@@ -312,18 +330,19 @@ namespace fdem
           }
         catch (...)
           {
-            AssertThrow(false, ExcMessage("Safety factor/" + entry + ": '" +
-                                          prm.get(entry) + "' is not a number."));
+            AssertThrow(false,
+                        ExcMessage("Safety factor/" + entry + ": '" +
+                                   prm.get(entry) + "' is not a number."));
           }
         AssertThrow(value > 0 && std::isfinite(value),
-                    ExcMessage("Safety factor/" + entry + ": must be > 0, got " +
-                               prm.get(entry) + "."));
+                    ExcMessage("Safety factor/" + entry +
+                               ": must be > 0, got " + prm.get(entry) + "."));
         return value;
       };
-      initial_factor = positive("Initial factor");
-      tolerance      = positive("Tolerance");
-      minimum_factor = positive("Minimum factor");
-      max_iterations = prm.get_integer("Maximum iterations");
+      initial_factor          = positive("Initial factor");
+      tolerance               = positive("Tolerance");
+      minimum_factor          = positive("Minimum factor");
+      max_iterations          = prm.get_integer("Maximum iterations");
       bracket_agreement       = prm.get_double("Bracket agreement");
       stiffness_check         = prm.get_bool("Stiffness check");
       stiffness_check_factor  = prm.get_double("Stiffness check factor");
@@ -335,10 +354,11 @@ namespace fdem
     WaterParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Water");
-      prm.declare_entry("Unit weight of water",
-                        "9.81",
-                        Patterns::Double(0),
-                        "Unit weight of water gamma_w (force/length^3, e.g. kN/m^3).");
+      prm.declare_entry(
+        "Unit weight of water",
+        "9.81",
+        Patterns::Double(0),
+        "Unit weight of water gamma_w (force/length^3, e.g. kN/m^3).");
       prm.declare_entry("Piezometric line",
                         "",
                         Patterns::Anything(),
@@ -363,12 +383,15 @@ namespace fdem
             parse_vector(point, 2, "Water/Piezometric line");
           piezometric_line.push_back({{xy[0], xy[1]}});
           AssertThrow(piezometric_line.size() == 1 ||
-                        xy[0] > piezometric_line[piezometric_line.size() - 2][0],
-                      ExcMessage("Water/Piezometric line: the x coordinates must "
-                                 "increase."));
+                        xy[0] >
+                          piezometric_line[piezometric_line.size() - 2][0],
+                      ExcMessage(
+                        "Water/Piezometric line: the x coordinates must "
+                        "increase."));
         }
       AssertThrow(piezometric_line.size() != 1,
-                  ExcMessage("Water/Piezometric line: give at least two points."));
+                  ExcMessage(
+                    "Water/Piezometric line: give at least two points."));
       prm.leave_subsection();
     }
 
@@ -414,58 +437,64 @@ namespace fdem
                         Patterns::Double(0),
                         "Gravitational acceleration (length/time^2), used for "
                         "blocks given a density.");
-      prm.declare_entry("Horizontal seismic coefficient",
-                        "0",
-                        Patterns::Double(-1, 1),
-                        "Pseudo-static horizontal seismic coefficient kh "
-                        "(dimensionless, a fraction of g, -1 to 1): every block "
-                        "carries a horizontal body force kh times its weight, in "
-                        "the Seismic direction (by default towards the free face, "
-                        "the horizontal direction in which the sliding mass "
-                        "moves); a negative kh points the other way. Superposed "
-                        "on the gravity solution without a new factorisation.");
-      prm.declare_entry("Vertical seismic coefficient",
-                        "0",
-                        Patterns::Double(-1, 1),
-                        "Pseudo-static vertical seismic coefficient kv "
-                        "(dimensionless, -1 to 1, below 1): a body force kv times "
-                        "the weight, positive UPWARDS (against gravity: the "
-                        "weight becomes (1 - kv) W), negative downwards.");
-      prm.declare_entry("Seismic direction",
-                        "towards free face",
-                        Patterns::Anything(),
-                        "Direction of a positive kh: 'towards free face' (the "
-                        "horizontal part, perpendicular to gravity, of the "
-                        "downslope component of gravity along the sliding "
-                        "surfaces, summed over their node pairs with their areas: "
-                        "on a plane the dip direction, on a slip circle the way "
-                        "the mass slides), or 2 or 3 comma-separated numbers as "
-                        "the dimension (any length, normalised; its part along "
-                        "gravity is removed).");
-      prm.declare_entry("Seismic force on pore water",
-                        "false",
-                        Patterns::Bool(),
-                        "Whether kh and kv act on the saturated unit weight below "
-                        "the water table (the pore water moves with the soil), "
-                        "or on the unit weight everywhere (false: the pore "
-                        "water's extra weight carries no seismic force).");
+      prm.declare_entry(
+        "Horizontal seismic coefficient",
+        "0",
+        Patterns::Double(-1, 1),
+        "Pseudo-static horizontal seismic coefficient kh "
+        "(dimensionless, a fraction of g, -1 to 1): every block "
+        "carries a horizontal body force kh times its weight, in "
+        "the Seismic direction (by default towards the free face, "
+        "the horizontal direction in which the sliding mass "
+        "moves); a negative kh points the other way. Superposed "
+        "on the gravity solution without a new factorisation.");
+      prm.declare_entry(
+        "Vertical seismic coefficient",
+        "0",
+        Patterns::Double(-1, 1),
+        "Pseudo-static vertical seismic coefficient kv "
+        "(dimensionless, -1 to 1, below 1): a body force kv times "
+        "the weight, positive UPWARDS (against gravity: the "
+        "weight becomes (1 - kv) W), negative downwards.");
+      prm.declare_entry(
+        "Seismic direction",
+        "towards free face",
+        Patterns::Anything(),
+        "Direction of a positive kh: 'towards free face' (the "
+        "horizontal part, perpendicular to gravity, of the "
+        "downslope component of gravity along the sliding "
+        "surfaces, summed over their node pairs with their areas: "
+        "on a plane the dip direction, on a slip circle the way "
+        "the mass slides), or 2 or 3 comma-separated numbers as "
+        "the dimension (any length, normalised; its part along "
+        "gravity is removed).");
+      prm.declare_entry(
+        "Seismic force on pore water",
+        "false",
+        Patterns::Bool(),
+        "Whether kh and kv act on the saturated unit weight below "
+        "the water table (the pore water moves with the soil), "
+        "or on the unit weight everywhere (false: the pore "
+        "water's extra weight carries no seismic force).");
       prm.leave_subsection();
     }
 
     void
-    LoadParameters::parse_parameters(ParameterHandler &prm,
+    LoadParameters::parse_parameters(ParameterHandler  &prm,
                                      const unsigned int dim)
     {
       prm.enter_subsection("Loads");
-      const std::string direction = Utilities::trim(prm.get("Gravity direction"));
+      const std::string direction =
+        Utilities::trim(prm.get("Gravity direction"));
       if (direction.empty())
         {
           gravity_direction.assign(dim, 0.0);
           gravity_direction[dim - 1] = -1;
         }
       else
-        gravity_direction = parse_vector(direction, dim, "Loads/Gravity direction");
-      double norm       = 0;
+        gravity_direction =
+          parse_vector(direction, dim, "Loads/Gravity direction");
+      double norm = 0;
       for (const double g : gravity_direction)
         norm += g * g;
       AssertThrow(norm > 0,
@@ -473,16 +502,21 @@ namespace fdem
       for (double &g : gravity_direction)
         g /= std::sqrt(norm);
       gravitational_acceleration = prm.get_double("Gravitational acceleration");
-      horizontal_seismic_coefficient = prm.get_double("Horizontal seismic coefficient");
-      vertical_seismic_coefficient   = prm.get_double("Vertical seismic coefficient");
-      AssertThrow(vertical_seismic_coefficient < 1,
-                  ExcMessage("Loads/Vertical seismic coefficient: must be below 1 (kv = 1 "
-                             "upwards cancels the weight)."));
+      horizontal_seismic_coefficient =
+        prm.get_double("Horizontal seismic coefficient");
+      vertical_seismic_coefficient =
+        prm.get_double("Vertical seismic coefficient");
+      AssertThrow(
+        vertical_seismic_coefficient < 1,
+        ExcMessage(
+          "Loads/Vertical seismic coefficient: must be below 1 (kv = 1 "
+          "upwards cancels the weight)."));
       const std::string seismic = Utilities::trim(prm.get("Seismic direction"));
       seismic_direction.clear();
       if (seismic != "towards free face")
         {
-          seismic_direction = parse_vector(seismic, dim, "Loads/Seismic direction");
+          seismic_direction =
+            parse_vector(seismic, dim, "Loads/Seismic direction");
           double along = 0, norm = 0;
           for (unsigned int d = 0; d < dim; ++d)
             along += seismic_direction[d] * gravity_direction[d];
@@ -491,9 +525,11 @@ namespace fdem
               seismic_direction[d] -= along * gravity_direction[d];
               norm += seismic_direction[d] * seismic_direction[d];
             }
-          AssertThrow(norm > 1e-20,
-                      ExcMessage("Loads/Seismic direction: 'towards free face' or a "
-                                 "direction with a horizontal part (not along gravity)."));
+          AssertThrow(
+            norm > 1e-20,
+            ExcMessage(
+              "Loads/Seismic direction: 'towards free face' or a "
+              "direction with a horizontal part (not along gravity)."));
           for (double &h : seismic_direction)
             h /= std::sqrt(norm);
         }

@@ -38,7 +38,7 @@ namespace fdem
       read_text(const std::string &filename, const std::string &context)
       {
         namespace fs = std::filesystem;
-        std::error_code error;
+        std::error_code       error;
         const fs::file_status status = fs::status(filename, error);
         AssertThrow(fs::exists(status),
                     ExcMessage(context + ": no such file."));
@@ -136,10 +136,10 @@ namespace fdem
                  std::vector<std::string> &stack)
       {
         std::map<std::string, Setting> settings;
-        std::istringstream      in(text);
-        std::string             raw;
-        std::vector<std::string> path;
-        unsigned int            line_number = 0;
+        std::istringstream             in(text);
+        std::string                    raw;
+        std::vector<std::string>       path;
+        unsigned int                   line_number = 0;
         while (std::getline(in, raw))
           {
             ++line_number;
@@ -155,17 +155,17 @@ namespace fdem
               }
             // A comment starts at the first '#' not escaped as '\#'.
             for (std::size_t p = line.find('#'); p != std::string::npos;
-                 p = line.find('#', p + 1))
+                 p             = line.find('#', p + 1))
               if (p == 0 || line[p - 1] != '\\')
                 {
-                  line.erase(p);
-                  break;
+                              line.erase(p);
+                              break;
                 }
             line = Utilities::trim(line);
             if (line.empty())
               continue;
-            const std::string where = "line " + std::to_string(first_line) +
-                                      " of '" + filename + "'";
+            const std::string where =
+              "line " + std::to_string(first_line) + " of '" + filename + "'";
             if (starts_with_keyword(line, "subsection"))
               path.push_back(collapsed(line.substr(10)));
             else if (starts_with_keyword(line, "end"))
@@ -197,10 +197,11 @@ namespace fdem
                 // deal.II opens the name as written (relative to the
                 // working directory).
                 const std::string included = Utilities::trim(line.substr(7));
-                const std::string context =
-                  file_context(filename) + ", line " + std::to_string(first_line) +
-                  ": the included file '" + included + "'";
-                std::error_code error;
+                const std::string context = file_context(filename) + ", line " +
+                                            std::to_string(first_line) +
+                                            ": the included file '" + included +
+                                            "'";
+                std::error_code   error;
                 const std::string canonical =
                   std::filesystem::weakly_canonical(included, error).string();
                 std::string chain;
@@ -211,8 +212,10 @@ namespace fdem
                     cycle = cycle || (open == canonical);
                   }
                 AssertThrow(!cycle,
-                            ExcMessage(context + " is already being read ("
-                                       "includes: " + chain + "'" + included +
+                            ExcMessage(context +
+                                       " is already being read ("
+                                       "includes: " +
+                                       chain + "'" + included +
                                        "'); a file cannot include itself."));
                 AssertThrow(stack.size() < max_include_depth,
                             ExcMessage(context + " is nested more than " +

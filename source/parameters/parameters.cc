@@ -59,19 +59,20 @@ namespace fdem
                           "is free.");
         prm.leave_subsection();
         prm.enter_subsection("Interfaces");
-        prm.declare_entry("Names",
-                          default_interfaces,
-                          Patterns::List(Patterns::Anything(), 0),
-                          "Names of the interfaces between blocks (possible "
-                          "sliding surfaces): physical groups of dimension "
-                          "'Dimension'-1. Each gets a subsection of this name.");
+        prm.declare_entry(
+          "Names",
+          default_interfaces,
+          Patterns::List(Patterns::Anything(), 0),
+          "Names of the interfaces between blocks (possible "
+          "sliding surfaces): physical groups of dimension "
+          "'Dimension'-1. Each gets a subsection of this name.");
         prm.leave_subsection();
       }
 
       template <typename SubsectionParameters>
       void
-      declare_named_subsections(ParameterHandler &              prm,
-                                const std::string &             section,
+      declare_named_subsections(ParameterHandler               &prm,
+                                const std::string              &section,
                                 const std::vector<std::string> &names)
       {
         prm.enter_subsection(section);
@@ -94,7 +95,8 @@ namespace fdem
         for (unsigned int i = 0; i < names.size(); ++i)
           {
             AssertThrow(!names[i].empty(),
-                        ExcMessage(section + "/Names: empty name in the list."));
+                        ExcMessage(section +
+                                   "/Names: empty name in the list."));
             for (unsigned int j = 0; j < i; ++j)
               AssertThrow(names[i] != names[j],
                           ExcMessage(section + "/Names: '" + names[i] +
@@ -107,7 +109,7 @@ namespace fdem
       /// ParameterHandler does not make); ParameterHandler's own errors say
       /// the line and file, which is what a user needs.
       void
-      parse_file(ParameterHandler & prm,
+      parse_file(ParameterHandler  &prm,
                  const std::string &filename,
                  const bool         skip_undefined)
       {
@@ -116,7 +118,7 @@ namespace fdem
     } // namespace
 
     void
-    Parameters::declare_parameters(ParameterHandler &              prm,
+    Parameters::declare_parameters(ParameterHandler               &prm,
                                    const std::vector<std::string> &blocks,
                                    const std::vector<std::string> &boundaries,
                                    const std::vector<std::string> &interfaces,
@@ -127,16 +129,19 @@ namespace fdem
                         Patterns::Integer(2, 3),
                         "Spatial dimension: 2 (plane strain, per unit "
                         "thickness) or 3.");
-      prm.declare_entry("Finite element degree",
-                        "1",
-                        Patterns::Integer(1, 2),
-                        "Polynomial degree of the block elements: 1 (Q1) or 2 "
-                        "(Q2). Interface node pairs sit on every support point.");
+      prm.declare_entry(
+        "Finite element degree",
+        "1",
+        Patterns::Integer(1, 2),
+        "Polynomial degree of the block elements: 1 (Q1) or 2 "
+        "(Q2). Interface node pairs sit on every support point.");
       GeometryParameters::declare_parameters(prm);
       LoadParameters::declare_parameters(prm);
       declare_name_lists(prm);
       declare_named_subsections<MaterialParameters>(prm, "Blocks", blocks);
-      declare_named_subsections<MaterialParameters>(prm, "Materials", materials);
+      declare_named_subsections<MaterialParameters>(prm,
+                                                    "Materials",
+                                                    materials);
       declare_named_subsections<BoundaryParameters>(prm,
                                                     "Boundaries",
                                                     boundaries);
@@ -180,7 +185,8 @@ namespace fdem
       for (const std::string &name : material_names)
         AssertThrow(std::find(block_names.begin(), block_names.end(), name) ==
                       block_names.end(),
-                    ExcMessage("Materials/Names: '" + name + "' is also a "
+                    ExcMessage("Materials/Names: '" + name +
+                               "' is also a "
                                "block; a physical group is either a block or "
                                "a material region."));
       for (const std::string &name : boundary_names)
@@ -219,7 +225,9 @@ namespace fdem
       for (const std::string &name : interface_names)
         {
           prm.enter_subsection(name);
-          interfaces[name].parse_parameters(prm, "Interfaces/" + name, dimension);
+          interfaces[name].parse_parameters(prm,
+                                            "Interfaces/" + name,
+                                            dimension);
           prm.leave_subsection();
         }
       prm.leave_subsection();
@@ -229,21 +237,26 @@ namespace fdem
     void
     Parameters::probabilistic_check_targets() const
     {
-      std::map<std::string, bool> interfaces_without_own_strength, materials_with_strength;
+      std::map<std::string, bool> interfaces_without_own_strength,
+        materials_with_strength;
       for (const auto &[name, interface] : interfaces)
         interfaces_without_own_strength[name] =
           interface.strength_from_material || interface.frictionless;
       for (const auto &[name, material] : materials)
         materials_with_strength[name] = material.has_strength;
-      probabilistic.check_targets(interfaces_without_own_strength, materials_with_strength);
+      probabilistic.check_targets(interfaces_without_own_strength,
+                                  materials_with_strength);
       for (const auto &variable : probabilistic.variables)
-        AssertThrow(variable.owner != analyses::RandomVariable::Owner::water ||
-                      water.piezometric_line.size() >= 2,
-                    ExcMessage("Probabilistic/Variables: '" + variable.target +
-                               "' shifts Water/Piezometric line, but no line is given."));
-      AssertThrow(!probabilistic.compute || safety_factor.compute,
-                  ExcMessage("Probabilistic/Compute: needs Safety factor/Compute = true (the "
-                             "samples start from the safety factor's state)."));
+        AssertThrow(
+          variable.owner != analyses::RandomVariable::Owner::water ||
+            water.piezometric_line.size() >= 2,
+          ExcMessage("Probabilistic/Variables: '" + variable.target +
+                     "' shifts Water/Piezometric line, but no line is given."));
+      AssertThrow(
+        !probabilistic.compute || safety_factor.compute,
+        ExcMessage(
+          "Probabilistic/Compute: needs Safety factor/Compute = true (the "
+          "samples start from the safety factor's state)."));
     }
 
     std::string
@@ -304,7 +317,8 @@ namespace fdem
       materials  = names_in(names_prm, "Materials");
 
       ParameterHandler prm;
-      Parameters::declare_parameters(prm, blocks, boundaries, interfaces, materials);
+      Parameters::declare_parameters(
+        prm, blocks, boundaries, interfaces, materials);
       if (!filename.empty())
         parse_file(prm, filename, false);
       prm.print_parameters(out, ParameterHandler::Text);

@@ -3,10 +3,9 @@
 #include <fdem/postprocess/interface_output.h>
 #include <fdem/postprocess/output_files.h>
 
-
-#include <fstream>
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <map>
 #include <numeric>
@@ -19,11 +18,11 @@ namespace fdem
 
     template <int dim>
     std::vector<PairResult<dim>>
-    pair_results(const contact::Interface<dim> &         interface,
-                 const unsigned int                      first_pair,
-                 const contact::ContactSolution &            solution,
+    pair_results(const contact::Interface<dim>              &interface,
+                 const unsigned int                          first_pair,
+                 const contact::ContactSolution             &solution,
                  const std::vector<contact::PairState<dim>> &states,
-                 const std::vector<contact::PairStrength> &  full_strengths)
+                 const std::vector<contact::PairStrength>   &full_strengths)
     {
       std::vector<PairResult<dim>> results;
       for (unsigned int k = 0; k < interface.pairs.size(); ++k)
@@ -38,25 +37,29 @@ namespace fdem
             {
               r.tangential_force[i] = solution.forces[dim * p + 1 + i];
               shear2 += r.tangential_force[i] * r.tangential_force[i];
-              slip2 += std::pow(solution.relative_displacements[dim * p + 1 + i], 2);
+              slip2 +=
+                std::pow(solution.relative_displacements[dim * p + 1 + i], 2);
             }
           r.normal_pressure = -r.normal_force / pair.area;
           r.shear_stress    = std::sqrt(shear2) / pair.area;
           r.gap             = solution.relative_displacements[dim * p];
-          r.slip            = dim == 2 ? solution.relative_displacements[dim * p + 1] :
-                                         std::sqrt(slip2);
-          r.status          = states[p].status;
+          r.slip   = dim == 2 ? solution.relative_displacements[dim * p + 1] :
+                                std::sqrt(slip2);
+          r.status = states[p].status;
           if (r.status != contact::PairStatus::open)
             {
-              const double strength = full_strengths[p].shear_capacity(r.normal_force);
-              const double shear    = std::sqrt(shear2);
+              const double strength =
+                full_strengths[p].shear_capacity(r.normal_force);
+              const double shear = std::sqrt(shear2);
               r.local_safety_factor =
-                std::max(0.0, shear * 1000 > strength ? strength / shear : 1000.0);
+                std::max(0.0,
+                         shear * 1000 > strength ? strength / shear : 1000.0);
             }
-          r.area            = pair.area;
-          r.initial_gap     = pair.initial_gap;
-          r.cohesion        = full_strengths[p].cohesion_force / pair.area;
-          r.friction_angle  = std::atan(full_strengths[p].friction_coefficient) * 180 / numbers::PI;
+          r.area           = pair.area;
+          r.initial_gap    = pair.initial_gap;
+          r.cohesion       = full_strengths[p].cohesion_force / pair.area;
+          r.friction_angle = std::atan(full_strengths[p].friction_coefficient) *
+                             180 / numbers::PI;
           results.push_back(r);
         }
       return results;
@@ -81,7 +84,9 @@ namespace fdem
         // Order by t: the end pair (t = 0) last.
         std::vector<unsigned int> order(n);
         std::iota(order.begin(), order.end(), 0);
-        std::sort(order.begin(), order.end(), [&](auto a, auto b) { return t[a] < t[b]; });
+        std::sort(order.begin(), order.end(), [&](auto a, auto b) {
+          return t[a] < t[b];
+        });
         const std::vector<double> t_in = t, q_in = q;
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -125,7 +130,8 @@ namespace fdem
             const double discriminant = c[1] * c[1] - 4 * c[2] * c[0];
             if (discriminant >= 0)
               for (const double sign : {-1.0, 1.0})
-                roots.push_back((-c[1] + sign * std::sqrt(discriminant)) / (2 * c[2]));
+                roots.push_back((-c[1] + sign * std::sqrt(discriminant)) /
+                                (2 * c[2]));
           }
         const double lower = t[n - 2] / gap; // the previous pair, < 0
         double       best  = 0.5;
@@ -155,17 +161,19 @@ namespace fdem
       const unsigned int n = results.size();
       if (n == 0)
         return 0;
-      // The chord: from the pair farthest from pair 0 to the one farthest from it.
+      // The chord: from the pair farthest from pair 0 to the one farthest from
+      // it.
       const auto farthest_from = [&](const Point<dim> &x) {
         unsigned int best = 0;
         for (unsigned int k = 1; k < n; ++k)
-          if (results[k].position.distance(x) > results[best].position.distance(x))
+          if (results[k].position.distance(x) >
+              results[best].position.distance(x))
             best = k;
         return best;
       };
-      const unsigned int   A = farthest_from(results[0].position);
-      const unsigned int   B = farthest_from(results[A].position);
-      Tensor<1, dim>       e = results[B].position - results[A].position;
+      const unsigned int A = farthest_from(results[0].position);
+      const unsigned int B = farthest_from(results[A].position);
+      Tensor<1, dim>     e = results[B].position - results[A].position;
       if (e.norm() > 0)
         e /= e.norm();
       std::vector<unsigned int> order(n);
@@ -173,7 +181,9 @@ namespace fdem
       std::vector<double> s(n);
       for (unsigned int k = 0; k < n; ++k)
         s[k] = (results[k].position - results[A].position) * e;
-      std::sort(order.begin(), order.end(), [&](auto a, auto b) { return s[a] < s[b]; });
+      std::sort(order.begin(), order.end(), [&](auto a, auto b) {
+        return s[a] < s[b];
+      });
       const auto closed = [&](const unsigned int i) {
         return results[order[i]].status != contact::PairStatus::open;
       };
@@ -193,23 +203,26 @@ namespace fdem
           while (j + 1 < n && closed(j + 1))
             ++j;
           const double s_first = s[order[i]], s_last = s[order[j]];
-          const double half    = 0.5 * (s_last - s_first);
+          const double half = 0.5 * (s_last - s_first);
           double       left = s_first, right = s_last;
           // Edge towards an open neighbour, from the outer half of the run.
-          const auto edge = [&](const unsigned int end, const int step, const double s_open) {
-            std::vector<double> t, q;
-            for (unsigned int k = i; k <= j; ++k)
-              {
-                const double distance = std::abs(s[order[k]] - s[order[end]]);
-                if (distance <= half + 1e-12 * (1 + half))
-                  {
-                    // t from the end pair towards the open one: <= 0 inside.
-                    t.push_back(step * (s[order[k]] - s[order[end]]));
-                    q.push_back(pressure(k));
-                  }
-              }
-            return s[order[end]] + step * edge_of_pressure_profile(t, q, std::abs(s_open - s[order[end]]));
-          };
+          const auto edge =
+            [&](const unsigned int end, const int step, const double s_open) {
+              std::vector<double> t, q;
+              for (unsigned int k = i; k <= j; ++k)
+                {
+                  const double distance = std::abs(s[order[k]] - s[order[end]]);
+                  if (distance <= half + 1e-12 * (1 + half))
+                    {
+                      // t from the end pair towards the open one: <= 0 inside.
+                      t.push_back(step * (s[order[k]] - s[order[end]]));
+                      q.push_back(pressure(k));
+                    }
+                }
+              return s[order[end]] +
+                     step * edge_of_pressure_profile(
+                              t, q, std::abs(s_open - s[order[end]]));
+            };
           if (i > 0)
             left = edge(i, -1, s[order[i - 1]]);
           if (j + 1 < n)
@@ -220,11 +233,13 @@ namespace fdem
       return extent;
     }
 
-#define FDEM_INSTANTIATE(dim)                                                   \
-  template double contact_extent(const std::vector<PairResult<dim>> &);         \
-  template std::vector<PairResult<dim>> pair_results(                           \
-    const contact::Interface<dim> &, const unsigned int,                        \
-    const contact::ContactSolution &, const std::vector<contact::PairState<dim>> &, \
+#define FDEM_INSTANTIATE(dim)                                           \
+  template double contact_extent(const std::vector<PairResult<dim>> &); \
+  template std::vector<PairResult<dim>> pair_results(                   \
+    const contact::Interface<dim> &,                                    \
+    const unsigned int,                                                 \
+    const contact::ContactSolution &,                                   \
+    const std::vector<contact::PairState<dim>> &,                       \
     const std::vector<contact::PairStrength> &);
     FDEM_INSTANTIATE(2)
     FDEM_INSTANTIATE(3)

@@ -19,7 +19,11 @@ namespace fdem
       {
         std::string out;
         for (const char c : text)
-          out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
+          out += c == '&' ? "&amp;" :
+                 c == '<' ? "&lt;" :
+                 c == '>' ? "&gt;" :
+                 c == '"' ? "&quot;" :
+                            std::string(1, c);
         return out;
       }
     } // namespace
@@ -36,9 +40,10 @@ namespace fdem
       // K to 12 digits: steps of the iteration closer than that are one time.
       out << std::setprecision(12);
       for (const PvdEntry &entry : entries)
-        out << "    <DataSet timestep=\"" << entry.time << "\" group=\"\" part=\""
-            << entry.part << "\" name=\"" << xml_escaped(entry.name) << "\" file=\""
-            << entry.file << "\"/>\n";
+        out << "    <DataSet timestep=\"" << entry.time
+            << "\" group=\"\" part=\"" << entry.part << "\" name=\""
+            << xml_escaped(entry.name) << "\" file=\"" << entry.file
+            << "\"/>\n";
       out << "  </Collection>\n</VTKFile>\n";
     }
 
@@ -63,7 +68,8 @@ namespace fdem
     {
       std::string stem = name;
       for (char &c : stem)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_')
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' &&
+            c != '_')
           c = '_';
       return stem;
     }

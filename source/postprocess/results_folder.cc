@@ -48,34 +48,37 @@ namespace fdem
     void
     remove_partial_folder()
     {
-        if (partial_folder[0] != '\0')
-          {
-            const int folder = open(partial_folder, O_RDONLY | O_DIRECTORY);
-            if (folder >= 0)
-              {
-                char buffer[8192];
-                long n;
-                while ((n = syscall(SYS_getdents64, folder, buffer, sizeof buffer)) > 0)
-                  for (long offset = 0; offset < n;)
+      if (partial_folder[0] != '\0')
+        {
+          const int folder = open(partial_folder, O_RDONLY | O_DIRECTORY);
+          if (folder >= 0)
+            {
+              char buffer[8192];
+              long n;
+              while (
+                (n = syscall(SYS_getdents64, folder, buffer, sizeof buffer)) >
+                0)
+                for (long offset = 0; offset < n;)
+                  {
+                    struct Entry
                     {
-                      struct Entry
-                      {
-                        ino64_t        d_ino;
-                        off64_t        d_off;
-                        unsigned short d_reclen;
-                        unsigned char  d_type;
-                        char           d_name[1];
-                      };
-                      const auto *entry = reinterpret_cast<const Entry *>(buffer + offset);
-                      if (std::strcmp(entry->d_name, ".") != 0 &&
-                          std::strcmp(entry->d_name, "..") != 0)
-                        unlinkat(folder, entry->d_name, 0);
-                      offset += entry->d_reclen;
-                    }
-                close(folder);
-              }
-            rmdir(partial_folder);
-          }
+                      ino64_t        d_ino;
+                      off64_t        d_off;
+                      unsigned short d_reclen;
+                      unsigned char  d_type;
+                      char           d_name[1];
+                    };
+                    const auto *entry =
+                      reinterpret_cast<const Entry *>(buffer + offset);
+                    if (std::strcmp(entry->d_name, ".") != 0 &&
+                        std::strcmp(entry->d_name, "..") != 0)
+                      unlinkat(folder, entry->d_name, 0);
+                    offset += entry->d_reclen;
+                  }
+              close(folder);
+            }
+          rmdir(partial_folder);
+        }
     }
 
 
@@ -97,7 +100,8 @@ namespace fdem
 
 
 
-    ResultsFolder::ResultsFolder(const std::string &target_name, const bool writes_files)
+    ResultsFolder::ResultsFolder(const std::string &target_name,
+                                 const bool         writes_files)
       : writes_files(writes_files)
     {
       // "out/" and "out" are one folder; the partial one goes beside it.
@@ -112,10 +116,12 @@ namespace fdem
       fs::remove_all(staging_directory, error); // of a dead run with this pid
       fs::create_directories(staging_directory, error);
       AssertThrow(!error,
-                  dealii::ExcMessage("Output/Directory: cannot create '" + staging_directory +
-                                     "' beside '" + target + "': " + error.message() + "."));
+                  dealii::ExcMessage("Output/Directory: cannot create '" +
+                                     staging_directory + "' beside '" + target +
+                                     "': " + error.message() + "."));
       AssertThrow(staging_directory.size() < sizeof partial_folder,
-                  dealii::ExcMessage("Output/Directory: the path is too long."));
+                  dealii::ExcMessage(
+                    "Output/Directory: the path is too long."));
       std::strcpy(partial_folder, staging_directory.c_str());
       for (const int s : signals)
         std::signal(s, remove_partial_folder_and_die);
@@ -157,16 +163,18 @@ namespace fdem
         {
           lock = open(lock_file.c_str(), O_RDWR | O_CREAT, 0644);
           AssertThrow(lock >= 0,
-                      dealii::ExcMessage("Output/Directory: cannot create '" + lock_file +
+                      dealii::ExcMessage("Output/Directory: cannot create '" +
+                                         lock_file +
                                          "': " + std::strerror(errno) + "."));
           flock(lock, LOCK_EX);
           struct stat locked, named;
-          if (fstat(lock, &locked) == 0 && stat(lock_file.c_str(), &named) == 0 &&
+          if (fstat(lock, &locked) == 0 &&
+              stat(lock_file.c_str(), &named) == 0 &&
               locked.st_dev == named.st_dev && locked.st_ino == named.st_ino)
             break;
           close(lock);
         }
-      std::error_code error;
+      std::error_code   error;
       const std::string previous = target + ".previous";
       fs::remove_all(previous, error);
       if (fs::exists(target))
@@ -177,9 +185,10 @@ namespace fdem
       flock(lock, LOCK_UN);
       close(lock);
       AssertThrow(!error,
-                  dealii::ExcMessage("Output/Directory: cannot move the results into '" +
-                                     target + "': " + error.message() + " (they are in '" +
-                                     staging_directory + "')."));
+                  dealii::ExcMessage(
+                    "Output/Directory: cannot move the results into '" +
+                    target + "': " + error.message() + " (they are in '" +
+                    staging_directory + "')."));
       committed         = true;
       partial_folder[0] = '\0';
     }

@@ -23,7 +23,8 @@ namespace fdem
     section_wall_times(const TimerOutput &timer, const double total_seconds)
     {
       nlohmann::json times = nlohmann::json::object();
-      for (const auto &[section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
+      for (const auto &[section, seconds] :
+           timer.get_summary_data(TimerOutput::total_wall_time))
         times[section] = seconds;
       times["total"] = total_seconds;
       return times;
@@ -33,8 +34,9 @@ namespace fdem
     progress_stamp(const double elapsed_seconds)
     {
       std::ostringstream stamp;
-      stamp << "[" << std::fixed << std::setprecision(1) << std::setw(8) << elapsed_seconds
-            << " s " << std::setprecision(0) << std::setw(6) << peak_memory_mib() << " MiB] ";
+      stamp << "[" << std::fixed << std::setprecision(1) << std::setw(8)
+            << elapsed_seconds << " s " << std::setprecision(0) << std::setw(6)
+            << peak_memory_mib() << " MiB] ";
       return stamp.str();
     }
   } // namespace postprocess

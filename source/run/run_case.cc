@@ -17,7 +17,8 @@ namespace fdem
   std::vector<std::string>
   validate_case(const std::string &prm_file, std::ostream &log)
   {
-    const parameters::Parameters parameters = parameters::read_parameters(prm_file);
+    const parameters::Parameters parameters =
+      parameters::read_parameters(prm_file);
     if (parameters.dimension == 2)
       {
         Model<2> model(parameters, log);
@@ -35,32 +36,37 @@ namespace fdem
   run_case(const std::string &prm_file, postprocess::RunLog &log)
   {
     std::string            expanded;
-    parameters::Parameters parameters = parameters::read_parameters(prm_file, &expanded);
+    parameters::Parameters parameters =
+      parameters::read_parameters(prm_file, &expanded);
     // The run writes into a partial folder that becomes the results folder
     // only when the run ends (postprocess/results_folder.h).
     postprocess::ResultsFolder folder(parameters.output_directory(),
-                                      Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-    const std::string results   = parameters.output_directory();
-    parameters.output.directory = folder.staging();
+                                      Utilities::MPI::this_mpi_process(
+                                        MPI_COMM_WORLD) == 0);
+    const std::string          results = parameters.output_directory();
+    parameters.output.directory        = folder.staging();
     // The file stays open across commit(): the rename moves it with the
     // folder, and the result block still reaches it.
     const std::string log_file = "log.txt";
     log.open_file(folder.staging() + "/" + log_file);
-    log.brief() << "Case: " << prm_file << " (" << parameters.case_name << ", " << parameters.dimension
-                << "D)" << std::endl;
+    log.brief() << "Case: " << prm_file << " (" << parameters.case_name << ", "
+                << parameters.dimension << "D)" << std::endl;
     nlohmann::json summary;
     // The surface search replaces the circle of Geometry/Slope by the
     // critical one, on which the run below computes K as usual.
     analyses::SurfaceSearchResult search;
     if (parameters.surface_search.enabled)
-      search = analyses::search_critical_surface(parameters, folder.staging() + "/search-scratch",
-                                                 log.brief());
+      search =
+        analyses::search_critical_surface(parameters,
+                                          folder.staging() + "/search-scratch",
+                                          log.brief());
     if (parameters.dimension == 2)
       {
         CaseRun<2> case_run(parameters, expanded, log.detail(), &log.brief());
         case_run.run();
         summary = case_run.summary();
-        if (search.performed && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        if (search.performed &&
+            Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
           analyses::write_surface_search(search, folder.staging(), summary);
       }
     else
@@ -71,18 +77,22 @@ namespace fdem
       }
     // The report reads the finished files and goes into the folder before
     // it is committed (a folder with a report is whole).
-    if (parameters.output.report && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 &&
+    if (parameters.output.report &&
+        Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 &&
         summary.contains("status"))
       {
         postprocess::make_report(folder.staging(), summary, log.detail());
         if (!summary["report"]["made"].get<bool>())
-          log.brief() << "warning: " << summary["warnings"].back().get<std::string>() << std::endl;
+          log.brief() << "warning: "
+                      << summary["warnings"].back().get<std::string>()
+                      << std::endl;
       }
     folder.commit();
     std::string folder_name = results;
     while (folder_name.size() > 1 && folder_name.back() == '/')
       folder_name.pop_back();
-    for (const std::string &line : postprocess::result_block(summary, folder_name, log_file))
+    for (const std::string &line :
+         postprocess::result_block(summary, folder_name, log_file))
       log.brief() << line << std::endl;
     return summary;
   }

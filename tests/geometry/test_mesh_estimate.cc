@@ -5,9 +5,9 @@
 // against the mesh itself, for every generator, and its refusal beyond
 // Geometry/Memory limit.
 
-#include <fdem/geometry/mesh_estimate.h>
-
 #include "geometry_test_helpers.h"
+
+#include <fdem/geometry/mesh_estimate.h>
 
 using namespace geometry_test;
 
@@ -27,8 +27,9 @@ namespace
     const auto       mesh     = geometry::make_mesh<dim>(geometry, "", "");
     const double     cells    = mesh.cells.size();
     const double     vertices = mesh.vertices.size();
-    std::cout << entries << ": " << cells << " cells (estimate " << estimate.n_cells << "), "
-              << vertices << " vertices (estimate " << estimate.n_vertices << ")" << std::endl;
+    std::cout << entries << ": " << cells << " cells (estimate "
+              << estimate.n_cells << "), " << vertices << " vertices (estimate "
+              << estimate.n_vertices << ")" << std::endl;
     EXPECT_FALSE(estimate.entry.empty());
     EXPECT_LT(estimate.n_cells, factor * cells);
     EXPECT_GT(estimate.n_cells, cells / factor);
@@ -42,10 +43,12 @@ namespace
 TEST(MeshEstimate, WithinAFactorOfTheMeshIn2D)
 {
   expect_close_estimate<2>("set Source = slope");
-  expect_close_estimate<2>("set Source = slope\nsubsection Slope\nset Mesh size = 0.25\nend");
+  expect_close_estimate<2>(
+    "set Source = slope\nsubsection Slope\nset Mesh size = 0.25\nend");
   expect_close_estimate<2>("set Source = hertz");
-  expect_close_estimate<2>("set Source = hertz\nsubsection Hertz\nset Full model = true\n"
-                           "set Element shape = triangle\nend");
+  expect_close_estimate<2>(
+    "set Source = hertz\nsubsection Hertz\nset Full model = true\n"
+    "set Element shape = triangle\nend");
   expect_close_estimate<2>("set Source = inclined block");
 }
 
@@ -56,8 +59,9 @@ TEST(MeshEstimate, WithinAFactorOfTheMeshIn3D)
   expect_close_estimate<3>("set Source = block on plane");
   expect_close_estimate<3>("set Source = hertz sphere");
   expect_close_estimate<3>("set Source = wedge");
-  expect_close_estimate<3>("set Source = wedge\nsubsection Wedge\nset Element shape = "
-                           "tetrahedron\nend");
+  expect_close_estimate<3>(
+    "set Source = wedge\nsubsection Wedge\nset Element shape = "
+    "tetrahedron\nend");
 }
 
 
@@ -67,25 +71,30 @@ TEST(MeshEstimate, RefusedBeyondTheLimitWithTheEntry)
   // The default hertz mesh fits in 100 MiB, not in 1 MiB.
   EXPECT_NO_THROW(geometry::check_mesh_estimate(
     parse("set Source = hertz\nset Memory limit = 100"), 2, 1));
-  expect_error([] {
-    geometry::check_mesh_estimate(parse("set Source = hertz\nset Memory limit = 1"), 2, 1);
-  },
-               "Geometry/Hertz/Mesh size, Elements in contact zone and the lengths: "
-               "about");
+  expect_error(
+    [] {
+      geometry::check_mesh_estimate(
+        parse("set Source = hertz\nset Memory limit = 1"), 2, 1);
+    },
+    "Geometry/Hertz/Mesh size, Elements in contact zone and the lengths: "
+    "about");
   // Not a number of elements that can be counted: refused at any limit.
-  expect_error([] {
-    geometry::check_mesh_estimate(
-      parse("set Source = hertz\nset Memory limit = 1e300\nsubsection Hertz\n"
-            "set Foundation width = 1e308\nset Foundation depth = 1e308\nend"),
-      2,
-      1);
-  },
-               "Geometry/Memory limit");
+  expect_error(
+    [] {
+      geometry::check_mesh_estimate(
+        parse(
+          "set Source = hertz\nset Memory limit = 1e300\nsubsection Hertz\n"
+          "set Foundation width = 1e308\nset Foundation depth = 1e308\nend"),
+        2,
+        1);
+    },
+    "Geometry/Memory limit");
   // Without a limit: this machine's memory, or less under ulimit -v.
   EXPECT_GT(geometry::memory_limit_MiB(parse("")), 0);
   EXPECT_EQ(geometry::memory_limit_MiB(parse("set Memory limit = 123")), 123);
   // A mesh file is not estimated.
-  EXPECT_TRUE(geometry::estimate_mesh(parse("set Source = mesh file\nset Mesh file = x.msh"))
+  EXPECT_TRUE(geometry::estimate_mesh(
+                parse("set Source = mesh file\nset Mesh file = x.msh"))
                 .entry.empty());
 }
 
@@ -96,15 +105,16 @@ TEST(MeshEstimate, GeoFilesFromTheirBoundaryMesh)
   // An upper bound by design (the roundest shape of that boundary), but
   // not by more than a factor 5 on these blocks (squares, a box).
   const auto check = [](const std::string &name, auto dimension) {
-    constexpr int        dim = decltype(dimension)::value;
-    const std::string    file = data_directory + "/" + name;
+    constexpr int          dim  = decltype(dimension)::value;
+    const std::string      file = data_directory + "/" + name;
     geometry::MeshEstimate estimate;
-    const auto mesh = geometry::read_gmsh_file<dim>(file, [&]() {
+    const auto             mesh = geometry::read_gmsh_file<dim>(file, [&]() {
       estimate = geometry::estimate_gmsh_geometry(dim, file);
     });
-    std::cout << name << ": " << mesh.cells.size() << " cells (estimate " << estimate.n_cells
-              << "), " << mesh.vertices.size() << " vertices (estimate " << estimate.n_vertices
-              << ")" << std::endl;
+    std::cout << name << ": " << mesh.cells.size() << " cells (estimate "
+              << estimate.n_cells << "), " << mesh.vertices.size()
+              << " vertices (estimate " << estimate.n_vertices << ")"
+              << std::endl;
     EXPECT_GT(estimate.n_cells, mesh.cells.size() / 1.5) << name;
     EXPECT_LT(estimate.n_cells, 5.0 * mesh.cells.size()) << name;
   };

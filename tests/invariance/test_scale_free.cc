@@ -7,16 +7,16 @@
 // solver's verdict on a nearly singular but solvable system; and what
 // ContactOutcome::is_mechanism() says. The runs in other units are
 // tests/invariance/*.prm (run_checks.py invariance).
-#include <fdem/linear_algebra/reusable_lu.h>
+#include "../test_helpers.h"
+
 #include <fdem/contact/scaling.h>
 #include <fdem/contact/status_iteration.h>
+#include <fdem/linear_algebra/reusable_lu.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
-
-#include "../test_helpers.h"
 
 using namespace fdem;
 using dealii::FullMatrix;
@@ -33,7 +33,7 @@ namespace
    */
   struct FlatBlock
   {
-    FullMatrix<double>    W = FullMatrix<double>(6, 3);
+    FullMatrix<double>    W     = FullMatrix<double>(6, 3);
     Vector<double>        loads = Vector<double>(3);
     contact::SystemScales scales;
 
@@ -46,9 +46,9 @@ namespace
           W(2 * p, 1)     = 1;    // translation along y: normal
           W(2 * p, 2)     = x[p]; // rotation about the origin: normal
         }
-      loads[0] = 0.3 * force;
-      loads[1] = -1.0 * force;
-      loads[2] = 0.1 * force * length;
+      loads[0]            = 0.3 * force;
+      loads[1]            = -1.0 * force;
+      loads[2]            = 0.1 * force * length;
       scales.force        = 3 * force;
       scales.flexibility  = 1e-7 * length / force;
       scales.displacement = scales.force * scales.flexibility;
@@ -56,7 +56,9 @@ namespace
     }
 
     contact::RigidModeTest
-    test(const contact::PairStatus status, const unsigned int n_in_state, const double force) const
+    test(const contact::PairStatus status,
+         const unsigned int        n_in_state,
+         const double              force) const
     {
       std::vector<contact::PairRows<2>> rows;
       contact::PairStrength             strength;
@@ -65,13 +67,14 @@ namespace
       for (unsigned int p = 0; p < 3; ++p)
         {
           contact::PairState<2> state;
-          state.status            = p < n_in_state ? status : contact::PairStatus::open;
+          state.status = p < n_in_state ? status : contact::PairStatus::open;
           state.slip_direction[0] = 1;
-          rows.push_back(contact::pair_rows(state,
-                                            strength,
-                                            Tensor<2, 2>(dealii::unit_symmetric_tensor<2>()) *
-                                              scales.flexibility,
-                                            0.0));
+          rows.push_back(contact::pair_rows(
+            state,
+            strength,
+            Tensor<2, 2>(dealii::unit_symmetric_tensor<2>()) *
+              scales.flexibility,
+            0.0));
         }
       return contact::rigid_mode_test(W, loads, rows, scales, 1e-10);
     }
@@ -80,9 +83,8 @@ namespace
 
 TEST(ScaleFree, RigidModeTestIsAStatementAboutMechanics)
 {
-  for (const auto &[length, force] : std::vector<std::pair<double, double>>{{1, 1},
-                                                                            {1000, 1000},
-                                                                            {3.28084, 224.809}})
+  for (const auto &[length, force] : std::vector<std::pair<double, double>>{
+         {1, 1}, {1000, 1000}, {3.28084, 224.809}})
     {
       const FlatBlock block(length, force);
       // Three pairs stuck: held.
@@ -106,10 +108,12 @@ TEST(ScaleFree, RigidModeTestIsAStatementAboutMechanics)
 
       // The numbers do not depend on the units.
       const FlatBlock reference(1, 1);
-      const auto      stick_ref = reference.test(contact::PairStatus::stick, 3, 1);
-      EXPECT_NEAR(stick.equilibrium_ratio, stick_ref.equilibrium_ratio,
+      const auto stick_ref = reference.test(contact::PairStatus::stick, 3, 1);
+      EXPECT_NEAR(stick.equilibrium_ratio,
+                  stick_ref.equilibrium_ratio,
                   1e-12 * stick_ref.equilibrium_ratio);
-      EXPECT_NEAR(stick.kinematic_ratio, stick_ref.kinematic_ratio,
+      EXPECT_NEAR(stick.kinematic_ratio,
+                  stick_ref.kinematic_ratio,
                   1e-12 * stick_ref.kinematic_ratio);
     }
 }
@@ -130,7 +134,8 @@ TEST(ScaleFree, CommonModulusChangesNothingButDisplacements)
       std::ostringstream log;
       const auto         model = test_support::solved_model<2>(parameters, log);
       ASSERT_TRUE(model->get_contact_outcome().converged())
-        << "E = " << E << ": " << contact::result_description(model->get_contact_outcome().result);
+        << "E = " << E << ": "
+        << contact::result_description(model->get_contact_outcome().result);
       std::string statuses;
       for (const auto &state : model->get_contact_outcome().states)
         statuses += contact::status_name(state.status)[1];
@@ -146,7 +151,8 @@ TEST(ScaleFree, CommonModulusChangesNothingButDisplacements)
       for (const double value : reference_forces)
         largest = std::max(largest, std::abs(value));
       for (unsigned int i = 0; i < f.size(); ++i)
-        EXPECT_NEAR(f[i], reference_forces[i], 1e-9 * largest) << "E = " << E << ", force " << i;
+        EXPECT_NEAR(f[i], reference_forces[i], 1e-9 * largest)
+          << "E = " << E << ", force " << i;
     }
 }
 
@@ -194,8 +200,8 @@ TEST(ScaleFree, IllConditionedIsRefinedNotFailed)
   A.vmult(b, x_exact);
 
   linear_algebra::ReusableLU lu;
-  Vector<double>           x      = b;
-  const auto               result = lu.solve(A, x);
+  Vector<double>             x      = b;
+  const auto                 result = lu.solve(A, x);
   EXPECT_LT(result.reciprocal_condition, 1e-14);
   EXPECT_TRUE(result.solved) << "rcond " << result.reciprocal_condition;
   EXPECT_LE(result.backward_error, lu.control.backward_error_tolerance);
@@ -204,18 +210,20 @@ TEST(ScaleFree, IllConditionedIsRefinedNotFailed)
   for (unsigned int j = 0; j < n; ++j)
     singular(1, j) = singular(0, j);
   linear_algebra::ReusableLU fresh;
-  Vector<double>      y = b;
+  Vector<double>             y = b;
   EXPECT_FALSE(fresh.solve(singular, y).solved);
 }
 
 TEST(ScaleFree, MechanismOrNumericalBreakdown)
 {
   contact::ContactOutcome<2> outcome;
-  for (const auto result : {contact::ContactResult::singular, contact::ContactResult::runaway})
+  for (const auto result :
+       {contact::ContactResult::singular, contact::ContactResult::runaway})
     {
       outcome.result = result;
       EXPECT_TRUE(outcome.is_mechanism());
-      EXPECT_NE(contact::result_description(result).find("mechanism"), std::string::npos);
+      EXPECT_NE(contact::result_description(result).find("mechanism"),
+                std::string::npos);
     }
   for (const auto result : {contact::ContactResult::converged,
                             contact::ContactResult::iteration_limit,

@@ -28,8 +28,9 @@ namespace fdem
        * solution, the model in that state (e.g. to write the step's VTU
        * files); K* is NaN where the step has no sliding force.
        */
-      SafetyFactorAnalysis(Model<dim> &                              model,
-                           std::function<void(double K, double K_star)> on_solved_step = {});
+      SafetyFactorAnalysis(
+        Model<dim>                                  &model,
+        std::function<void(double K, double K_star)> on_solved_step = {});
 
       /**
        * The iteration with its certificate; leaves the model in the last
@@ -47,7 +48,7 @@ namespace fdem
       solve(const double K);
 
     private:
-      Model<dim> &          model;
+      Model<dim>                                  &model;
       std::function<void(double K, double K_star)> on_solved_step;
       /** Per pair of all interfaces: on a sliding surface? */
       std::vector<bool> on_sliding_surface;

@@ -38,7 +38,7 @@ namespace fdem
       /** F_R: shearing resistance of the sliding surface (eq. 11). */
       double resisting_force = 0;
       /** F_tau: sliding force along the sliding direction (eq. 11). */
-      double sliding_force = 0;
+      double       sliding_force = 0;
       unsigned int n_stick = 0, n_slip = 0, n_open = 0;
       /**
        * Every pair in contact on the sliding surface slips, and their shear
@@ -58,7 +58,8 @@ namespace fdem
       }
     };
 
-    /** One step of the iteration: the K solved for, its K*, the K it leads to. */
+    /** One step of the iteration: the K solved for, its K*, the K it leads to.
+     */
     struct Step
     {
       double K = 0, K_star = 0, K_next = 0;
@@ -66,7 +67,7 @@ namespace fdem
        * Solved steps: the distance still to the fixed point, estimated from
        * the step to K_next and the ratio of the last two steps (absolute).
        */
-      double                  distance_left = std::numeric_limits<double>::quiet_NaN();
+      double distance_left = std::numeric_limits<double>::quiet_NaN();
       ReducedStrengthSolution solution;
     };
 
@@ -98,7 +99,7 @@ namespace fdem
        */
       bool conservative = false;
       /** The solved state it rests on: its K and K*. */
-      double K = std::numeric_limits<double>::quiet_NaN();
+      double K      = std::numeric_limits<double>::quiet_NaN();
       double K_star = std::numeric_limits<double>::quiet_NaN();
       /** |K* - K| / K. */
       double relative_difference = std::numeric_limits<double>::quiet_NaN();
@@ -139,13 +140,14 @@ namespace fdem
       bool converged = false;
       /** The safety factor K (NaN if none was found). */
       double safety_factor = std::numeric_limits<double>::quiet_NaN();
-      /** Largest K with a static solution and smallest K without (NaN, inf if unknown). */
+      /** Largest K with a static solution and smallest K without (NaN, inf if
+       * unknown). */
       double bracket_low  = std::numeric_limits<double>::quiet_NaN();
       double bracket_high = std::numeric_limits<double>::infinity();
       /** The stop test that fired, or why the iteration ended. */
       std::string reason;
       /** Every solve failed, each as a mechanism: no static equilibrium. */
-      bool no_equilibrium = false;
+      bool                 no_equilibrium = false;
       Certificate          certificate;
       StiffnessSensitivity stiffness;
       std::vector<Step>    steps;
@@ -165,10 +167,11 @@ namespace fdem
      */
     template <int dim>
     ReducedStrengthSolution
-    resisting_and_sliding_forces(const contact::MixedSystem<dim> &         system,
-                                 const contact::ContactOutcome<dim> &      outcome,
-                                 const std::vector<contact::PairStrength> &reduced_strengths,
-                                 const std::vector<bool> &                 on_sliding_surface);
+    resisting_and_sliding_forces(
+      const contact::MixedSystem<dim>          &system,
+      const contact::ContactOutcome<dim>       &outcome,
+      const std::vector<contact::PairStrength> &reduced_strengths,
+      const std::vector<bool>                  &on_sliding_surface);
 
     /**
      * The paper's iteration, eqs. (10)-(13), with safeguards (doc/theory.md,
@@ -182,8 +185,8 @@ namespace fdem
      */
     Result
     iterate(const std::function<ReducedStrengthSolution(double K)> &solve,
-            const parameters::SafetyFactorParameters &              parameters,
-            std::ostream &                                          log);
+            const parameters::SafetyFactorParameters               &parameters,
+            std::ostream                                           &log);
 
     /**
      * The certificate of the iteration's answer, from its steps alone: which
@@ -191,7 +194,9 @@ namespace fdem
      * line that says what disagreed.
      */
     Certificate
-    certify(const Result &result, const double tolerance, const double bracket_agreement = 0);
+    certify(const Result &result,
+            const double  tolerance,
+            const double  bracket_agreement = 0);
 
     /** "fixed point", "bracket" or "none". */
     std::string

@@ -32,8 +32,9 @@ namespace fdem
       ~AmesosSolver() override;
 
       void
-      factorize(const TrilinosWrappers::SparseMatrix &       matrix,
-                const std::vector<types::global_dof_index> &schur_dofs) override;
+      factorize(
+        const TrilinosWrappers::SparseMatrix       &matrix,
+        const std::vector<types::global_dof_index> &schur_dofs) override;
 
       using BlockFactorization::solve;
       void

@@ -54,7 +54,7 @@ namespace fdem
        * keeps_schur_complement().
        */
       virtual void
-      factorize(const TrilinosWrappers::SparseMatrix &       matrix,
+      factorize(const TrilinosWrappers::SparseMatrix       &matrix,
                 const std::vector<types::global_dof_index> &schur_dofs) = 0;
 
       /**
@@ -92,8 +92,8 @@ namespace fdem
        */
       virtual std::vector<double>
       inverse_entries(
-        const std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
-          &entries) const;
+        const std::vector<std::pair<types::global_dof_index,
+                                    types::global_dof_index>> &entries) const;
     };
 
     /** A new, not yet factorised, back-end of type @p type. */

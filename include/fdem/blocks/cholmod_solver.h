@@ -30,8 +30,9 @@ namespace fdem
       operator=(const CholmodSolver &) = delete;
 
       void
-      factorize(const TrilinosWrappers::SparseMatrix &       matrix,
-                const std::vector<types::global_dof_index> &schur_dofs) override;
+      factorize(
+        const TrilinosWrappers::SparseMatrix       &matrix,
+        const std::vector<types::global_dof_index> &schur_dofs) override;
 
       using BlockFactorization::solve;
       void
@@ -41,7 +42,7 @@ namespace fdem
       /** CHOLMOD's workspace and the factor (defined in the source). */
       struct Data;
       std::unique_ptr<Data> data;
-      std::size_t            n = 0;
+      std::size_t           n = 0;
     };
   } // namespace blocks
 } // namespace fdem

@@ -14,11 +14,13 @@ namespace fdem
      */
     template <typename Function>
     void
-    for_each_entry_in_row(const Epetra_CrsMatrix &matrix, const int row, const Function &f)
+    for_each_entry_in_row(const Epetra_CrsMatrix &matrix,
+                          const int               row,
+                          const Function         &f)
     {
       int     n_entries;
       double *values;
-      int *   indices;
+      int    *indices;
       matrix.ExtractMyRowView(row, n_entries, values, indices);
       for (int e = 0; e < n_entries; ++e)
         f(matrix.GCID(indices[e]), values[e]);

@@ -25,8 +25,8 @@
 #include <chrono>
 #include <map>
 #include <memory>
-#include <string>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace fdem
@@ -72,12 +72,12 @@ namespace fdem
        * material of each material key (MeshDescription::material_key()) of
        * its cells in @p materials.
        */
-      ElasticBlock(const std::string &                          name,
-                   const geometry::MeshDescription<dim> &       mesh,
-                   const std::vector<unsigned int> &            block_ids,
-                   const std::map<unsigned int, parameters::MaterialParameters>
-                     &                                          materials,
-                   const unsigned int                           fe_degree);
+      ElasticBlock(
+        const std::string                                            &name,
+        const geometry::MeshDescription<dim>                         &mesh,
+        const std::vector<unsigned int>                              &block_ids,
+        const std::map<unsigned int, parameters::MaterialParameters> &materials,
+        const unsigned int fe_degree);
 
       /**
        * Applies the Dirichlet conditions, keyed by face-group index
@@ -87,7 +87,7 @@ namespace fdem
       void
       setup_constraints(
         const std::map<types::boundary_id, parameters::BoundaryParameters>
-          &                                    boundary_conditions,
+                                              &boundary_conditions,
         const std::vector<types::boundary_id> &interface_ids);
 
       /**
@@ -97,8 +97,10 @@ namespace fdem
        */
       void
       set_surface_loads(
-        const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> &pressures,
-        const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> &tractions);
+        const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>>
+          &pressures,
+        const std::map<types::boundary_id, std::shared_ptr<const Function<dim>>>
+          &tractions);
 
       /** Finds the free rigid modes and adds a minimal support for them. */
       void
@@ -111,14 +113,15 @@ namespace fdem
        * MumpsSchurSolver). Collective: every rank assembles its cells.
        */
       void
-      assemble_and_factorize(const parameters::LoadParameters &loads,
+      assemble_and_factorize(const parameters::LoadParameters  &loads,
                              const parameters::DirectSolverType solver_type);
 
       /** Assembles K and F (the first half of assemble_and_factorize). */
       void
       assemble(const parameters::LoadParameters &loads);
 
-      /** Factorises the assembled K (the second half of assemble_and_factorize). */
+      /** Factorises the assembled K (the second half of
+       * assemble_and_factorize). */
       void
       factorize(const parameters::DirectSolverType solver_type);
 
@@ -152,9 +155,9 @@ namespace fdem
       template <typename SetLoad, typename UseDisplacement>
       void
       solve_blocked(const unsigned int     n_columns,
-                    const SetLoad &        set_load,
+                    const SetLoad         &set_load,
                     const UseDisplacement &use_displacement,
-                    const unsigned int     max_columns = max_rhs_per_solve) const;
+                    const unsigned int max_columns = max_rhs_per_solve) const;
 
       /**
        * Flexibility matrix C(i,j) = (K^{-1})_{ij} restricted to @p dofs: the
@@ -177,7 +180,8 @@ namespace fdem
        */
       std::vector<FullMatrix<double>>
       flexibility_diagonal_blocks(
-        const std::vector<std::array<types::global_dof_index, dim>> &nodes) const;
+        const std::vector<std::array<types::global_dof_index, dim>> &nodes)
+        const;
 
       /**
        * The flexibility of @p dofs into @p C (n x n) from the inverse Schur
@@ -187,7 +191,7 @@ namespace fdem
        */
       bool
       flexibility_from_schur(const std::vector<types::global_dof_index> &dofs,
-                             FullMatrix<double> &                        C) const;
+                             FullMatrix<double> &C) const;
 
       /** The nodes of this block on the face group @p group. */
       std::vector<InterfaceNode<dim>>
@@ -200,9 +204,9 @@ namespace fdem
        * exerts on it. Used for reactions and interface forces.
        */
       Vector<double>
-      nodal_residual(const Vector<double> &u,
-                     const unsigned int    material_id =
-                       numbers::invalid_unsigned_int) const;
+      nodal_residual(
+        const Vector<double> &u,
+        const unsigned int material_id = numbers::invalid_unsigned_int) const;
 
       /** Number of free rigid modes. */
       unsigned int
@@ -218,7 +222,8 @@ namespace fdem
       Tensor<1, dim>
       free_mode_displacement(const unsigned int k, const Point<dim> &x) const;
 
-      /** Adds the rigid motion sum_k gamma_k omega_k (eq. 1) to the field @p u. */
+      /** Adds the rigid motion sum_k gamma_k omega_k (eq. 1) to the field @p u.
+       */
       void
       add_rigid_motion(const Vector<double> &gamma, Vector<double> &u) const;
 
@@ -228,7 +233,8 @@ namespace fdem
 
       /** The same for the nodal forces @p nodal_forces instead of F. */
       double
-      free_mode_load(const unsigned int k, const Vector<double> &nodal_forces) const;
+      free_mode_load(const unsigned int    k,
+                     const Vector<double> &nodal_forces) const;
 
       /**
        * The nodal forces of the block's weight per unit coefficient in each
@@ -255,18 +261,18 @@ namespace fdem
        * water makes. Collective.
        */
       std::vector<Vector<double>>
-      water_loads(const Function<dim>                  &water_table,
+      water_loads(const Function<dim>                &water_table,
                   const std::set<types::boundary_id> &faces) const;
 
-      std::string                    name;
+      std::string                          name;
       parallel::shared::Triangulation<dim> triangulation;
       /** FE_Q or FE_SimplexP, by the shape of the mesh's cells. */
-      ElementFamily<dim>             element_family;
-      FESystem<dim>                  fe;
+      ElementFamily<dim> element_family;
+      FESystem<dim>      fe;
       /** Owns the mapping (MappingQ(1) or the linear MappingFE). */
       std::unique_ptr<const Mapping<dim>> mapping_object;
-      const Mapping<dim> &           mapping;
-      DoFHandler<dim>                dof_handler;
+      const Mapping<dim>                 &mapping;
+      DoFHandler<dim>                     dof_handler;
       /**
        * Material per material id of the cells (MeshDescription::material_key():
        * the block's own material, or the block's part of a material region).
@@ -279,30 +285,33 @@ namespace fdem
        */
       std::shared_ptr<const Function<dim>> water_table;
       /** Dirichlet conditions of the block. */
-      AffineConstraints<double>      dirichlet_constraints;
+      AffineConstraints<double> dirichlet_constraints;
       /** Dirichlet conditions plus the minimal support of the free modes. */
-      AffineConstraints<double>      constraints;
+      AffineConstraints<double> constraints;
       /** Dofs of the minimal support. */
       std::vector<types::global_dof_index> support_dofs;
       /** Free rigid modes: n_rigid_modes x n_free coefficients of the modes. */
-      FullMatrix<double>             free_modes;
+      FullMatrix<double> free_modes;
       /** Centre and length scale of the rigid modes (centroid, size). */
-      Point<dim>                     centre;
-      double                         length_scale = 1;
+      Point<dim> centre;
+      double     length_scale = 1;
       /** External nodal forces F (before constraints). */
-      Vector<double>                 load_vector;
-      /** Wall time of the assembly and of the factorisation of K (s, this rank). */
-      double                         assembly_seconds      = 0;
-      double                         factorization_seconds = 0;
+      Vector<double> load_vector;
+      /** Wall time of the assembly and of the factorisation of K (s, this
+       * rank). */
+      double assembly_seconds      = 0;
+      double factorization_seconds = 0;
 
     private:
-      std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> pressures;
-      std::map<types::boundary_id, std::shared_ptr<const Function<dim>>> tractions;
+      std::map<types::boundary_id, std::shared_ptr<const Function<dim>>>
+        pressures;
+      std::map<types::boundary_id, std::shared_ptr<const Function<dim>>>
+                                      tractions;
       std::vector<types::boundary_id> interface_ids;
       TrilinosWrappers::SparseMatrix  stiffness_matrix;
       /** The factorisation of stiffness_matrix. */
       std::unique_ptr<BlockFactorization> factorization;
-      parameters::LoadParameters      loads;
+      parameters::LoadParameters          loads;
 
       /** Support point and vector component of every dof. */
       std::vector<Point<dim>>   dof_support_points;
@@ -314,7 +323,7 @@ namespace fdem
        * at all its nodes.
        */
       void
-      add_plate_constraints(const types::boundary_id id,
+      add_plate_constraints(const types::boundary_id   id,
                             AffineConstraints<double> &plate) const;
 
       /**
@@ -332,9 +341,9 @@ namespace fdem
       /** FE evaluators and cell arrays for one pass over the cells. */
       struct CellScratch
       {
-        CellScratch(const Mapping<dim> &       mapping,
-                    const FiniteElement<dim> & fe,
-                    const ElementFamily<dim> & family);
+        CellScratch(const Mapping<dim>       &mapping,
+                    const FiniteElement<dim> &fe,
+                    const ElementFamily<dim> &family);
         FEValues<dim>                        fe_values;
         FEFaceValues<dim>                    fe_face_values;
         FullMatrix<double>                   matrix;
@@ -345,7 +354,8 @@ namespace fdem
         std::vector<double>                  divergences;
       };
 
-      /** Element stiffness K_e and load F_e (gravity and pressures) into @p scratch. */
+      /** Element stiffness K_e and load F_e (gravity and pressures) into @p
+       * scratch. */
       void
       assemble_cell(const typename DoFHandler<dim>::active_cell_iterator &cell,
                     CellScratch &scratch) const;
@@ -356,7 +366,7 @@ namespace fdem
     template <typename SetLoad, typename UseDisplacement>
     void
     ElasticBlock<dim>::solve_blocked(const unsigned int     n_columns,
-                                     const SetLoad &        set_load,
+                                     const SetLoad         &set_load,
                                      const UseDisplacement &use_displacement,
                                      const unsigned int     max_columns) const
     {
@@ -372,7 +382,9 @@ namespace fdem
               column = 0;
               set_load(first + c, column);
               constraints.condense(column);
-              std::copy(column.begin(), column.end(), columns.begin() + c * n_dofs);
+              std::copy(column.begin(),
+                        column.end(),
+                        columns.begin() + c * n_dofs);
             }
           factorization->solve(columns, n);
           for (unsigned int c = 0; c < n; ++c)
@@ -381,7 +393,8 @@ namespace fdem
                         columns.begin() + (c + 1) * n_dofs,
                         column.begin());
               constraints.distribute(column);
-              use_displacement(first + c, static_cast<const Vector<double> &>(column));
+              use_displacement(first + c,
+                               static_cast<const Vector<double> &>(column));
             }
         }
     }

@@ -63,8 +63,9 @@ namespace fdem
        * last, and the Cholesky factorisation of their Schur complement.
        */
       void
-      factorize(const TrilinosWrappers::SparseMatrix &       matrix,
-                const std::vector<types::global_dof_index> &schur_dofs) override;
+      factorize(
+        const TrilinosWrappers::SparseMatrix       &matrix,
+        const std::vector<types::global_dof_index> &schur_dofs) override;
 
       /** Solves K x = b for the columns of @p b (n x n_rhs, column-major). */
       using BlockFactorization::solve;
@@ -106,8 +107,9 @@ namespace fdem
        */
       std::vector<double>
       inverse_entries(
-        const std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
-          &entries) const override;
+        const std::vector<
+          std::pair<types::global_dof_index, types::global_dof_index>> &entries)
+        const override;
 
     private:
       const bool keep_schur_complement;
@@ -115,9 +117,9 @@ namespace fdem
       std::unique_ptr<Data>                 data;
       const TrilinosWrappers::SparseMatrix *matrix = nullptr;
       /** The matrix's communicator and its number of ranks. */
-      MPI_Comm     communicator = MPI_COMM_SELF;
-      unsigned int n_ranks      = 1;
-      std::vector<types::global_dof_index>  schur;
+      MPI_Comm                             communicator = MPI_COMM_SELF;
+      unsigned int                         n_ranks      = 1;
+      std::vector<types::global_dof_index> schur;
       /** Per dof: its index in the Schur list, or -1. */
       std::vector<int> schur_index;
       /** Cholesky factor of S (lower triangle, column-major). */
@@ -135,7 +137,8 @@ namespace fdem
       void
       for_each_entry_in_schur_row(const unsigned int k, const Function &f) const
       {
-        for (std::size_t e = schur_row_start[k]; e < schur_row_start[k + 1]; ++e)
+        for (std::size_t e = schur_row_start[k]; e < schur_row_start[k + 1];
+             ++e)
           f(schur_row_columns[e], schur_row_values[e]);
       }
 

@@ -28,8 +28,8 @@ namespace fdem
     template <int dim>
     Tensor<1, dim>
     rigid_mode(const unsigned int mode,
-               const Point<dim> & x,
-               const Point<dim> & centre,
+               const Point<dim>  &x,
+               const Point<dim>  &centre,
                const double       length);
 
     /**
@@ -40,7 +40,7 @@ namespace fdem
      */
     FullMatrix<double>
     free_rigid_modes(const AffineConstraints<double> &constraints,
-                     const FullMatrix<double> &       modes_at_dofs);
+                     const FullMatrix<double>        &modes_at_dofs);
 
     /**
      * Chooses a minimal, statically determinate support for the free modes
@@ -51,8 +51,9 @@ namespace fdem
      * candidates cannot hold the block.
      */
     std::vector<types::global_dof_index>
-    minimal_support_dofs(const FullMatrix<double> &                  free_modes,
-                         const FullMatrix<double> &                  modes_at_dofs,
-                         const std::vector<types::global_dof_index> &candidates);
+    minimal_support_dofs(
+      const FullMatrix<double>                   &free_modes,
+      const FullMatrix<double>                   &modes_at_dofs,
+      const std::vector<types::global_dof_index> &candidates);
   } // namespace blocks
 } // namespace fdem

@@ -27,7 +27,8 @@ namespace fdem
       explicit PiezometricPressure(const parameters::WaterParameters &water);
 
       double
-      value(const Point<dim> &p, const unsigned int component = 0) const override;
+      value(const Point<dim>  &p,
+            const unsigned int component = 0) const override;
 
     private:
       const parameters::WaterParameters water;
@@ -39,7 +40,7 @@ namespace fdem
      */
     template <int dim>
     std::shared_ptr<const Function<dim>>
-    make_pressure_function(const std::string &               expression,
+    make_pressure_function(const std::string                 &expression,
                            const parameters::WaterParameters &water);
 
     /**
@@ -50,11 +51,12 @@ namespace fdem
      */
     template <int dim>
     std::shared_ptr<const Function<dim>>
-    make_standing_water_pressure(const Point<dim>                  &surface_point,
-                                 const std::vector<double>         &gravity,
+    make_standing_water_pressure(const Point<dim>          &surface_point,
+                                 const std::vector<double> &gravity,
                                  const parameters::WaterParameters &water);
 
-    /** A traction vector function from an expression with dim components separated by ';'. */
+    /** A traction vector function from an expression with dim components
+     * separated by ';'. */
     template <int dim>
     std::shared_ptr<const Function<dim>>
     make_traction_function(const std::string &expression);

@@ -25,8 +25,9 @@ namespace fdem
     {
     public:
       void
-      factorize(const TrilinosWrappers::SparseMatrix &       matrix,
-                const std::vector<types::global_dof_index> &schur_dofs) override;
+      factorize(
+        const TrilinosWrappers::SparseMatrix       &matrix,
+        const std::vector<types::global_dof_index> &schur_dofs) override;
 
       using BlockFactorization::solve;
       void

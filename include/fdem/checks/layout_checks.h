@@ -8,8 +8,8 @@
 #include <fdem/parameters/model_parameters.h>
 
 #include <map>
-#include <ostream>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -42,8 +42,8 @@ namespace fdem
     template <int dim>
     std::vector<std::string>
     check_mesh_layout(const geometry::MeshDescription<dim> &mesh,
-                      const std::vector<std::string> &      interface_names,
-                      const std::vector<std::string> &      boundary_names);
+                      const std::vector<std::string>       &interface_names,
+                      const std::vector<std::string>       &boundary_names);
 
     /**
      * Where the node pairs of the interfaces close a loop (at a point where
@@ -58,8 +58,9 @@ namespace fdem
      */
     template <int dim>
     std::vector<std::string>
-    pair_triple_points_once(std::vector<contact::Interface<dim>> &interfaces,
-                            const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks);
+    pair_triple_points_once(
+      std::vector<contact::Interface<dim>>                          &interfaces,
+      const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks);
 
     /**
      * Checks of the interfaces once their node pairs are made:
@@ -79,24 +80,28 @@ namespace fdem
      */
     template <int dim>
     std::vector<std::string>
-    check_interfaces(const geometry::MeshDescription<dim> &                         mesh,
-                     const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
-                     const std::vector<contact::Interface<dim>> &                   interfaces,
-                     const std::map<std::string, parameters::InterfaceParameters> & parameters);
+    check_interfaces(
+      const geometry::MeshDescription<dim>                          &mesh,
+      const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
+      const std::vector<contact::Interface<dim>>                    &interfaces,
+      const std::map<std::string, parameters::InterfaceParameters> &parameters);
 
-    /** Appends @p found to @p warnings and prints each as "warning: ..." on @p log. */
+    /** Appends @p found to @p warnings and prints each as "warning: ..." on @p
+     * log. */
     void
     report(const std::vector<std::string> &found,
-           std::vector<std::string> &      warnings,
-           std::ostream &                  log);
+           std::vector<std::string>       &warnings,
+           std::ostream                   &log);
 
-    /** Prints each line of @p lines on @p log (what pair_triple_points_once() did). */
+    /** Prints each line of @p lines on @p log (what pair_triple_points_once()
+     * did). */
     void
     report(const std::vector<std::string> &lines, std::ostream &log);
 
     namespace internal
     {
-      /** A point as "(x, y)" or "(x, y, z)", six digits: how the checks' messages name a place. */
+      /** A point as "(x, y)" or "(x, y, z)", six digits: how the checks'
+       * messages name a place. */
       template <int dim>
       std::string
       point_text(const Point<dim> &x);
@@ -108,9 +113,11 @@ namespace fdem
        */
       template <int dim>
       std::vector<std::string>
-      check_support(const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
-                    const std::vector<contact::Interface<dim>> &                   interfaces,
-                    const std::map<std::string, parameters::InterfaceParameters> & parameters);
+      check_support(
+        const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
+        const std::vector<contact::Interface<dim>> &interfaces,
+        const std::map<std::string, parameters::InterfaceParameters>
+          &parameters);
     } // namespace internal
-  } // namespace checks
+  }   // namespace checks
 } // namespace fdem

@@ -41,9 +41,9 @@ namespace fdem
     template <int dim>
     struct Interface
     {
-      std::string              name;
-      types::boundary_id       face_group = 0;
-      unsigned int             block_I = 0, block_J = 0;
+      std::string                name;
+      types::boundary_id         face_group = 0;
+      unsigned int               block_I = 0, block_J = 0;
       std::vector<NodePair<dim>> pairs;
       /** Interface nodes left without a partner on each side. */
       unsigned int n_unpaired_I = 0, n_unpaired_J = 0;
@@ -73,13 +73,13 @@ namespace fdem
      */
     template <int dim>
     Interface<dim>
-    make_interface(const std::string &                  name,
-                   const types::boundary_id             face_group,
-                   const unsigned int                   index_I,
-                   const blocks::ElasticBlock<dim> &    block_I,
-                   const unsigned int                   index_J,
-                   const blocks::ElasticBlock<dim> &    block_J,
-                   const double                         search_distance);
+    make_interface(const std::string               &name,
+                   const types::boundary_id         face_group,
+                   const unsigned int               index_I,
+                   const blocks::ElasticBlock<dim> &block_I,
+                   const unsigned int               index_J,
+                   const blocks::ElasticBlock<dim> &block_J,
+                   const double                     search_distance);
 
     /**
      * Removes from the last of @p interfaces the pairs of the same two nodes

@@ -49,7 +49,8 @@ namespace fdem
       Vector<double> forces;
       /** Rigid unknowns gamma of the free modes of all blocks. */
       Vector<double> rigid_motions;
-      /** Relative displacements g = g_bar - C f + W gamma, local, dim per pair. */
+      /** Relative displacements g = g_bar - C f + W gamma, local, dim per pair.
+       */
       Vector<double> relative_displacements;
       /** The elastic part C f of the relative displacements. */
       Vector<double> elastic_displacements;
@@ -73,11 +74,13 @@ namespace fdem
       const char *why_factorized = "";
       /** How the factors were reused, if they were. */
       const char *reuse_method = "";
-      /** Iterative solver: GMRES iterations of this solve (0 for the dense one). */
+      /** Iterative solver: GMRES iterations of this solve (0 for the dense
+       * one). */
       unsigned int n_krylov_iterations = 0;
     };
 
-    /** How the mixed system is solved: subsection "Contact" of the parameters. */
+    /** How the mixed system is solved: subsection "Contact" of the parameters.
+     */
     enum class MixedSystemSolver
     {
       /**
@@ -172,7 +175,8 @@ namespace fdem
       add_load_case(const std::vector<Vector<double>> &displacements,
                     const std::vector<Vector<double>> &loads);
 
-      /** A load case's parts: its g_bar, its moving blocks' part, its omega^T F. */
+      /** A load case's parts: its g_bar, its moving blocks' part, its omega^T
+       * F. */
       struct LoadCase
       {
         Vector<double> gap, moving_gap, rigid_loads;
@@ -215,16 +219,19 @@ namespace fdem
        * bit for bit.
        */
       void
-      set_load_coefficients(const double base_factor, const std::vector<double> &coefficients);
+      set_load_coefficients(const double               base_factor,
+                            const std::vector<double> &coefficients);
 
-      /** The factor on the assembled load of the current combination (set_load_coefficients()). */
+      /** The factor on the assembled load of the current combination
+       * (set_load_coefficients()). */
       double
       get_base_load_factor() const
       {
         return base_load_factor;
       }
 
-      /** The coefficients of the load cases of the current combination (set_load_coefficients()). */
+      /** The coefficients of the load cases of the current combination
+       * (set_load_coefficients()). */
       const std::vector<double> &
       get_load_coefficients() const
       {
@@ -258,7 +265,7 @@ namespace fdem
        */
       ContactSolution
       solve(const std::vector<PairState<dim>> &states,
-            const std::vector<PairStrength> &  strengths);
+            const std::vector<PairStrength>   &strengths);
 
       /** Solves with every pair in stick. */
       ContactSolution
@@ -273,7 +280,8 @@ namespace fdem
        * forces of @p solution (I receives -f, J receives f).
        */
       Vector<double>
-      block_nodal_forces(const unsigned int b, const ContactSolution &solution) const;
+      block_nodal_forces(const unsigned int     b,
+                         const ContactSolution &solution) const;
 
       /** Pair @p p of all interfaces, in order. */
       const NodePair<dim> &
@@ -349,11 +357,13 @@ namespace fdem
       const linear_algebra::ReusableLU &
       dense_solver() const;
 
-      /** The iterative solver (its preconditioner's parts); the system must use it. */
+      /** The iterative solver (its preconditioner's parts); the system must use
+       * it. */
       const IterativeMixedSolver<dim> &
       iterative_solver() const;
 
-      /** The mean of the diagonal of C: the scale of the rigid unknowns in GMRES. */
+      /** The mean of the diagonal of C: the scale of the rigid unknowns in
+       * GMRES. */
       double
       mean_self_flexibility() const
       {
@@ -393,7 +403,7 @@ namespace fdem
 
     private:
       const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks;
-      const MixedSystemSolver                                         solver_type;
+      const MixedSystemSolver solver_type;
       /** All pairs of all interfaces, in order, with their blocks. */
       std::vector<const NodePair<dim> *> pairs;
       std::vector<unsigned int>          pair_block_I, pair_block_J;
@@ -411,17 +421,21 @@ namespace fdem
       };
       /** Every block that a pair touches. */
       std::vector<BlockTouch> touches;
-      /** A direction with at most this self-flexibility is held (pair_rows()). */
+      /** A direction with at most this self-flexibility is held (pair_rows()).
+       */
       double held_flexibility = 0;
-      /** The mean of the diagonal of C: the scale of the rigid unknowns in GMRES. */
+      /** The mean of the diagonal of C: the scale of the rigid unknowns in
+       * GMRES. */
       double mean_flexibility = 1;
-      /** The moving blocks' parts of C and g_bar (set_moving_compliance_scale()). */
+      /** The moving blocks' parts of C and g_bar
+       * (set_moving_compliance_scale()). */
       FullMatrix<double> moving_flexibility;
       Vector<double>     moving_external_gap;
       /** The current scale of the moving blocks' compliance. */
       double moving_compliance_scale = 1;
 
-      /** g_bar and omega^T F of the assembled load (at the current compliance scale). */
+      /** g_bar and omega^T F of the assembled load (at the current compliance
+       * scale). */
       Vector<double> base_external_gap, base_rigid_loads;
       /** The initial gaps in g_bar (not a load: never scaled). */
       Vector<double> initial_gaps;
@@ -430,10 +444,12 @@ namespace fdem
       /** The current load combination (set_load_coefficients()). */
       double              base_load_factor = 1;
       std::vector<double> load_coefficients;
-      /** The force scale of the assembled load (set_diagonal_scales()), once computed. */
+      /** The force scale of the assembled load (set_diagonal_scales()), once
+       * computed. */
       double base_force_scale = -1;
 
-      /** external_gap and rigid_loads of the current combination and compliance scale. */
+      /** external_gap and rigid_loads of the current combination and compliance
+       * scale. */
       void
       combine_loads();
 

@@ -18,7 +18,8 @@ namespace fdem
      * pair's state. With d = C f - W gamma the elastic-minus-rigid part of
      * the pair's relative displacement (g = g_bar - d), row i reads
      *
-     *   sum_k gap[i][k] d_k + sum_k force[i][k] f_k = sum_k gap[i][k] g_bar_k + value[i],
+     *   sum_k gap[i][k] d_k + sum_k force[i][k] f_k = sum_k gap[i][k] g_bar_k +
+     * value[i],
      *
      * so that a row of gap coefficients asks g = 0 along them, and a row of
      * force coefficients fixes a combination of the pair's own forces. The
@@ -48,7 +49,7 @@ namespace fdem
     template <int dim>
     PairRows<dim>
     pair_rows(const PairState<dim> &state,
-              const PairStrength &  strength,
+              const PairStrength   &strength,
               const Tensor<2, dim> &self_flexibility,
               const double          held_flexibility);
 

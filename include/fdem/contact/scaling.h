@@ -79,7 +79,8 @@ namespace fdem
     {
       /** Number of free rigid modes (0: nothing to test). */
       unsigned int n_rigid = 0;
-      /** sigma_min / sigma_max of E (0 with fewer force directions than modes). */
+      /** sigma_min / sigma_max of E (0 with fewer force directions than modes).
+       */
       double equilibrium_ratio = 1;
       /** sigma_min / sigma_max of K (0 with fewer gap rows than modes). */
       double kinematic_ratio = 1;
@@ -101,10 +102,10 @@ namespace fdem
      */
     template <int dim>
     RigidModeTest
-    rigid_mode_test(const FullMatrix<double> &        rigid_coupling,
-                    const Vector<double> &            rigid_loads,
+    rigid_mode_test(const FullMatrix<double>         &rigid_coupling,
+                    const Vector<double>             &rigid_loads,
                     const std::vector<PairRows<dim>> &rows,
-                    const SystemScales &              scales,
+                    const SystemScales               &scales,
                     const double                      tolerance);
   } // namespace contact
 } // namespace fdem

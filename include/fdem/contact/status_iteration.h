@@ -16,7 +16,8 @@ namespace fdem
     /** How a contact solve ended. */
     enum class ContactResult
     {
-      /** A fixed point: every pair's state is consistent with its forces and gaps. */
+      /** A fixed point: every pair's state is consistent with its forces and
+         gaps. */
       converged,
       /**
        * The free rigid modes have no equilibrium under the current statuses
@@ -48,11 +49,12 @@ namespace fdem
     struct StatusIterationRecord
     {
       unsigned int n_stick = 0, n_slip = 0, n_open = 0, n_at_cutoff = 0;
-      unsigned int n_changes = 0;
+      unsigned int n_changes            = 0;
       double       reciprocal_condition = 1;
       /** False if the solve reused the LU factors of an earlier system. */
       bool factorized = true;
-      /** 3D: the largest turn of a slip direction in this iteration (degrees). */
+      /** 3D: the largest turn of a slip direction in this iteration (degrees).
+       */
       double max_turn = 0;
     };
 
@@ -89,7 +91,8 @@ namespace fdem
       bool
       is_mechanism() const
       {
-        return result == ContactResult::singular || result == ContactResult::runaway;
+        return result == ContactResult::singular ||
+               result == ContactResult::runaway;
       }
     };
 
@@ -106,10 +109,12 @@ namespace fdem
       double runaway_factor = 1e6;
     };
 
-    /** The states every solve starts from without a better guess: gapped pairs open, the rest stick (frictionless ones slip). */
+    /** The states every solve starts from without a better guess: gapped pairs
+     * open, the rest stick (frictionless ones slip). */
     template <int dim>
     std::vector<PairState<dim>>
-    initial_states(const MixedSystem<dim> &system, const std::vector<PairStrength> &strengths);
+    initial_states(const MixedSystem<dim>          &system,
+                   const std::vector<PairStrength> &strengths);
 
     /**
      * The status iteration that solves the contact problem (eq. 9 with the
@@ -139,11 +144,12 @@ namespace fdem
     class StatusIteration
     {
     public:
-      /** The iteration for @p system with the pairs' @p strengths; it logs on @p log. */
-      StatusIteration(MixedSystem<dim> &               system,
+      /** The iteration for @p system with the pairs' @p strengths; it logs on
+       * @p log. */
+      StatusIteration(MixedSystem<dim>                &system,
                       const std::vector<PairStrength> &strengths,
-                      const StatusIterationControl &   control,
-                      std::ostream &                   log);
+                      const StatusIterationControl    &control,
+                      std::ostream                    &log);
 
       /** Iterates from @p states to a fixed point, or to why there is none. */
       ContactOutcome<dim>
@@ -156,7 +162,8 @@ namespace fdem
         bool at_cutoff = false, slipping = false;
       };
 
-      /** Tolerances of the status tests in one iteration (fractions of its scales). */
+      /** Tolerances of the status tests in one iteration (fractions of its
+       * scales). */
       struct Tolerances
       {
         double force = 0, gap = 0;
@@ -175,33 +182,36 @@ namespace fdem
       void
       log_failure(const ContactSolution &solution) const;
 
-      /** Rigid relative motion beyond the runaway factor times @p elastic_scale, or forces not finite. */
+      /** Rigid relative motion beyond the runaway factor times @p
+       * elastic_scale, or forces not finite. */
       bool
-      runs_away(const ContactSolution &solution, const double elastic_scale) const;
+      runs_away(const ContactSolution &solution,
+                const double           elastic_scale) const;
 
       /** The states that the solution asks for, by the rules above. */
       std::vector<PairState<dim>>
       update_statuses(const std::vector<PairState<dim>> &states,
-                      const ContactSolution &            solution,
-                      const Tolerances &                 tolerances) const;
+                      const ContactSolution             &solution,
+                      const Tolerances                  &tolerances) const;
 
       /** 3D: turns the slip direction of pair @p p towards z = f_t + r g_t. */
       void
-      turn_slip_direction(PairState<dim> &       state,
+      turn_slip_direction(PairState<dim>        &state,
                           const unsigned int     p,
                           const ContactSolution &solution) const;
 
-      /** The counts of @p next and how it differs from @p states into @p record. */
+      /** The counts of @p next and how it differs from @p states into @p
+       * record. */
       void
       count_changes(const std::vector<PairState<dim>> &states,
                     const std::vector<PairState<dim>> &next,
-                    StatusIterationRecord &            record) const;
+                    StatusIterationRecord             &record) const;
 
       /** One line on the log for iteration @p iteration. */
       void
       log_iteration(const unsigned int           iteration,
                     const StatusIterationRecord &record,
-                    const ContactSolution &      solution) const;
+                    const ContactSolution       &solution) const;
 
       /**
        * Largest angle between a slipping pair's slip direction and its
@@ -209,7 +219,7 @@ namespace fdem
        */
       double
       max_slip_angle(const std::vector<PairState<dim>> &states,
-                     const ContactSolution &            solution,
+                     const ContactSolution             &solution,
                      const double                       gap_tolerance) const;
 
       /**
@@ -219,19 +229,20 @@ namespace fdem
        * it broke one.
        */
       bool
-      break_cycle(std::vector<PairState<dim>> &next, const Vector<double> &forces);
+      break_cycle(std::vector<PairState<dim>> &next,
+                  const Vector<double>        &forces);
 
-      MixedSystem<dim> &               system;
+      MixedSystem<dim>                &system;
       const std::vector<PairStrength> &strengths;
       const StatusIterationControl     control;
-      std::ostream &                   log;
+      std::ostream                    &log;
       const unsigned int               n_pairs;
       /**
        * The scale of the gaps in the status tests: the elastic relative
        * displacements, or where those are zero the model's characteristic
        * displacement (SystemScales).
        */
-      const double gap_scale;
+      const double                             gap_scale;
       std::vector<Freeze>                      frozen;
       std::vector<bool>                        tried_closed;
       std::vector<std::vector<PairState<dim>>> history;
@@ -240,10 +251,10 @@ namespace fdem
     /** StatusIteration(system, strengths, control, log).run(states). */
     template <int dim>
     ContactOutcome<dim>
-    solve_contact_problem(MixedSystem<dim> &               system,
+    solve_contact_problem(MixedSystem<dim>                &system,
                           const std::vector<PairStrength> &strengths,
                           std::vector<PairState<dim>>      states,
-                          const StatusIterationControl &   control,
-                          std::ostream &                   log);
+                          const StatusIterationControl    &control,
+                          std::ostream                    &log);
   } // namespace contact
 } // namespace fdem

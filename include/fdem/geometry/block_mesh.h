@@ -21,13 +21,13 @@ namespace fdem
      * the merged mesh of a plain FE model). Vertices shared with other blocks
      * are copied, which duplicates the nodes along the interfaces. Cells get
      * their MeshDescription::material_key() as material id (the block index
-     * for cells of the block's own material); boundary faces get the index of their
-     * face group as boundary id, or unnamed_boundary_id.
+     * for cells of the block's own material); boundary faces get the index of
+     * their face group as boundary id, or unnamed_boundary_id.
      */
     template <int dim>
     void
-    create_block_triangulation(const MeshDescription<dim> &     mesh,
+    create_block_triangulation(const MeshDescription<dim>      &mesh,
                                const std::vector<unsigned int> &blocks,
-                               Triangulation<dim> &             triangulation);
+                               Triangulation<dim>              &triangulation);
   } // namespace geometry
 } // namespace fdem

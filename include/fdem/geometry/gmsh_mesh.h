@@ -68,7 +68,9 @@ namespace fdem
        * gmsh_write.cc writes).
        */
       unsigned int
-      gmsh_corner(const int structdim, const unsigned int n_corners, const unsigned int i);
+      gmsh_corner(const int          structdim,
+                  const unsigned int n_corners,
+                  const unsigned int i);
     } // namespace internal
 
     /**
@@ -80,8 +82,8 @@ namespace fdem
      */
     template <int dim>
     MeshDescription<dim>
-    read_gmsh_file(const std::string               &file_name,
-                   const std::function<void()>     &before_meshing = {},
+    read_gmsh_file(const std::string              &file_name,
+                   const std::function<void()>    &before_meshing = {},
                    const std::vector<std::string> &material_names = {});
 
     /**
@@ -100,8 +102,9 @@ namespace fdem
      */
     template <int dim>
     MeshDescription<dim>
-    extract_current_gmsh_model(const std::string &             source,
-                               const std::vector<std::string> &material_names = {});
+    extract_current_gmsh_model(
+      const std::string              &source,
+      const std::vector<std::string> &material_names = {});
 
     /**
      * The physical groups of dimension @p dim of the current Gmsh model,
@@ -110,9 +113,10 @@ namespace fdem
      */
     template <int dim>
     void
-    split_block_and_material_groups(const std::vector<std::string> &material_names,
-                                    std::vector<std::pair<int, int>> &block_groups,
-                                    std::vector<std::pair<int, int>> &material_groups);
+    split_block_and_material_groups(
+      const std::vector<std::string>   &material_names,
+      std::vector<std::pair<int, int>> &block_groups,
+      std::vector<std::pair<int, int>> &material_groups);
 
     /**
      * Sets mesh.material_names and mesh.cell_materials from the material
@@ -123,10 +127,11 @@ namespace fdem
      */
     template <int dim>
     void
-    read_material_groups(const std::string &                     source,
-                         const std::vector<std::pair<int, int>> &material_groups,
-                         const std::vector<std::size_t> &        cell_element_tags,
-                         MeshDescription<dim> &                  mesh);
+    read_material_groups(
+      const std::string                      &source,
+      const std::vector<std::pair<int, int>> &material_groups,
+      const std::vector<std::size_t>         &cell_element_tags,
+      MeshDescription<dim>                   &mesh);
 
     /**
      * Write @p mesh as a Gmsh file (format from the extension; .msh is

@@ -60,7 +60,8 @@ namespace fdem
        */
       std::vector<unsigned int> cell_materials;
 
-      /** The entry of cell_materials of a cell outside every material region. */
+      /** The entry of cell_materials of a cell outside every material region.
+       */
       static constexpr unsigned int no_material = static_cast<unsigned int>(-1);
 
       /**
@@ -121,7 +122,8 @@ namespace fdem
        */
       std::map<std::string, Point<dim>> standing_water;
 
-      /** Where the description came from (file name or generator), for messages. */
+      /** Where the description came from (file name or generator), for
+       * messages. */
       std::string source;
     };
   } // namespace geometry

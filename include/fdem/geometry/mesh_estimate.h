@@ -19,7 +19,8 @@ namespace fdem
      */
     struct MeshEstimate
     {
-      /** The entry that sets the element size, e.g. "Geometry/Hertz/Mesh size". */
+      /** The entry that sets the element size, e.g. "Geometry/Hertz/Mesh size".
+       */
       std::string entry;
       /** Cells and vertices of the mesh (not finite: too many to count). */
       double n_cells    = 0;

@@ -2,8 +2,8 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
-#include <deal.II/lac/lapack_support.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_support.h>
 #include <deal.II/lac/vector.h>
 
 #include <vector>
@@ -28,7 +28,8 @@ namespace fdem
     class DenseLU
     {
     public:
-      /** @p column_major holds the n x n matrix by columns; it is overwritten. */
+      /** @p column_major holds the n x n matrix by columns; it is overwritten.
+       */
       DenseLU(const unsigned int n, std::vector<double> column_major);
 
       /** Factorises a copy of the square @p matrix. */
@@ -57,7 +58,9 @@ namespace fdem
        * @p n_rhs columns of @p columns, stored by columns (n x n_rhs).
        */
       void
-      solve(double *columns, const unsigned int n_rhs, const bool transpose = false) const;
+      solve(double            *columns,
+            const unsigned int n_rhs,
+            const bool         transpose = false) const;
 
       /** Size n of the matrix. */
       unsigned int

@@ -108,7 +108,8 @@ namespace fdem
         double backward_error = 0;
         /** Why the matrix was factorised (for the log); empty if reused. */
         const char *why_factorized = "";
-        /** How the old factors were reused: "Woodbury", "same matrix", or none. */
+        /** How the old factors were reused: "Woodbury", "same matrix", or none.
+         */
         const char *method = nullptr;
       };
 
@@ -122,7 +123,8 @@ namespace fdem
        * result says solved (and left as it is otherwise).
        */
       Result
-      solve(const dealii::FullMatrix<double> &matrix, dealii::Vector<double> &rhs);
+      solve(const dealii::FullMatrix<double> &matrix,
+            dealii::Vector<double>           &rhs);
 
       /** Drops the stored factors: the next solve factorises. */
       void
@@ -139,8 +141,8 @@ namespace fdem
       /** Factorises @p matrix (scaled by @p scale), stores it, and solves. */
       Result
       factorize_and_solve(const dealii::FullMatrix<double> &matrix,
-                          std::vector<double>             scale,
-                          dealii::Vector<double> &          rhs);
+                          std::vector<double>               scale,
+                          dealii::Vector<double>           &rhs);
 
       /**
        * Solves the factorised matrix itself with its factors and iterative
@@ -148,22 +150,24 @@ namespace fdem
        */
       bool
       solve_factorized(const dealii::FullMatrix<double> &matrix,
-                       dealii::Vector<double> &          rhs,
-                       Result &                          result) const;
+                       dealii::Vector<double>           &rhs,
+                       Result                           &result) const;
 
-      /** Solves with the stored factors updated by k changed rows; false if not accurate. */
+      /** Solves with the stored factors updated by k changed rows; false if not
+       * accurate. */
       bool
       solve_updated(const dealii::FullMatrix<double> &matrix,
-                    const std::vector<double> &       scale,
-                    const std::vector<unsigned int> & changed,
-                    dealii::Vector<double> &          rhs,
-                    Result &                          result) const;
+                    const std::vector<double>        &scale,
+                    const std::vector<unsigned int>  &changed,
+                    dealii::Vector<double>           &rhs,
+                    Result                           &result) const;
 
       /** The factorised matrix, unscaled, its scaling, and its factors. */
       dealii::FullMatrix<double> factorized_matrix;
       std::vector<double>        factorized_scale;
       std::unique_ptr<DenseLU>   lu;
-      /** The verdict of the factorisation: its condition estimate and solved flag. */
+      /** The verdict of the factorisation: its condition estimate and solved
+       * flag. */
       double factorized_condition = 0;
       bool   factorized_solved    = false;
     };

@@ -34,7 +34,7 @@ namespace fdem
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm,
-                       const std::string &       path,
+                       const std::string        &path,
                        const unsigned int        dim);
 
       /** Displacement constraint on the part. */
@@ -59,7 +59,7 @@ namespace fdem
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm,
-                       const std::string &       path,
+                       const std::string        &path,
                        const unsigned int        dim);
 
       /**
@@ -76,7 +76,8 @@ namespace fdem
       double tensile_strength = 0;
       /** No friction and no cohesion: the tangential force is zero. */
       bool frictionless = false;
-      /** Part of the sliding surface whose c and tan(phi) the safety factor reduces. */
+      /** Part of the sliding surface whose c and tan(phi) the safety factor
+       * reduces. */
       bool sliding_surface = true;
       /**
        * Whether K divides c and tan(phi) (eq. 10): every sliding surface, and
@@ -108,11 +109,13 @@ namespace fdem
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      /** Compute the safety factor (else: one contact solve at full strength). */
+      /** Compute the safety factor (else: one contact solve at full strength).
+       */
       bool compute = true;
       /** K of the first iteration (eq. 10). */
       double initial_factor = 1.0;
-      /** Stop when two successive K* agree to this relative tolerance (eq. 13). */
+      /** Stop when two successive K* agree to this relative tolerance (eq. 13).
+       */
       double tolerance = 1e-6;
       /** Largest number of contact solves of the iteration. */
       unsigned int max_iterations = 60;
@@ -179,16 +182,19 @@ namespace fdem
        */
       double horizontal_seismic_coefficient = 0;
       double vertical_seismic_coefficient   = 0;
-      /** The horizontal direction of kh (normalised); empty: towards the free face (found). */
+      /** The horizontal direction of kh (normalised); empty: towards the free
+       * face (found). */
       std::vector<double> seismic_direction;
-      /** Whether the seismic force acts on the saturated weight below the water table. */
+      /** Whether the seismic force acts on the saturated weight below the water
+       * table. */
       bool seismic_on_pore_water = false;
 
       /** Whether any seismic coefficient is set. */
       bool
       seismic() const
       {
-        return horizontal_seismic_coefficient != 0 || vertical_seismic_coefficient != 0;
+        return horizontal_seismic_coefficient != 0 ||
+               vertical_seismic_coefficient != 0;
       }
     };
 
@@ -216,7 +222,8 @@ namespace fdem
     std::string
     direct_solver_name(const DirectSolverType type);
 
-    /** The type of a .prm string; throws naming Solver/Direct solver otherwise. */
+    /** The type of a .prm string; throws naming Solver/Direct solver otherwise.
+     */
     DirectSolverType
     parse_direct_solver_type(const std::string &name);
 
@@ -247,9 +254,11 @@ namespace fdem
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      /** Output folder; empty means "<case name>-output" in the working directory. */
+      /** Output folder; empty means "<case name>-output" in the working
+       * directory. */
       std::string directory;
-      /** Write VTU/PVD files for ParaView (the CSV and JSON files are always written). */
+      /** Write VTU/PVD files for ParaView (the CSV and JSON files are always
+       * written). */
       bool write_vtu = true;
       /** Make report.html at the end of the run (postprocess/report.h). */
       bool report = true;
@@ -260,13 +269,15 @@ namespace fdem
       bool write_steps = false;
     };
 
-    /** True if @p expression is a valid function of x, y (, z) with @p n_components components (separated by ';'). */
+    /** True if @p expression is a valid function of x, y (, z) with @p
+     * n_components components (separated by ';'). */
     bool
     expression_parses(const std::string &expression,
                       const unsigned int dim,
                       const unsigned int n_components = 1);
 
-    /** Parses "a, b, c" into exactly n_components numbers, or throws naming path. */
+    /** Parses "a, b, c" into exactly n_components numbers, or throws naming
+     * path. */
     std::vector<double>
     parse_vector(const std::string &text,
                  const unsigned int n_components,

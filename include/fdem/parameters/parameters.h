@@ -2,11 +2,11 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
-#include <fdem/analyses/limit_equilibrium_parameters.h>
-#include <fdem/analyses/yield_acceleration_parameters.h>
 #include <fdem/analyses/anchor_parameters.h>
+#include <fdem/analyses/limit_equilibrium_parameters.h>
 #include <fdem/analyses/probabilistic_parameters.h>
 #include <fdem/analyses/surface_search_parameters.h>
+#include <fdem/analyses/yield_acceleration_parameters.h>
 #include <fdem/parameters/geometry_parameters.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -25,8 +25,9 @@ namespace fdem
      * Everything a .prm file says. The numbers of blocks, boundary parts and
      * interfaces vary from case to case, so their subsections are declared
      * from the name lists "Blocks/Names", "Materials/Names",
-     * "Boundaries/Names" and "Interfaces/Names": the file is read twice, first for the names, then
-     * strictly (an unknown entry or subsection is an error).
+     * "Boundaries/Names" and "Interfaces/Names": the file is read twice, first
+     * for the names, then strictly (an unknown entry or subsection is an
+     * error).
      */
     struct Parameters
     {
@@ -39,27 +40,28 @@ namespace fdem
       /** Folder of the .prm file; relative file names are taken from there. */
       std::string prm_directory = ".";
 
-      GeometryParameters geometry;
-      LoadParameters     loads;
-      SolverParameters   solver;
-      ContactParameters  contact;
+      GeometryParameters     geometry;
+      LoadParameters         loads;
+      SolverParameters       solver;
+      ContactParameters      contact;
       SafetyFactorParameters safety_factor;
-      WaterParameters    water;
-      OutputParameters   output;
+      WaterParameters        water;
+      OutputParameters       output;
       /** Limit equilibrium on the model's own sliding surface. */
       analyses::LimitEquilibriumParameters limit_equilibrium;
       /** The yield acceleration and the Newmark displacement. */
       analyses::YieldAccelerationParameters yield_acceleration;
       /** Active anchors across the sliding surface (analyses/anchors.h). */
       analyses::AnchorParameters anchors;
-      /** The probabilistic safety factor (Monte Carlo on the soil strengths). */
+      /** The probabilistic safety factor (Monte Carlo on the soil strengths).
+       */
       analyses::ProbabilisticParameters probabilistic;
       /** The search for the critical circle (analyses/surface_search.h). */
       analyses::SurfaceSearchParameters surface_search;
 
-      std::vector<std::string>                   block_names;
+      std::vector<std::string> block_names;
       /** Names of the material regions (Materials/Names). */
-      std::vector<std::string>                   material_names;
+      std::vector<std::string> material_names;
       /**
        * Materials by name: each block's own (Blocks/<name>) and each
        * material region's (Materials/<name>); no name is both.
@@ -72,7 +74,7 @@ namespace fdem
 
       /** Declares every entry, with subsections for the given names. */
       static void
-      declare_parameters(dealii::ParameterHandler &      prm,
+      declare_parameters(dealii::ParameterHandler       &prm,
                          const std::vector<std::string> &block_names,
                          const std::vector<std::string> &boundary_names,
                          const std::vector<std::string> &interface_names,
@@ -82,7 +84,8 @@ namespace fdem
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      /** Probabilistic/Variables: each target exists and has a strength of its own. */
+      /** Probabilistic/Variables: each target exists and has a strength of its
+       * own. */
       void
       probabilistic_check_targets() const;
 
@@ -97,7 +100,8 @@ namespace fdem
      * @p expanded receives the full parameter set used (for the output folder).
      */
     Parameters
-    read_parameters(const std::string &filename, std::string *expanded = nullptr);
+    read_parameters(const std::string &filename,
+                    std::string       *expanded = nullptr);
 
     /**
      * Prints every parameter with its default, pattern and help text, for

@@ -23,6 +23,7 @@ namespace fdem
      */
     template <int dim>
     nlohmann::json
-    hertz_reference(const Model<dim> &model, std::vector<std::vector<PairResult<dim>>> &results);
+    hertz_reference(const Model<dim>                          &model,
+                    std::vector<std::vector<PairResult<dim>>> &results);
   } // namespace postprocess
 } // namespace fdem

@@ -31,9 +31,9 @@ namespace fdem
       /** g_n: normal relative displacement plus initial gap (> 0 open). */
       double gap = 0;
       /** Tangential relative displacement (2D: along t; 3D: magnitude). */
-      double slip = 0;
+      double              slip   = 0;
       contact::PairStatus status = contact::PairStatus::stick;
-      double area = 0, initial_gap = 0;
+      double              area = 0, initial_gap = 0;
       /**
        * The pair's full-strength cohesion (its cohesive force over its area)
        * and friction angle (degrees): the interface's, or the materials'
@@ -46,18 +46,20 @@ namespace fdem
        * (a pair with no shear).
        */
       double local_safety_factor = 0;
-      /** Normal pressure of an exact solution here, if the case has one (else NaN, not written). */
+      /** Normal pressure of an exact solution here, if the case has one (else
+       * NaN, not written). */
       double reference_pressure = std::numeric_limits<double>::quiet_NaN();
     };
 
-    /** Per-pair results of @p interface, whose first pair is @p first_pair overall. */
+    /** Per-pair results of @p interface, whose first pair is @p first_pair
+     * overall. */
     template <int dim>
     std::vector<PairResult<dim>>
-    pair_results(const contact::Interface<dim> &         interface,
-                 const unsigned int                      first_pair,
-                 const contact::ContactSolution &            solution,
+    pair_results(const contact::Interface<dim>              &interface,
+                 const unsigned int                          first_pair,
+                 const contact::ContactSolution             &solution,
                  const std::vector<contact::PairState<dim>> &states,
-                 const std::vector<contact::PairStrength> &  full_strengths);
+                 const std::vector<contact::PairStrength>   &full_strengths);
 
     /**
      * Extent of the contact zone: its length in 2D (design/formulation.md

@@ -17,9 +17,10 @@ namespace fdem
       /** The safety factor step's K (1 for a run at full strength). */
       double       time = 0;
       unsigned int part = 0;
-      /** The block's or interface's name: what ParaView shows for the dataset. */
-      std::string  name;
-      std::string  file;
+      /** The block's or interface's name: what ParaView shows for the dataset.
+       */
+      std::string name;
+      std::string file;
     };
 
     /**
@@ -27,7 +28,8 @@ namespace fdem
      * step, each with its name.
      */
     void
-    write_pvd(const std::string &filename, const std::vector<PvdEntry> &entries);
+    write_pvd(const std::string           &filename,
+              const std::vector<PvdEntry> &entries);
 
     /**
      * Writes @p summary to @p filename through a temporary file and a rename,

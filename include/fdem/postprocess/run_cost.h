@@ -16,8 +16,9 @@ namespace fdem
 
     /**
      * Peak resident memory of this process so far (MiB): the high-water
-     * mark VmHWM of deal.II's Utilities::System::get_memory_stats(). It counts everything the process holds: Gmsh, the
-     * factorisations, the flexibility matrices, and the libraries' baseline.
+     * mark VmHWM of deal.II's Utilities::System::get_memory_stats(). It counts
+     * everything the process holds: Gmsh, the factorisations, the flexibility
+     * matrices, and the libraries' baseline.
      */
     double
     peak_memory_mib();

@@ -25,10 +25,10 @@ namespace fdem
      */
     template <int dim>
     nlohmann::json
-    make_summary(const Model<dim> &                                model,
-                 const analyses::AnalysisResults &                 analyses_results,
+    make_summary(const Model<dim>                &model,
+                 const analyses::AnalysisResults &analyses_results,
                  const std::vector<std::vector<PairResult<dim>>> &results,
-                 const nlohmann::json &                            hertz,
-                 const std::vector<double> &                       reactions);
+                 const nlohmann::json                            &hertz,
+                 const std::vector<double>                       &reactions);
   } // namespace postprocess
 } // namespace fdem
