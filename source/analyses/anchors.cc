@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/anchors.h>
+#include <fdem/geometry/make_mesh.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
-#include <deal.II/physics/transformations.h>
 
 #include <cmath>
 #include <filesystem>
@@ -53,20 +53,7 @@ namespace fdem
         Point<dim> x;
         for (unsigned int d = 0; d < dim; ++d)
           x[d] = xyz[d];
-        Tensor<1, dim> translation;
-        for (unsigned int d = 0;
-             d < std::min<std::size_t>(dim, geometry.translation.size());
-             ++d)
-          translation[d] = geometry.translation[d];
-        const double   angle = geometry.rotation_angle * numbers::PI / 180;
-        Tensor<2, dim> rotation;
-        if constexpr (dim == 2)
-          rotation =
-            Physics::Transformations::Rotations::rotation_matrix_2d(angle);
-        else
-          rotation = Physics::Transformations::Rotations::rotation_matrix_3d(
-            geometry.rotation_axis / geometry.rotation_axis.norm(), angle);
-        return Point<dim>(rotation * (geometry.scale_factor * x) + translation);
+        return geometry::transformed_point(geometry, x);
       }
 
       /** Finds points in the blocks' cells (a deal.II cache per block). */

@@ -32,16 +32,12 @@ namespace fdem
     using Source = parameters::GeometryParameters::Source;
 
     template <int dim>
-    void
-    apply_transformation(const parameters::GeometryParameters &geometry,
-                         MeshDescription<dim>                 &mesh)
+    Point<dim>
+    transformed_point(const parameters::GeometryParameters &geometry,
+                      const Point<dim>                     &x)
     {
       const std::vector<double> &t = geometry.translation;
-      AssertThrow(dim == 3 || t.size() < 3 || t[2] == 0,
-                  ExcMessage("Geometry/Translation: a 2D model has no z "
-                             "component to translate, so a third number must "
-                             "be 0."));
-      Tensor<1, dim> translation;
+      Tensor<1, dim>             translation;
       for (unsigned int d = 0; d < std::min<std::size_t>(dim, t.size()); ++d)
         translation[d] = t[d];
 
@@ -54,12 +50,23 @@ namespace fdem
         rotation = Physics::Transformations::Rotations::rotation_matrix_3d(
           geometry.rotation_axis / geometry.rotation_axis.norm(), angle);
 
+      return Point<dim>(rotation * (geometry.scale_factor * x) + translation);
+    }
+
+    template <int dim>
+    void
+    apply_transformation(const parameters::GeometryParameters &geometry,
+                         MeshDescription<dim>                 &mesh)
+    {
+      const std::vector<double> &t = geometry.translation;
+      AssertThrow(dim == 3 || t.size() < 3 || t[2] == 0,
+                  ExcMessage("Geometry/Translation: a 2D model has no z "
+                             "component to translate, so a third number must "
+                             "be 0."));
       for (Point<dim> &vertex : mesh.vertices)
-        vertex =
-          Point<dim>(rotation * (geometry.scale_factor * vertex) + translation);
+        vertex = transformed_point(geometry, vertex);
       for (auto &[name, point] : mesh.standing_water)
-        point =
-          Point<dim>(rotation * (geometry.scale_factor * point) + translation);
+        point = transformed_point(geometry, point);
     }
 
 
@@ -225,6 +232,10 @@ namespace fdem
     template void
     apply_transformation<2>(const parameters::GeometryParameters &,
                             MeshDescription<2> &);
+    template Point<2>
+    transformed_point(const parameters::GeometryParameters &, const Point<2> &);
+    template Point<3>
+    transformed_point(const parameters::GeometryParameters &, const Point<3> &);
     template void
     apply_transformation<3>(const parameters::GeometryParameters &,
                             MeshDescription<3> &);

@@ -32,16 +32,8 @@ namespace fdem
         const unsigned int n = results.size();
         // The ends: the pair farthest from pair 0, and the one farthest from
         // it.
-        const auto farthest_from = [&](const Point<dim> &x) {
-          unsigned int best = 0;
-          for (unsigned int k = 1; k < n; ++k)
-            if (results[k].position.distance(x) >
-                results[best].position.distance(x))
-              best = k;
-          return best;
-        };
-        const unsigned int A = farthest_from(results[0].position);
-        const unsigned int B = farthest_from(results[A].position);
+        const unsigned int A = farthest_pair(results, results[0].position);
+        const unsigned int B = farthest_pair(results, results[A].position);
         unsigned int       current =
           (results[B].position - results[A].position) * up > 0 ? B : A;
         std::vector<bool> taken(n, false);

@@ -163,16 +163,8 @@ namespace fdem
         return 0;
       // The chord: from the pair farthest from pair 0 to the one farthest from
       // it.
-      const auto farthest_from = [&](const Point<dim> &x) {
-        unsigned int best = 0;
-        for (unsigned int k = 1; k < n; ++k)
-          if (results[k].position.distance(x) >
-              results[best].position.distance(x))
-            best = k;
-        return best;
-      };
-      const unsigned int A = farthest_from(results[0].position);
-      const unsigned int B = farthest_from(results[A].position);
+      const unsigned int A = farthest_pair(results, results[0].position);
+      const unsigned int B = farthest_pair(results, results[A].position);
       Tensor<1, dim>     e = results[B].position - results[A].position;
       if (e.norm() > 0)
         e /= e.norm();
@@ -233,13 +225,28 @@ namespace fdem
       return extent;
     }
 
-#define FDEM_INSTANTIATE(dim)                                           \
-  template double contact_extent(const std::vector<PairResult<dim>> &); \
-  template std::vector<PairResult<dim>> pair_results(                   \
-    const contact::Interface<dim> &,                                    \
-    const unsigned int,                                                 \
-    const contact::ContactSolution &,                                   \
-    const std::vector<contact::PairState<dim>> &,                       \
+    template <int dim>
+    unsigned int
+    farthest_pair(const std::vector<PairResult<dim>> &results,
+                  const Point<dim>                   &x)
+    {
+      unsigned int best = 0;
+      for (unsigned int k = 1; k < results.size(); ++k)
+        if (results[k].position.distance(x) >
+            results[best].position.distance(x))
+          best = k;
+      return best;
+    }
+
+#define FDEM_INSTANTIATE(dim)                                                 \
+  template double       contact_extent(const std::vector<PairResult<dim>> &); \
+  template unsigned int farthest_pair(const std::vector<PairResult<dim>> &,   \
+                                      const Point<dim> &);                    \
+  template std::vector<PairResult<dim>> pair_results(                         \
+    const contact::Interface<dim> &,                                          \
+    const unsigned int,                                                       \
+    const contact::ContactSolution &,                                         \
+    const std::vector<contact::PairState<dim>> &,                             \
     const std::vector<contact::PairStrength> &);
     FDEM_INSTANTIATE(2)
     FDEM_INSTANTIATE(3)

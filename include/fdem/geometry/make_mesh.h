@@ -46,5 +46,15 @@ namespace fdem
     void
     apply_transformation(const parameters::GeometryParameters &geometry,
                          MeshDescription<dim>                 &mesh);
+
+    /**
+     * The point @p x of the input as the transformed mesh has it:
+     * R (s x) + t with Geometry/Scale factor s, Rotation R and Translation
+     * t (of which a 2D model takes the first two numbers).
+     */
+    template <int dim>
+    Point<dim>
+    transformed_point(const parameters::GeometryParameters &geometry,
+                      const Point<dim>                     &x);
   } // namespace geometry
 } // namespace fdem

@@ -76,5 +76,15 @@ namespace fdem
     double
     contact_extent(const std::vector<PairResult<dim>> &results);
 
+    /**
+     * The index of the pair of @p results farthest from @p x (the first of
+     * equals): from pair 0, then from that one, the two ends of an
+     * interface's chord.
+     */
+    template <int dim>
+    unsigned int
+    farthest_pair(const std::vector<PairResult<dim>> &results,
+                  const dealii::Point<dim>           &x);
+
   } // namespace postprocess
 } // namespace fdem
