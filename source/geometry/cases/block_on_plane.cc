@@ -19,6 +19,23 @@ namespace fdem
   {
     namespace
     {
+      /** The thicknesses normal to the plane, the same in 2D and 3D. */
+      void
+      declare_heights(ParameterHandler &prm)
+      {
+        prm.declare_entry("Block height",
+                          "5",
+                          Patterns::Double(0),
+                          "Height of the block normal to the plane (m).");
+        prm.declare_entry("Foundation thickness",
+                          "5",
+                          Patterns::Double(0),
+                          "Thickness of the foundation slab normal to the "
+                          "plane (m).");
+      }
+
+
+
       /** The entries that only the 2D case (Inclined block) has. */
       void
       declare_parameters_2d(ParameterHandler &prm)
@@ -32,15 +49,7 @@ namespace fdem
                           "10",
                           Patterns::Double(0),
                           "Length of the block along the plane (m).");
-        prm.declare_entry("Block height",
-                          "5",
-                          Patterns::Double(0),
-                          "Height of the block normal to the plane (m).");
-        prm.declare_entry("Foundation thickness",
-                          "5",
-                          Patterns::Double(0),
-                          "Thickness of the foundation slab normal to the "
-                          "plane (m).");
+        declare_heights(prm);
         prm.declare_entry("Foundation overhang",
                           "5",
                           Patterns::Double(0),
@@ -93,15 +102,7 @@ namespace fdem
                           "6",
                           Patterns::Double(0),
                           "Width of the block along the strike (m).");
-        prm.declare_entry("Block height",
-                          "5",
-                          Patterns::Double(0),
-                          "Height of the block normal to the plane (m).");
-        prm.declare_entry("Foundation thickness",
-                          "5",
-                          Patterns::Double(0),
-                          "Thickness of the foundation slab normal to the "
-                          "plane (m).");
+        declare_heights(prm);
         prm.declare_entry("Foundation overhang",
                           "3",
                           Patterns::Double(0),
