@@ -535,7 +535,16 @@ def main():
     surface_search_md = os.path.join(figures, "surface_search.md")
     if os.path.exists(surface_search_md):
         lines += [""] + open(surface_search_md).read().splitlines()
-    with open(os.path.join(doc_dir, "benchmarks.md"), "w") as f:
+    # What follows the Surface search section in the old file (the
+    # probabilistic cost of benchmarks/probabilistic_cost.py and the text
+    # that reads it) is kept as it is.
+    md_path = os.path.join(doc_dir, "benchmarks.md")
+    end_of_search = "<!-- /surface-search -->"
+    if os.path.exists(md_path) and end_of_search in open(md_path).read():
+        tail = open(md_path).read().split(end_of_search, 1)[1]
+        if tail.strip():
+            lines += tail.splitlines()
+    with open(md_path, "w") as f:
         f.write("\n".join(lines))
     print(f"Wrote {os.path.join(doc_dir, 'benchmarks.md')} and {figures}/")
 
