@@ -39,6 +39,18 @@ sys.path[:0] = [HERE, os.path.join(HERE, "..", "..", "tools")]
 import fdem_run  # noqa: E402
 
 
+
+def check_sampled_moments(p, mean, std, P, N):
+    """The sampled mean, standard deviation and P(K < 1) of @p p against
+    the exact ones, each within four standard errors of N samples."""
+    checks = [("mean", p["K_mean"], mean, 4 * std / math.sqrt(N)),
+              ("std", p["K_std"], std, 4 * std / math.sqrt(2 * (N - 1))),
+              ("P(K < 1)", p["P_failure"], P, 4 * math.sqrt(P * (1 - P) / N))]
+    for name, got, want, tolerance in checks:
+        print(f"{name:9s} sampled {got:.6f}, exact {want:.6f}, difference {got - want:+.2e} "
+              f"(tolerance {tolerance:.2e}, four standard errors)")
+        assert abs(got - want) <= tolerance, name
+
 def phi(z):
     return 0.5 * math.erfc(-z / math.sqrt(2))
 
@@ -111,13 +123,7 @@ def check_exact(exe, prm):
     P = phi((1 - mean) / std)
     print(f"exact: mean K {mean:.6f}, std {std:.6f}, P(K < 1) {P:.5f}; rho {rho}; {N} samples "
           f"({p['sampling']})")
-    checks = [("mean", p["K_mean"], mean, 4 * std / math.sqrt(N)),
-              ("std", p["K_std"], std, 4 * std / math.sqrt(2 * (N - 1))),
-              ("P(K < 1)", p["P_failure"], P, 4 * math.sqrt(P * (1 - P) / N))]
-    for name, got, want, tolerance in checks:
-        print(f"{name:9s} sampled {got:.6f}, exact {want:.6f}, difference {got - want:+.2e} "
-              f"(tolerance {tolerance:.2e}, four standard errors)")
-        assert abs(got - want) <= tolerance, name
+    check_sampled_moments(p, mean, std, P, N)
     interval = p["P_failure_interval"]
     print(f"95 % Wilson interval [{interval['lower']:.4f}, {interval['upper']:.4f}] "
           f"{'holds' if interval['lower'] <= P <= interval['upper'] else 'misses'} the exact P")
@@ -169,13 +175,7 @@ def check_load_moments(p, names, A_and_D, L, N):
     print(f"exact (quadrature over {x_name}, 80 points; change from 60: {change:.1e}): "
           f"mean K {mean:.6f}, std {std:.6f}, P(K < 1) {P:.5f}; {N} samples")
     assert change <= 1e-10
-    checks = [("mean", p["K_mean"], mean, 4 * std / math.sqrt(N)),
-              ("std", p["K_std"], std, 4 * std / math.sqrt(2 * (N - 1))),
-              ("P(K < 1)", p["P_failure"], P, 4 * math.sqrt(P * (1 - P) / N))]
-    for name, got, want, tolerance in checks:
-        print(f"{name:9s} sampled {got:.6f}, exact {want:.6f}, difference {got - want:+.2e} "
-              f"(tolerance {tolerance:.2e}, four standard errors)")
-        assert abs(got - want) <= tolerance, name
+    check_sampled_moments(p, mean, std, P, N)
     bins = p["fragility"]["bins"]
     assert sum(b["n"] for b in bins) == N
 
