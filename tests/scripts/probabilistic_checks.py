@@ -39,7 +39,6 @@ sys.path[:0] = [HERE, os.path.join(HERE, "..", "..", "tools")]
 import fdem_run  # noqa: E402
 
 
-
 def check_sampled_moments(p, mean, std, P, N):
     """The sampled mean, standard deviation and P(K < 1) of @p p against
     the exact ones, each within four standard errors of N samples."""
