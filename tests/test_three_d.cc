@@ -55,6 +55,18 @@ namespace
     p.output.write_vtu         = false;
     return p;
   }
+
+  /**
+   * K of the 10 x 6 x 5 block (unit weight 25) on a plane dipping 30
+   * degrees: (c A + W cos 30 tan phi) / (W sin 30), A = 60.
+   */
+  double
+  block_on_plane_K(const double phi, const double cohesion)
+  {
+    const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
+    return (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
+           (W * std::sin(dip));
+  }
 } // namespace
 
 TEST(ThreeD, FreeBlockHasSixRigidModes)
@@ -78,10 +90,7 @@ TEST(ThreeD, BlockOnPlaneMatchesThePlanarFormula)
       model.run();
       ASSERT_EQ(model.summary()["status"], "completed")
         << model.summary()["safety_factor_reason"];
-      const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
-      const double exact =
-        (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
-        (W * std::sin(dip));
+      const double exact = block_on_plane_K(phi, cohesion);
       // Sums of normal and tangential forces are fixed by equilibrium:
       // round-off only.
       EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
@@ -123,10 +132,7 @@ TEST(ThreeD, BlockOnPlaneOfTetrahedraMatchesThePlanarFormula)
         EXPECT_NEAR(model.summary()["interfaces"][0]["area"].get<double>(),
                     60,
                     1e-10);
-        const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
-        const double exact =
-          (cohesion * 60 + W * std::cos(dip) * std::tan(phi * PI / 180)) /
-          (W * std::sin(dip));
+        const double exact = block_on_plane_K(phi, cohesion);
         // As for hexahedra: the sums of normal and tangential forces are
         // fixed by equilibrium, so round-off only.
         EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
@@ -150,9 +156,7 @@ TEST(ThreeD, BlockOnPlaneCaseOfPrmFolder)
   model.run();
   ASSERT_EQ(model.summary()["status"], "completed")
     << model.summary()["safety_factor_reason"];
-  const double W = 25.0 * 10 * 6 * 5, dip = PI / 6;
-  const double exact =
-    (15.0 * 60 + W * std::cos(dip) * std::tan(PI / 6)) / (W * std::sin(dip));
+  const double exact = block_on_plane_K(30, 15);
   EXPECT_NEAR(model.summary()["safety_factor"].get<double>(),
               exact,
               1e-8 * exact);
