@@ -271,16 +271,13 @@ namespace fdem
     }
 
     template <int dim>
-    AnchorLoads<dim>
+    std::vector<Anchor<dim>>
     add_anchor_loads(Model<dim> &model)
     {
-      AnchorLoads<dim> placed;
-      placed.anchors                          = locate_anchors(model);
-      const std::vector<Anchor<dim>> &anchors = placed.anchors;
+      const std::vector<Anchor<dim>> anchors = locate_anchors(model);
       if (anchors.empty())
-        return placed;
-      const bool reduced  = model.get_parameters().anchors.reduced_by_K;
-      placed.reduced_by_K = reduced;
+        return anchors;
+      const bool reduced = model.get_parameters().anchors.reduced_by_K;
       const PointLocator<dim> locator(model);
       // Case 0: the normal components, case 1: the shear components.
       std::vector<std::vector<Vector<double>>> loads(2);
@@ -348,19 +345,18 @@ namespace fdem
                     << a.normal_force << ", shear " << a.shear_force
                     << std::endl;
         }
-      return placed;
+      return anchors;
     }
 
     template <int dim>
     nlohmann::json
-    reinforcement_output(const Model<dim>       &model,
-                         const AnchorLoads<dim> &placed)
+    reinforcement_output(const Model<dim>               &model,
+                         const std::vector<Anchor<dim>> &anchors)
     {
-      const std::vector<Anchor<dim>> &anchors    = placed.anchors;
-      const bool                      reduced    = placed.reduced_by_K;
-      const std::string               convention = anchor_convention(reduced);
-      const double                    K    = model.get_strength_reduction();
-      nlohmann::json                  list = nlohmann::json::array();
+      const bool        reduced = model.get_parameters().anchors.reduced_by_K;
+      const std::string convention = anchor_convention(reduced);
+      const double      K          = model.get_strength_reduction();
+      nlohmann::json    list       = nlohmann::json::array();
       for (const Anchor<dim> &a : anchors)
         list.push_back({{"head", coordinates(a.head)},
                         {"bond_point", coordinates(a.bond)},
@@ -429,13 +425,13 @@ namespace fdem
     locate_anchors(const Model<2> &);
     template std::vector<Anchor<3>>
     locate_anchors(const Model<3> &);
-    template AnchorLoads<2>
+    template std::vector<Anchor<2>>
     add_anchor_loads(Model<2> &);
-    template AnchorLoads<3>
+    template std::vector<Anchor<3>>
     add_anchor_loads(Model<3> &);
     template nlohmann::json
-    reinforcement_output(const Model<2> &, const AnchorLoads<2> &);
+    reinforcement_output(const Model<2> &, const std::vector<Anchor<2>> &);
     template nlohmann::json
-    reinforcement_output(const Model<3> &, const AnchorLoads<3> &);
+    reinforcement_output(const Model<3> &, const std::vector<Anchor<3>> &);
   } // namespace analyses
 } // namespace fdem

@@ -211,7 +211,7 @@ namespace fdem
       model, analysis_results, results, hertz, reactions);
     if (analysis_results.seismic.active)
       summary_json["seismic"] = analyses::to_json(analysis_results.seismic);
-    if (!anchors.anchors.empty())
+    if (!anchors.empty())
       summary_json["reinforcement"] =
         analyses::reinforcement_output(model, anchors);
     if (!analysis_results.probabilistic.is_null())

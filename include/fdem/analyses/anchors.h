@@ -60,15 +60,6 @@ namespace fdem
     std::vector<Anchor<dim>>
     locate_anchors(const Model<dim> &model);
 
-    /** The anchors placed in the model and how their force enters it. */
-    template <int dim>
-    struct AnchorLoads
-    {
-      std::vector<Anchor<dim>> anchors;
-      /** Reinforcement/Reduced by K: the shear component divided by K. */
-      bool reduced_by_K = false;
-    };
-
     /**
      * Adds the anchors' loads to the model (after compute_flexibility()),
      * as two load cases on the blocks' factorisations (no new
@@ -81,7 +72,7 @@ namespace fdem
      * Reinforcement).
      */
     template <int dim>
-    AnchorLoads<dim>
+    std::vector<Anchor<dim>>
     add_anchor_loads(Model<dim> &model);
 
     /**
@@ -90,7 +81,7 @@ namespace fdem
      */
     template <int dim>
     nlohmann::json
-    reinforcement_output(const Model<dim>       &model,
-                         const AnchorLoads<dim> &placed);
+    reinforcement_output(const Model<dim>               &model,
+                         const std::vector<Anchor<dim>> &anchors);
   } // namespace analyses
 } // namespace fdem

@@ -75,7 +75,7 @@ namespace fdem
     /** VTU/PVD files of the steps of the safety-factor iteration. */
     std::vector<postprocess::PvdEntry> step_files;
     /** The anchors of Reinforcement placed in the model. */
-    analyses::AnchorLoads<dim> anchors;
+    std::vector<analyses::Anchor<dim>> anchors;
   };
 
   /**
