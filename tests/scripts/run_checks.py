@@ -385,10 +385,28 @@ def check_mpi(exe, prm, n_ranks="2"):
     # factorisation (round-off, about 1e-15 relative in u). The status
     # iteration may then take another path where a pair sits at a threshold
     # to round-off (seen on the coarse 3D wedge: another slip count at one
-    # step), but it ends in the same state and K to round-off: 1e-10 leaves
-    # a wide margin over the measured 2e-16 to 4e-15 (4e-12 on the
-    # tetrahedra's wedge), far below any error of the method or the mesh.
-    assert abs(K2 / K1 - 1) <= 1e-10, "the safety factor depends on the number of ranks"
+    # step), but a fixed point (K* = K) ends in the same state and K to
+    # round-off: 1e-10 leaves a wide margin over the measured 2e-16 to 4e-15
+    # (4e-12 on the tetrahedra's wedge), far below any error of the method
+    # or the mesh.
+    # A conservative bound (a static K_lo below a K_hi whose solve fails,
+    # farther apart than the tolerance: a plane lifting off) certifies less:
+    # K_lo is a static state, so the limit is at least K_lo, and the failed
+    # solve above it is the status iteration giving up, not a proof. Solves
+    # in the last 1e-4 below the limit succeed or fail with round-off, so
+    # each run's K_lo is the lower bound its own path found. With MUMPS's
+    # dynamic scheduling on two ranks that round-off changes with the load
+    # of the machine: 50 runs of tests/mpi/wedge_3d_amesos_mumps.prm under
+    # load gave K = 0.5777454756 (45) and 0.5778081928 (5), 1.1e-4 apart,
+    # both static states. The runs must then make the same kind of claim
+    # and agree to 1e-3, ten times that spread and ten times inside the
+    # 1e-2 (Bracket agreement) that the claim itself allows.
+    kinds = [s["certificate"]["kind"] + (" (conservative)" if s["certificate"].get("conservative") else "")
+             for s in (serial, parallel)]
+    print("certificates:", kinds)
+    assert kinds[0] == kinds[1], "the certificate depends on the number of ranks"
+    tolerance = 1e-3 if serial["certificate"].get("conservative") else 1e-10
+    assert abs(K2 / K1 - 1) <= tolerance, "the safety factor depends on the number of ranks"
     same_path = all([s[key] for s in serial["iterations"]] == [s[key] for s in parallel["iterations"]]
                     for key in ("n_stick", "n_slip", "n_open", "n_contact_iterations"))
     print("status iteration: " + ("the same path" if same_path else "another path, same K"))
