@@ -271,8 +271,12 @@ namespace fdem
           parameters.interfaces.at(name).search_distance));
         soil_strengths.push_back(
           parameters.interfaces.at(name).strength_from_material ?
-            blocks::soil_strength_at_nodes(
-              *blocks[sides[0]], group, mesh, name) :
+            blocks::soil_strength_at_nodes(*blocks[sides[0]],
+                                           group,
+                                           mesh,
+                                           name,
+                                           blocks::weak_layers<dim>(
+                                             parameters)) :
             std::map<types::global_dof_index, blocks::SoilStrength>());
         // A node on two interfaces (the line of intersection of a wedge) is
         // paired once, in the interface listed first.

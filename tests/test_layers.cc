@@ -8,6 +8,7 @@
 // each segment's c and phi given by hand.
 #include "test_helpers.h"
 
+#include <fdem/analyses/limit_equilibrium_model.h>
 #include <fdem/geometry/cases/slope.h>
 #include <fdem/geometry/gmsh_mesh.h>
 
@@ -213,6 +214,89 @@ namespace
         result.open_cohesion += strengths_material[k].cohesion_force;
     return result;
   }
+
+  /** The weight of @p block: minus the y components of its load vector. */
+  double
+  weight_of(const blocks::ElasticBlock<2> &block)
+  {
+    double W = 0;
+    // The y components: dofs come in component order at each support point.
+    std::vector<bool> is_y(block.dof_handler.n_dofs(), false);
+    std::vector<dealii::types::global_dof_index> dofs(
+      block.fe.n_dofs_per_cell());
+    for (const auto &cell : block.dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          is_y[dofs[i]] = block.fe.system_to_component_index(i).first == 1;
+      }
+    for (unsigned int i = 0; i < block.load_vector.size(); ++i)
+      if (is_y[i])
+        W -= block.load_vector[i];
+    return W;
+  }
+
+  /** The test planes' line y = 25 + (x - 10) 10/36, from (10, 25). */
+  const double plane_slope = 10.0 / 36;
+
+  /** Where the test plane crosses the segment @p a - @p b. */
+  Point<2>
+  plane_crossing(const Point<2> &a, const Point<2> &b)
+  {
+    const double m = (b[1] - a[1]) / (b[0] - a[0]);
+    const double x =
+      (a[1] - m * a[0] - 25 + 10 * plane_slope) / (plane_slope - m);
+    return Point<2>(x, 25 + (x - 10) * plane_slope);
+  }
+
+  /** The layered slope cut by the test plane (10,25) -> (46,35) through
+   * fill, clay and fill again, with the friction angle @p phi everywhere
+   * and no water. */
+  parameters::Parameters
+  layered_plane(const double phi)
+  {
+    auto  p                        = layered(2.0);
+    auto &slope                    = p.geometry.slope;
+    slope.sliding_surface          = geometry::Slope::SlidingSurface::polyline;
+    slope.sliding_surface_polyline = {Point<2>(10, 25), Point<2>(46, 35)};
+    slope.layer_boundaries[0]      = {Point<2>(0, 23),
+                                      Point<2>(10, 24),
+                                      Point<2>(30, 31),
+                                      Point<2>(50, 33)};
+    p.water.piezometric_line.clear();
+    for (auto &[name, material] : p.materials)
+      material.friction_angle = phi;
+    return p;
+  }
+
+  /** @p p with the named weak layer "seam" along @p line. */
+  void
+  add_seam(parameters::Parameters      &p,
+           const double                 cohesion,
+           const double                 phi,
+           const std::vector<Point<2>> &line)
+  {
+    parameters::MaterialParameters seam;
+    seam.has_strength   = true;
+    seam.cohesion       = cohesion;
+    seam.friction_angle = phi;
+    seam.weak_layer     = line;
+    p.material_names.push_back("seam");
+    p.materials["seam"] = seam;
+  }
+
+  /** The full-strength cohesive force of the pairs open at the end. */
+  double
+  open_cohesion(const Model<2> &model)
+  {
+    const auto strengths = model.pair_strengths(1.0);
+    double     open      = 0;
+    for (unsigned int k = 0; k < strengths.size(); ++k)
+      if (model.get_contact_outcome().states[k].status ==
+          contact::PairStatus::open)
+        open += strengths[k].cohesion_force;
+    return open;
+  }
 } // namespace
 
 TEST(Layers, EveryCellHasTheMaterialOfItsLayer)
@@ -253,33 +337,16 @@ TEST(Layers, EveryCellHasTheMaterialOfItsLayer)
 // in both): K and the pair strengths agree to round-off.
 TEST(Layers, MaterialStrengthEqualsOneInterfacePerLayerByHand)
 {
-  auto  p                        = layered(2.0);
-  auto &slope                    = p.geometry.slope;
-  slope.sliding_surface          = geometry::Slope::SlidingSurface::polyline;
-  slope.sliding_surface_polyline = {Point<2>(10, 25), Point<2>(46, 35)};
-  slope.layer_boundaries[0]      = {Point<2>(0, 23),
-                                    Point<2>(10, 24),
-                                    Point<2>(30, 31),
-                                    Point<2>(50, 33)};
-  p.water.piezometric_line.clear();
-  for (auto &[name, material] : p.materials)
-    material.friction_angle = 25;
+  const auto p = layered_plane(25);
   const auto [K_material, K_by_hand, open_cohesion] =
     compare_with_hand(p, true);
   EXPECT_NEAR(K_material, K_by_hand, 1e-9 * K_by_hand);
 
-  // The closed form: where the line y = 25 + (x - 10) 10/36 crosses the
+  // The closed form, with the lengths where the plane crosses the
   // boundary's segments (10,24)-(30,31) and (30,31)-(50,33).
-  const double slope_line = 10.0 / 36;
-  const auto   crossing   = [&](const Point<2> &a, const Point<2> &b) {
-    const double m = (b[1] - a[1]) / (b[0] - a[0]);
-    const double x =
-      (a[1] - m * a[0] - 25 + 10 * slope_line) / (slope_line - m);
-    return Point<2>(x, 25 + (x - 10) * slope_line);
-  };
   const Point<2> start(10, 25),
-    in(crossing(Point<2>(10, 24), Point<2>(30, 31))),
-    out(crossing(Point<2>(30, 31), Point<2>(50, 33))), end(46, 35);
+    in(plane_crossing(Point<2>(10, 24), Point<2>(30, 31))),
+    out(plane_crossing(Point<2>(30, 31), Point<2>(50, 33))), end(46, 35);
   const double L_fill = start.distance(in) + out.distance(end),
                L_clay = in.distance(out);
   std::ostringstream log;
@@ -289,20 +356,8 @@ TEST(Layers, MaterialStrengthEqualsOneInterfacePerLayerByHand)
   model.assemble_and_factorize();
   const auto &mass = *model.get_blocks()[0];
   ASSERT_EQ(mass.name, "sliding mass");
-  double W = 0;
-  // The y components: dofs come in component order at each support point.
-  std::vector<bool> is_y(mass.dof_handler.n_dofs(), false);
-  std::vector<dealii::types::global_dof_index> dofs(mass.fe.n_dofs_per_cell());
-  for (const auto &cell : mass.dof_handler.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      for (unsigned int i = 0; i < dofs.size(); ++i)
-        is_y[dofs[i]] = mass.fe.system_to_component_index(i).first == 1;
-    }
-  for (unsigned int i = 0; i < mass.load_vector.size(); ++i)
-    if (is_y[i])
-      W -= mass.load_vector[i];
-  const double alpha = std::atan(slope_line);
+  const double W     = weight_of(mass);
+  const double alpha = std::atan(plane_slope);
   const double K_statics =
     (p.materials.at("fill").cohesion * L_fill +
      p.materials.at("clay").cohesion * L_clay - open_cohesion +
@@ -325,4 +380,119 @@ TEST(Layers, MaterialFrictionDiffersOnlyAtLayerJunctions)
     compare_with_hand(layered(2.0), false);
   (void)open_cohesion;
   EXPECT_NEAR(K_material, K_by_hand, 2e-2 * K_by_hand);
+}
+
+// A named weak layer (Materials/seam/Weak layer) along the test plane from
+// its toe to the surface vertex (28, 30), the rest of the plane through the
+// layers (clay, then fill). One friction angle everywhere and a rigid
+// translation as the mechanism: every pair slips at the limit, so statics
+// gives K = (int c dGamma - C_open + tan(phi) W cos(a)) / (W sin(a)), with
+// the seam's c along it and the layers' elsewhere (Strength = material
+// weights each node's c by its shape function, so the pairs' cohesive
+// forces sum to the integral exactly). Limit equilibrium slices the same
+// section with a slice boundary at the vertex, opens nothing, and gives it
+// with C_open = 0 for the same W (straight-sided cells: the FE weight is
+// exact). Tolerances: the iteration's 1e-11 and the root search's 1e-14,
+// with margin for round-off.
+TEST(Layers, WeakLayerAlongPartOfThePlaneGivesTheClosedForm)
+{
+  const double   phi = 25, c_seam = 1;
+  auto           p = layered_plane(phi);
+  const Point<2> start(10, 25), P(28, 30), end(46, 35);
+  add_seam(p, c_seam, phi, {Point<2>(0, 25 - 10 * plane_slope), P});
+  p.geometry.slope.sliding_surface_polyline = {start, P, end};
+  p.limit_equilibrium.n_slices              = 40;
+  const Point<2> in  = plane_crossing(Point<2>(10, 24), Point<2>(30, 31)),
+                 out = plane_crossing(Point<2>(30, 31), Point<2>(50, 33));
+  ASSERT_LT(in[0], P[0]);
+  ASSERT_LT(P[0], out[0]);
+  const double cohesion_integral =
+    c_seam * start.distance(P) +
+    p.materials.at("clay").cohesion * P.distance(out) +
+    p.materials.at("fill").cohesion * out.distance(end);
+
+  const auto   material   = run(p);
+  const auto  &model      = material->model();
+  const double K          = material->results().safety_factor.safety_factor;
+  const double W          = weight_of(*model.get_blocks()[0]);
+  const auto   strengths  = model.pair_strengths(1.0);
+  double       seam_force = 0, seam_area = 0;
+  for (unsigned int k = 0; k < strengths.size(); ++k)
+    {
+      const auto &pair = model.get_interfaces()[0].pairs[k];
+      if (pair.position_J[0] < P[0] - 1e-6) // inside the seam's part
+        {
+          seam_force += strengths[k].cohesion_force;
+          seam_area += pair.area;
+        }
+    }
+  // Each pair inside the seam's part has the seam's c over its area.
+  EXPECT_NEAR(seam_force, c_seam * seam_area, 1e-12 * seam_force);
+  const double alpha       = std::atan(plane_slope);
+  const auto   closed_form = [&](const double open) {
+    return (cohesion_integral - open +
+            std::tan(phi * dealii::numbers::PI / 180) * W * std::cos(alpha)) /
+           (W * std::sin(alpha));
+  };
+  const double open = open_cohesion(model);
+  std::cout << "  int c dGamma " << cohesion_integral << ", W " << W
+            << ", open pairs' cohesion " << open << ", K "
+            << std::setprecision(12) << K << ", from statics "
+            << closed_form(open) << std::endl;
+  EXPECT_NEAR(K, closed_form(open), 1e-9 * K);
+
+  const auto le = analyses::model_limit_equilibrium(p);
+  ASSERT_TRUE(le.computed) << le.not_computed;
+  unsigned int n_methods = 0;
+  for (const auto &entry : le.methods)
+    if (entry.not_computed.empty()) // Bishop's is for circles only
+      {
+        ++n_methods;
+        const std::string name =
+          analyses::limit_equilibrium::method_key(entry.method);
+        std::cout << "  " << name << " K " << entry.result.K << std::endl;
+        EXPECT_NEAR(entry.result.K, closed_form(0), 1e-9 * K) << name;
+      }
+  EXPECT_GE(n_methods, 4u);
+}
+
+// The seam along the whole test plane with a friction angle of its own
+// (15 degrees against the layers' 25): every pair takes the seam's c and
+// phi, so K is the planar closed form with them alone, whatever the layers
+// are; the iteration's tolerance as above.
+TEST(Layers, WeakLayerAlongTheWholePlaneTakesItsFrictionAngle)
+{
+  const double   c_seam = 2, phi_seam = 15;
+  auto           p = layered_plane(25);
+  const Point<2> start(10, 25), end(46, 35);
+  add_seam(p,
+           c_seam,
+           phi_seam,
+           {Point<2>(0, 25 - 10 * plane_slope),
+            Point<2>(50, 25 + 40 * plane_slope)});
+  const auto   seam  = run(p);
+  const auto  &model = seam->model();
+  const double K     = seam->results().safety_factor.safety_factor;
+  const double W     = weight_of(*model.get_blocks()[0]);
+  const double alpha = std::atan(plane_slope);
+  const double K_statics =
+    (c_seam * start.distance(end) - open_cohesion(model) +
+     std::tan(phi_seam * dealii::numbers::PI / 180) * W * std::cos(alpha)) /
+    (W * std::sin(alpha));
+  std::cout << "  K " << std::setprecision(12) << K << ", from statics "
+            << K_statics << std::endl;
+  EXPECT_NEAR(K, K_statics, 1e-9 * K);
+
+  // The seam is given in the input's coordinates and moves with the mesh:
+  // the model translated and rotated by -40 degrees, gravity with it, gives
+  // the same K (the invariance of SafetyFactor.InvariantUnderTranslation-
+  // RotationAndUnits; units and a common stiffness:
+  // invariance.weak_layer_slope).
+  auto moved                    = p;
+  moved.geometry.translation    = {1000, -250};
+  moved.geometry.rotation_angle = -40;
+  moved.loads.gravity_direction = {-std::sin(40 * dealii::numbers::PI / 180),
+                                   -std::cos(40 * dealii::numbers::PI / 180)};
+  moved.output.directory += "/moved";
+  EXPECT_NEAR(run(moved)->results().safety_factor.safety_factor, K, 1e-8 * K);
 }

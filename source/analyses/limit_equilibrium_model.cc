@@ -170,6 +170,15 @@ namespace fdem
                                first.frictionless           ? 0. :
                                                     first.friction_angle;
       };
+      section.weak_layers.clear();
+      if (first.strength_from_material)
+        for (const std::string &name : p.material_names)
+          if (!p.materials.at(name).weak_layer.empty())
+            {
+              const auto &m = p.materials.at(name);
+              section.weak_layers.push_back(
+                {m.weak_layer, m.cohesion, m.friction_angle});
+            }
       section.layers.clear();
       // A layer without a material is the model's error, reported when the
       // blocks are set up; no section here.

@@ -415,6 +415,18 @@ namespace fdem
             layer_at(mass, s.xm, s.ym + 1e-9 * (1 + std::abs(s.ym)));
           s.c       = layer.cohesion;
           s.tan_phi = std::tan(layer.friction_angle * M_PI / 180);
+          for (const WeakLayer &weak : mass.weak_layers)
+            if (geometry::case_input::distance_to_polyline(Point<2>(a, ya),
+                                                           weak.line) <=
+                  1e-3 * s.l &&
+                geometry::case_input::distance_to_polyline(Point<2>(b, yb),
+                                                           weak.line) <=
+                  1e-3 * s.l)
+              {
+                s.c       = weak.cohesion;
+                s.tan_phi = std::tan(weak.friction_angle * M_PI / 180);
+                break;
+              }
           return s;
         }
       } // namespace
@@ -458,6 +470,9 @@ namespace fdem
             layer.top = flip(layer.top);
         if (!section.piezometric.empty())
           piezometric = flip(section.piezometric);
+        weak_layers = section.weak_layers;
+        for (WeakLayer &weak : weak_layers)
+          weak.line = flip(weak.line);
         centre = Point<2>(mirrored ? -sliding.centre[0] : sliding.centre[0],
                           sliding.centre[1]);
         radius = sliding.radius;

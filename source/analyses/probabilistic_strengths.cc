@@ -63,6 +63,7 @@ namespace fdem
             continue;
           auto      &block = *model.get_blocks()[interface.block_I];
           const auto saved = block.materials;
+          auto weak_layers = blocks::weak_layers<dim>(model.get_parameters());
           for (unsigned int m = 0; m < materials.size(); ++m)
             {
               for (auto &[key, material] : block.materials)
@@ -70,11 +71,14 @@ namespace fdem
                   model.get_mesh().material_key_name(key) == materials[m].name ?
                     1 :
                     0;
+              for (auto &layer : weak_layers)
+                layer.material.cohesion = layer.name == materials[m].name;
               for (const auto &[dof, strength] :
                    blocks::soil_strength_at_nodes(block,
                                                   interface.face_group,
                                                   model.get_mesh(),
-                                                  interface.name))
+                                                  interface.name,
+                                                  weak_layers))
                 if (strength.cohesion != 0)
                   weights[i][dof].emplace_back(m, strength.cohesion);
             }

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/blocks/block_materials.h>
+#include <fdem/geometry/cases/case_input.h>
+#include <fdem/geometry/make_mesh.h>
 
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
+#include <type_traits>
 
 namespace fdem
 {
@@ -23,7 +27,65 @@ namespace fdem
         return (key < mesh.block_names.size() ? "Blocks/" : "Materials/") +
                mesh.material_key_name(key);
       }
+
+      /**
+       * The weak layer that the face @p face runs along, or nullptr. In 2D
+       * a face is a segment: along the polyline when both its ends are
+       * within 1e-3 of its length of it (a face that crosses the polyline
+       * has at most one end on it).
+       */
+      template <typename FaceIterator>
+      const WeakLayer *
+      weak_layer_along(const FaceIterator           &face,
+                       const std::vector<WeakLayer> &weak_layers,
+                       const std::integral_constant<int, 2> &)
+      {
+        const double tolerance = 1e-3 * face->diameter();
+        for (const WeakLayer &layer : weak_layers)
+          {
+            bool along = true;
+            for (const unsigned int v : face->vertex_indices())
+              along = along && geometry::case_input::distance_to_polyline(
+                                 face->vertex(v), layer.polyline) <= tolerance;
+            if (along)
+              return &layer;
+          }
+        return nullptr;
+      }
+
+      template <typename FaceIterator>
+      const WeakLayer *
+      weak_layer_along(const FaceIterator &,
+                       const std::vector<WeakLayer> &,
+                       const std::integral_constant<int, 3> &)
+      {
+        return nullptr; // weak_layers() refuses weak layers in 3D
+      }
     } // namespace
+
+    template <int dim>
+    std::vector<WeakLayer>
+    weak_layers(const parameters::Parameters &parameters)
+    {
+      std::vector<WeakLayer> layers;
+      for (const std::string &name : parameters.material_names)
+        {
+          const parameters::MaterialParameters &material =
+            parameters.materials.at(name);
+          if (material.weak_layer.empty())
+            continue;
+          AssertThrow(dim == 2,
+                      ExcMessage("Materials/" + name +
+                                 "/Weak layer: a polyline is a weak layer "
+                                 "of a 2D model only."));
+          WeakLayer layer{name, {}, material};
+          for (const Point<2> &point : material.weak_layer)
+            layer.polyline.push_back(
+              geometry::transformed_point(parameters.geometry, point));
+          layers.push_back(layer);
+        }
+      return layers;
+    }
 
     template <int dim>
     void
@@ -39,14 +101,28 @@ namespace fdem
                                " is not listed; list it and give "
                                "it a subsection with its Young's modulus."));
       for (const std::string &name : declared)
-        AssertThrow(std::find(mesh.material_names.begin(),
-                              mesh.material_names.end(),
-                              name) != mesh.material_names.end(),
-                    ExcMessage("Materials/Names: '" + name +
-                               "' is not a material "
-                               "region (physical group of dimension " +
-                               std::to_string(dim) + ", or a layer) in " +
-                               mesh.source + "."));
+        {
+          const bool weak = !parameters.materials.at(name).weak_layer.empty();
+          const bool in_mesh = std::find(mesh.material_names.begin(),
+                                         mesh.material_names.end(),
+                                         name) != mesh.material_names.end();
+          AssertThrow(!weak || dim == 2,
+                      ExcMessage("Materials/" + name +
+                                 "/Weak layer: a polyline is a weak layer "
+                                 "of a 2D model only."));
+          AssertThrow(!weak || !in_mesh,
+                      ExcMessage(
+                        "Materials/" + name +
+                        "/Weak layer: a weak layer has no cells, but '" + name +
+                        "' is a material region (or a layer) of " +
+                        mesh.source + "."));
+          AssertThrow(weak || in_mesh,
+                      ExcMessage("Materials/Names: '" + name +
+                                 "' is not a material "
+                                 "region (physical group of dimension " +
+                                 std::to_string(dim) + ", or a layer) in " +
+                                 mesh.source + "."));
+        }
       std::set<unsigned int> keys;
       for (unsigned int c = 0; c < mesh.cells.size(); ++c)
         keys.insert(mesh.material_key(c));
@@ -83,7 +159,8 @@ namespace fdem
     soil_strength_at_nodes(const ElasticBlock<dim>              &block,
                            const types::boundary_id              group,
                            const geometry::MeshDescription<dim> &mesh,
-                           const std::string                    &interface_name)
+                           const std::string                    &interface_name,
+                           const std::vector<WeakLayer>         &weak_layers)
     {
       // Per node (its x dof): int phi dGamma, int phi c dGamma, int phi
       // tan(phi) dGamma, and the same with |phi| for nodes whose weights
@@ -103,8 +180,13 @@ namespace fdem
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() && face->boundary_id() == group)
             {
+              const WeakLayer *weak =
+                weak_layer_along(face,
+                                 weak_layers,
+                                 std::integral_constant<int, dim>());
               const parameters::MaterialParameters &material =
-                block.materials.at(cell->material_id());
+                weak != nullptr ? weak->material :
+                                  block.materials.at(cell->material_id());
               AssertThrow(material.has_strength,
                           ExcMessage(
                             "Interfaces/" + interface_name +
@@ -163,11 +245,17 @@ namespace fdem
     soil_strength_at_nodes(const ElasticBlock<2> &,
                            const types::boundary_id,
                            const geometry::MeshDescription<2> &,
-                           const std::string &);
+                           const std::string &,
+                           const std::vector<WeakLayer> &);
     template std::map<types::global_dof_index, SoilStrength>
     soil_strength_at_nodes(const ElasticBlock<3> &,
                            const types::boundary_id,
                            const geometry::MeshDescription<3> &,
-                           const std::string &);
+                           const std::string &,
+                           const std::vector<WeakLayer> &);
+    template std::vector<WeakLayer>
+    weak_layers<2>(const parameters::Parameters &);
+    template std::vector<WeakLayer>
+    weak_layers<3>(const parameters::Parameters &);
   } // namespace blocks
 } // namespace fdem

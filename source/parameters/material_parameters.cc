@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/parameters/material_parameters.h>
+#include <fdem/parameters/model_parameters.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -62,6 +63,19 @@ namespace fdem
                         "Cohesion c of the soil (force/length^2, e.g. kPa), "
                         "used with its Friction angle by interfaces with "
                         "Strength = material.");
+      prm.declare_entry(
+        "Weak layer",
+        "",
+        Patterns::Anything(),
+        "Materials only, 2D: makes this material a named weak layer, a seam "
+        "of no thickness along the polyline 'x,y; x,y; ...' (length, in the "
+        "coordinates before the Geometry transformation, moved with the "
+        "mesh). Every face of an interface with Strength = material that "
+        "runs along it (both ends within 1e-3 of the face's length of the "
+        "polyline) takes this material's Cohesion and Friction angle instead "
+        "of those of the cells beside it; limit equilibrium does the same "
+        "for a slice base along it. The material has no cells: it is not a "
+        "region of the mesh nor a layer. Empty: an ordinary material.");
     }
 
     void
@@ -102,6 +116,32 @@ namespace fdem
         AssertThrow(cohesion == 0,
                     ExcMessage(path + "/Cohesion: give the Friction angle too "
                                       "(0 for a purely cohesive soil)."));
+      weak_layer.clear();
+      for (const std::string &point :
+           Utilities::split_string_list(prm.get("Weak layer"), ';'))
+        {
+          const std::vector<double> xy =
+            parse_vector(point, 2, path + "/Weak layer");
+          weak_layer.emplace_back(xy[0], xy[1]);
+          AssertThrow(weak_layer.size() == 1 ||
+                        weak_layer.back() != weak_layer[weak_layer.size() - 2],
+                      ExcMessage(path + "/Weak layer: two consecutive points "
+                                        "are the same."));
+        }
+      if (!weak_layer.empty())
+        {
+          AssertThrow(path.rfind("Materials/", 0) == 0,
+                      ExcMessage(path +
+                                 "/Weak layer: a block's own material fills "
+                                 "its cells; list the weak layer under "
+                                 "Materials/Names."));
+          AssertThrow(weak_layer.size() >= 2,
+                      ExcMessage(path +
+                                 "/Weak layer: give at least two points."));
+          AssertThrow(has_strength,
+                      ExcMessage(path + "/Weak layer: a weak layer needs its "
+                                        "Friction angle (and Cohesion)."));
+        }
     }
 
     void

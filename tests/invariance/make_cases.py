@@ -104,6 +104,26 @@ CASES = {
                 for x, y in [(0, 24), (10, 24.8), (30, 29), (50, 30)]),
             "end"],
     },
+    # The layered slope on a named weak layer (Materials/seam/Weak layer,
+    # in the input's coordinates: scaled with the mesh by Scale factor).
+    "weak_layer_slope": {
+        "prm": "weak_layer_slope.prm",
+        "blocks": {},
+        "materials": {"fill": (1.0e4, 19, 20.5, 5), "clay": (5.0e3, 18, 19.5, 10),
+                      "sand": (3.0e4, 20, 21, 0)},
+        "quick": ["subsection Geometry", "  subsection Slope",
+                  "    set Mesh size = 2.0", "  end", "end"],
+        "interfaces": lambda F, L: [],
+        "extra": lambda F, L: [
+            "subsection Materials", "  subsection seam",
+            f"    set Cohesion = {num(1 * F / L**2)}", "  end", "end",
+            "subsection Water",
+            f"  set Unit weight of water = {num(9.81 * F / L**3)}",
+            "  set Piezometric line = " + "; ".join(
+                f"{num(x * L)},{num(y * L)}"
+                for x, y in [(0, 24), (10, 24.8), (30, 29), (50, 30)]),
+            "end"],
+    },
     "block_on_plane_3d": {
         "prm": "block_on_plane_3d.prm",
         "blocks": {"block": (1e6, 25), "foundation": (1e6, 25)},

@@ -52,6 +52,20 @@ namespace fdem
       };
 
       /**
+       * A named weak layer (Materials/<name>/Weak layer): a slice base along
+       * its line (both ends within 1e-3 of the base's length) takes its
+       * strength instead of the layer's.
+       */
+      struct WeakLayer
+      {
+        std::vector<Point<2>> line;
+        /** Cohesion c (force/length^2). */
+        double cohesion = 0;
+        /** Friction angle phi (degrees). */
+        double friction_angle = 0;
+      };
+
+      /**
        * The section: ground, layers top down (each below its top line down to
        * the next layer's top), piezometric line and the unit weight of water.
        * Below the piezometric line a layer weighs its saturated unit weight
@@ -84,6 +98,8 @@ namespace fdem
         /** Whether the anchors' part along the base is divided by K (method B).
          */
         bool anchors_reduced_by_K = false;
+        /** Named weak layers that slice bases may run along. */
+        std::vector<WeakLayer> weak_layers;
       };
 
       /** The sliding surface: a circle or a polyline, with a tension crack. */
@@ -208,6 +224,7 @@ namespace fdem
         bool                   mirrored = false;
         std::vector<Point<2>>  ground, surface, piezometric;
         std::vector<SoilLayer> layers;
+        std::vector<WeakLayer> weak_layers;
         double                 water_unit_weight;
         bool                   pore_pressure;
         /** The section's seismic coefficients (Section::kh, kv). */

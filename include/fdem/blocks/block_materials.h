@@ -47,20 +47,44 @@ namespace fdem
     };
 
     /**
+     * A named weak layer (Materials/<name>/Weak layer): a seam of no
+     * thickness with its material's c and phi, as the mesh has it (moved by
+     * the Geometry transformation).
+     */
+    struct WeakLayer
+    {
+      std::string                    name;
+      std::vector<Point<2>>          polyline;
+      parameters::MaterialParameters material;
+    };
+
+    /**
+     * The weak layers of @p parameters, their polylines moved as the mesh
+     * (geometry::transformed_point()). Throws in 3D, where a polyline is no
+     * surface.
+     */
+    template <int dim>
+    std::vector<WeakLayer>
+    weak_layers(const parameters::Parameters &parameters);
+
+    /**
      * Strength = material: for each node of @p block on the face group
      * @p group, keyed by its first dof, the mean of the cohesion and of
      * tan(phi) of the materials of the block's cells along the group,
      * weighted by the node's shape function on each face (int phi_k c dGamma
      * / int phi_k dGamma): a node inside one material takes its c and phi, a
      * node at the boundary between two takes each over its share of the
-     * node's area. Throws naming Interfaces/@p interface_name/Strength if a
-     * material met has no Friction angle.
+     * node's area. A face along one of @p weak_layers (each of its vertices
+     * within 1e-3 of its length of the polyline) takes the weak layer's c
+     * and phi instead of its cell's. Throws naming Interfaces/@p
+     * interface_name/Strength if a material met has no Friction angle.
      */
     template <int dim>
     std::map<types::global_dof_index, SoilStrength>
     soil_strength_at_nodes(const ElasticBlock<dim>              &block,
                            const types::boundary_id              group,
                            const geometry::MeshDescription<dim> &mesh,
-                           const std::string &interface_name);
+                           const std::string                    &interface_name,
+                           const std::vector<WeakLayer> &weak_layers = {});
   } // namespace blocks
 } // namespace fdem

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 
 #include <string>
+#include <vector>
 
 namespace fdem
 {
@@ -54,6 +56,15 @@ namespace fdem
       double friction_angle = 0;
       /** Cohesion c of the soil (force/length^2). */
       double cohesion = 0;
+      /**
+       * A named weak layer (Materials/<name>/Weak layer, 2D): a seam of no
+       * thickness along this polyline, in the coordinates before the
+       * Geometry transformation. The node pairs of an interface with
+       * Strength = material that run along it take this material's c and
+       * phi, not those of the cells beside them. Empty: an ordinary
+       * material.
+       */
+      std::vector<dealii::Point<2>> weak_layer;
 
       /** The weight per unit volume above the water table, with @p g for a
        * density. */

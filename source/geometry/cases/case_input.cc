@@ -7,7 +7,9 @@
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace fdem
@@ -166,6 +168,20 @@ namespace fdem
               return (1 - t) * line[i - 1][1] + t * line[i][1];
             }
         return line.back()[1];
+      }
+
+      double
+      distance_to_polyline(const Point<2> &p, const std::vector<Point<2>> &line)
+      {
+        double distance = std::numeric_limits<double>::infinity();
+        for (unsigned int i = 0; i + 1 < line.size(); ++i)
+          {
+            const Tensor<1, 2> e = line[i + 1] - line[i];
+            const double       t =
+              std::clamp((p - line[i]) * e / e.norm_square(), 0.0, 1.0);
+            distance = std::min(distance, p.distance(line[i] + t * e));
+          }
+        return distance;
       }
 
       std::vector<double>

@@ -112,6 +112,11 @@ namespace fdem
       double
       polyline_elevation(const std::vector<Point<2>> &line, const double x);
 
+      /** The distance from @p p to the polyline @p line (any points). */
+      double
+      distance_to_polyline(const Point<2>              &p,
+                           const std::vector<Point<2>> &line);
+
       /** The x of the points of @p a and @p b strictly inside
        * (x_min, x_max), and the two ends, in increasing order: where two
        * polylines may change slope, so that between two of these x they can
