@@ -42,6 +42,23 @@ def num(x):
     return repr(float(x))
 
 
+# prm/layered_slope.prm's layers: Young's modulus, unit weight, saturated
+# unit weight, cohesion (kPa, kN/m^3).
+LAYERS = {"fill": (1.0e4, 19, 20.5, 5), "clay": (5.0e3, 18, 19.5, 10),
+          "sand": (3.0e4, 20, 21, 0)}
+
+
+def layered_water(F, L):
+    """The layered slope's water: the piezometric line is in the model's
+    coordinates (the layers are the generator's, scaled with the mesh)."""
+    return ["subsection Water",
+            f"  set Unit weight of water = {num(9.81 * F / L**3)}",
+            "  set Piezometric line = " + "; ".join(
+                f"{num(x * L)},{num(y * L)}"
+                for x, y in [(0, 24), (10, 24.8), (30, 29), (50, 30)]),
+            "end"]
+
+
 # Each case: the prm/ file, the blocks, the entries of the reference
 # (kN, m, kPa) that make it quick, and a function giving the
 # units-dependent entries for a force factor F and a length factor L
@@ -87,42 +104,24 @@ CASES = {
     "layered_slope": {
         "prm": "layered_slope.prm",
         "blocks": {},
-        # Materials: Young's modulus, unit weight, saturated unit weight,
-        # cohesion (kPa, kN/m^3).
-        "materials": {"fill": (1.0e4, 19, 20.5, 5), "clay": (5.0e3, 18, 19.5, 10),
-                      "sand": (3.0e4, 20, 21, 0)},
+        "materials": LAYERS,
         "quick": ["subsection Geometry", "  subsection Slope",
                   "    set Mesh size = 2.0", "  end", "end"],
         "interfaces": lambda F, L: [],
-        # The piezometric line is in the model's coordinates (the layers
-        # are the generator's, scaled with the mesh).
-        "extra": lambda F, L: [
-            "subsection Water",
-            f"  set Unit weight of water = {num(9.81 * F / L**3)}",
-            "  set Piezometric line = " + "; ".join(
-                f"{num(x * L)},{num(y * L)}"
-                for x, y in [(0, 24), (10, 24.8), (30, 29), (50, 30)]),
-            "end"],
+        "extra": layered_water,
     },
     # The layered slope on a named weak layer (Materials/seam/Weak layer,
     # in the input's coordinates: scaled with the mesh by Scale factor).
     "weak_layer_slope": {
         "prm": "weak_layer_slope.prm",
         "blocks": {},
-        "materials": {"fill": (1.0e4, 19, 20.5, 5), "clay": (5.0e3, 18, 19.5, 10),
-                      "sand": (3.0e4, 20, 21, 0)},
+        "materials": LAYERS,
         "quick": ["subsection Geometry", "  subsection Slope",
                   "    set Mesh size = 2.0", "  end", "end"],
         "interfaces": lambda F, L: [],
         "extra": lambda F, L: [
             "subsection Materials", "  subsection seam",
-            f"    set Cohesion = {num(1 * F / L**2)}", "  end", "end",
-            "subsection Water",
-            f"  set Unit weight of water = {num(9.81 * F / L**3)}",
-            "  set Piezometric line = " + "; ".join(
-                f"{num(x * L)},{num(y * L)}"
-                for x, y in [(0, 24), (10, 24.8), (30, 29), (50, 30)]),
-            "end"],
+            f"    set Cohesion = {num(1 * F / L**2)}", "  end", "end"] + layered_water(F, L),
     },
     "block_on_plane_3d": {
         "prm": "block_on_plane_3d.prm",
