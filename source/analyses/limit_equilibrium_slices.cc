@@ -6,6 +6,7 @@
 // so that the C++ and the Python yardstick slice a surface the same way.
 #include <fdem/analyses/limit_equilibrium.h>
 #include <fdem/geometry/cases/case_input.h>
+#include <fdem/geometry/cases/polyline_segment.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -416,12 +417,9 @@ namespace fdem
           s.c       = layer.cohesion;
           s.tan_phi = std::tan(layer.friction_angle * M_PI / 180);
           for (const WeakLayer &weak : mass.weak_layers)
-            if (geometry::case_input::distance_to_polyline(Point<2>(a, ya),
-                                                           weak.line) <=
-                  1e-3 * s.l &&
-                geometry::case_input::distance_to_polyline(Point<2>(b, yb),
-                                                           weak.line) <=
-                  1e-3 * s.l)
+            if (geometry::case_input::segment_along_polyline(Point<2>(a, ya),
+                                                             Point<2>(b, yb),
+                                                             weak.line))
               {
                 s.c       = weak.cohesion;
                 s.tan_phi = std::tan(weak.friction_angle * M_PI / 180);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/blocks/block_materials.h>
-#include <fdem/geometry/cases/case_input.h>
+#include <fdem/geometry/cases/polyline_segment.h>
 #include <fdem/geometry/make_mesh.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -40,16 +40,11 @@ namespace fdem
                        const std::vector<WeakLayer> &weak_layers,
                        const std::integral_constant<int, 2> &)
       {
-        const double tolerance = 1e-3 * face->diameter();
         for (const WeakLayer &layer : weak_layers)
-          {
-            bool along = true;
-            for (const unsigned int v : face->vertex_indices())
-              along = along && geometry::case_input::distance_to_polyline(
-                                 face->vertex(v), layer.polyline) <= tolerance;
-            if (along)
-              return &layer;
-          }
+          if (geometry::case_input::segment_along_polyline(face->vertex(0),
+                                                           face->vertex(1),
+                                                           layer.polyline))
+            return &layer;
         return nullptr;
       }
 
@@ -59,7 +54,7 @@ namespace fdem
                        const std::vector<WeakLayer> &,
                        const std::integral_constant<int, 3> &)
       {
-        return nullptr; // weak_layers() refuses weak layers in 3D
+        return nullptr; // check_materials() refuses weak layers in 3D
       }
     } // namespace
 
@@ -74,10 +69,8 @@ namespace fdem
             parameters.materials.at(name);
           if (material.weak_layer.empty())
             continue;
-          AssertThrow(dim == 2,
-                      ExcMessage("Materials/" + name +
-                                 "/Weak layer: a polyline is a weak layer "
-                                 "of a 2D model only."));
+          // check_materials() has refused weak layers in 3D.
+          Assert(dim == 2, ExcInternalError());
           WeakLayer layer{name, {}, material};
           for (const Point<2> &point : material.weak_layer)
             layer.polyline.push_back(

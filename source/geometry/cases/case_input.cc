@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 
 #include <fdem/geometry/cases/case_input.h>
+#include <fdem/geometry/cases/polyline_segment.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
@@ -182,6 +183,16 @@ namespace fdem
             distance = std::min(distance, p.distance(line[i] + t * e));
           }
         return distance;
+      }
+
+      bool
+      segment_along_polyline(const Point<2>              &a,
+                             const Point<2>              &b,
+                             const std::vector<Point<2>> &line)
+      {
+        const double tolerance = 1e-3 * a.distance(b);
+        return distance_to_polyline(a, line) <= tolerance &&
+               distance_to_polyline(b, line) <= tolerance;
       }
 
       std::vector<double>
