@@ -497,7 +497,7 @@ def main():
              "(`timings`, seconds, not nested, so they add up to `total` but for "
              "reading the parameters) and the peak resident memory "
              "(`peak_memory_MiB`, VmHWM from deal.II's get_memory_stats, the whole process). The phases: "
-             "geometry (Gmsh mesh), setup (dofs, constraints, free rigid modes), "
+             "geometry (Gmsh mesh), limit equilibrium (every method on the section, 2D; in summaries of older programs outside every phase), setup (dofs, constraints, free rigid modes), "
              "assembly (K and F of each block), factorisation (K factorised; one "
              "phase 'assembly and factorisation' in summaries of older programs), "
              "one solve (u = K^-1 F for each block: one linear solve of the "

@@ -90,13 +90,17 @@ namespace fdem
          * base normal force from vertical equilibrium, the thrust on its right
          * from horizontal equilibrium. Returns E at the crest end (force
          * residual) and the moment of all forces about the origin (the
-         * interslice forces cancel in it).
+         * interslice forces cancel in it). The root searches call it some
+         * ten thousand times per method, so a mass without anchors marches
+         * without their terms (@p with_anchors false: the same arithmetic,
+         * the anchors' zeros left out).
          */
         struct Residuals
         {
           double thrust, moment;
         };
 
+        template <bool with_anchors>
         Residuals
         march(const SlicedMass          &mass,
               const double               K,
@@ -113,8 +117,12 @@ namespace fdem
               // The crack's water force acts on the last slice, to the left;
               // the seismic force Q on every slice, to the left, and V up.
               // The anchors crossing its base: a force (Fx, Fy) on the slice.
-              const double Fx = s.anchor_x(K, mass.anchors_reduced),
-                           Fy = s.anchor_y(K, mass.anchors_reduced);
+              const double Fx = with_anchors ?
+                                  s.anchor_x(K, mass.anchors_reduced) :
+                                  0.,
+                           Fy = with_anchors ?
+                                  s.anchor_y(K, mass.anchors_reduced) :
+                                  0.;
               const double Px =
                 (i + 1 == n ? -mass.crack_force : 0.) - s.Q + Fx;
               const double g   = a * ca - s.U * sa + Px;
@@ -128,13 +136,23 @@ namespace fdem
               const double S  = a + b * N;
               const double fx = -(N + s.U) * sa + S * ca;
               const double fy = (N + s.U) * ca + S * sa;
-              moment += s.xm * fy - s.ym * fx - s.xg * (s.W - s.V) +
-                        s.yg * s.Q +
-                        s.anchor_moment(K, mass.anchors_reduced, Point<2>());
+              moment += s.xm * fy - s.ym * fx - s.xg * (s.W - s.V) + s.yg * s.Q;
+              if (with_anchors)
+                moment += s.anchor_moment(K, mass.anchors_reduced, Point<2>());
             }
           if (mass.crack_force != 0)
             moment += mass.crack_point[1] * mass.crack_force;
           return {E_left, moment};
+        }
+
+        Residuals
+        march(const SlicedMass          &mass,
+              const double               K,
+              const double               lambda,
+              const std::vector<double> &f)
+        {
+          return mass.has_anchors ? march<true>(mass, K, lambda, f) :
+                                    march<false>(mass, K, lambda, f);
         }
 
         /** K and lambda of force and moment equilibrium for the interslice

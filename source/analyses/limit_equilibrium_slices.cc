@@ -484,6 +484,7 @@ namespace fdem
         for (unsigned int i = 0; i + 1 < x.size(); ++i)
           slices.push_back(make_slice(*this, x[i], x[i + 1]));
         anchors_reduced = section.anchors_reduced_by_K;
+        has_anchors     = !section.anchors.empty();
         for (unsigned int k = 0; k < section.anchors.size(); ++k)
           {
             const Anchor &a    = section.anchors[k];

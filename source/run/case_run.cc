@@ -53,9 +53,13 @@ namespace fdem
     model.make_geometry();
     // Limit equilibrium on the generator's section: after the mesh, so that
     // the generator's own checks of the surface come first; it needs only
-    // the parameters and takes a fraction of a second.
-    analysis_results.limit_equilibrium =
-      analyses::model_limit_equilibrium(parameters);
+    // the parameters. Its root searches take a few tenths of a second, more
+    // than the whole contact analysis of a coarse mesh: a phase of its own.
+    {
+      TimerOutput::Scope scope(model.phase_timer(), "limit equilibrium");
+      analysis_results.limit_equilibrium =
+        analyses::model_limit_equilibrium(parameters);
+    }
     model.progress("blocks: dofs, constraints, free rigid modes");
     model.setup_blocks();
     model.progress("assembly and factorisation");

@@ -232,6 +232,9 @@ namespace fdem
         bool   seismic_on_pore_water = false;
         /** Section::anchors_reduced_by_K. */
         bool anchors_reduced = false;
+        /** Whether an anchor crosses a slice's base: without one the root
+         * searches march without the anchors' terms. */
+        bool has_anchors = false;
         /** The crack's water force (pushing left) and its point of action. */
         double              crack_force = 0;
         Point<2>            crack_point;
