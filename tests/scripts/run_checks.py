@@ -48,6 +48,11 @@
                                          entries PATH set to VALUE), the
                                          first step sticks everywhere and
                                          its K* is the FE-stress factor
+  run_checks.py mesh-convergence EXE CASE.prm H1,H2,... TOL
+                                         the slope case at each
+                                         Geometry/Slope/Mesh size H: every run
+                                         certified, and the largest K over the
+                                         smallest within TOL relative
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -294,6 +299,24 @@ def check_stiffness_consistency(exe, prm, stiffer_prm, softer_prm):
         assert abs(check[key] - K) <= 1e-9 * K, (key, check[key], K)
 
 
+def check_mesh_convergence(exe, prm, sizes, tolerance):
+    """K of the slope case @p prm at each mesh size of @p sizes (comma
+    separated, Geometry/Slope/Mesh size): each run certified, and all K
+    within @p tolerance of each other (max / min - 1). No VTU or report: only
+    K is compared."""
+    Ks = []
+    for h in sizes.split(","):
+        summary = completed_run(exe, prm, settings={"Geometry/Slope/Mesh size": h,
+                                                    "Output/Report": "false"}).summary
+        assert summary["converged"] and summary["certificate"]["holds"], summary["certificate"]
+        Ks.append(summary["safety_factor"])
+        print(f"mesh size {h}: {summary['n_dofs']} dofs, K = {Ks[-1]!r}, "
+              f"stiffness check {summary['stiffness_sensitivity']['relative_change']!r}")
+    spread = max(Ks) / min(Ks) - 1
+    print(f"spread of K (max / min - 1): {spread:.2e}, tolerance {tolerance}")
+    assert spread <= float(tolerance), (Ks, spread)
+
+
 def check_deterministic(exe, prm):
     # Wall times and peak memory differ from run to run; nothing else may.
     texts = [json.dumps(fdem_run.result_part(completed_run(exe, prm).summary), sort_keys=True)
@@ -439,6 +462,7 @@ if __name__ == "__main__":
          "deterministic": check_deterministic,
          "wedge": check_wedge, "mpi": check_mpi,
          "certified": check_certified, "fe-stress": check_fe_stress,
+         "mesh-convergence": check_mesh_convergence,
          "stiffness-consistency": check_stiffness_consistency,
          "invariance": check_invariance}[command](exe, path, *sys.argv[4:])
     print("passed")
