@@ -117,8 +117,10 @@ namespace fdem
         const auto &boundary = parameters.boundaries.at(name);
         const auto  id       = face_group(name, "Boundaries/Names");
         if (boundary.pressure != "0")
-          pressures[id] = blocks::make_pressure_function<dim>(boundary.pressure,
-                                                              parameters.water);
+          pressures[id] =
+            blocks::make_pressure_function<dim>(boundary.pressure,
+                                                parameters.water,
+                                                parameters.geometry);
         if (boundary.traction != "0")
           tractions[id] =
             blocks::make_traction_function<dim>(boundary.traction);
@@ -139,7 +141,9 @@ namespace fdem
       if (parameters.interfaces.at(name).pore_pressure != "0")
         pressures[face_group(name, "Interfaces/Names")] =
           blocks::make_pressure_function<dim>(
-            parameters.interfaces.at(name).pore_pressure, parameters.water);
+            parameters.interfaces.at(name).pore_pressure,
+            parameters.water,
+            parameters.geometry);
     // A pressure that is not a number somewhere on its faces would spread
     // NaN through the solution: check it at every vertex of its faces.
     for (const auto &[id, pressure] : pressures)
@@ -193,7 +197,8 @@ namespace fdem
         if (!parameters.water.piezometric_line.empty())
           blocks.back()->water_table =
             blocks::make_pressure_function<dim>("piezometric",
-                                                parameters.water);
+                                                parameters.water,
+                                                parameters.geometry);
         blocks.back()->setup_constraints(conditions, interface_ids);
         blocks.back()->set_surface_loads(pressures, tractions);
         blocks.back()->find_free_rigid_modes();

@@ -94,8 +94,10 @@ namespace
     for (const auto &[id, condition] : conditions)
       {
         if (condition.pressure != "0")
-          pressures[id] = blocks::make_pressure_function<2>(condition.pressure,
-                                                            parameters.water);
+          pressures[id] =
+            blocks::make_pressure_function<2>(condition.pressure,
+                                              parameters.water,
+                                              parameters.geometry);
         if (condition.traction != "0")
           tractions[id] = blocks::make_traction_function<2>(condition.traction);
       }

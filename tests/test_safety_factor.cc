@@ -291,6 +291,42 @@ TEST(Water, PiezometricLineEqualsItsExpression)
             safety_factor_of(test_support::case_parameters("paper_slope.prm")));
 }
 
+// The piezometric line is in the input's coordinates and moves with the
+// mesh, as the ground and the layers do: the layered slope (water table,
+// saturated weights below it, pore pressure on its surface) translated and
+// rotated with its gravity, or given in mm, keeps its K. Before the line
+// moved with the mesh, the translated model kept the water where it was:
+// 2 m down, K fell from 1.471 to 1.220, certified and without a warning.
+TEST(Water, PiezometricLineMovesWithTheMesh)
+{
+  auto base = test_support::case_parameters("layered_slope.prm");
+  base.geometry.slope.mesh_size = 2.0;
+  base.output.write_vtu         = false;
+  const double K                = safety_factor_of(base);
+
+  auto moved                    = base;
+  moved.geometry.translation    = {1000, -250};
+  moved.geometry.rotation_angle = -40;
+  moved.loads.gravity_direction = {-std::sin(40 * PI / 180),
+                                   -std::cos(40 * PI / 180)};
+  EXPECT_NEAR(safety_factor_of(moved), K, 1e-8 * K);
+
+  // Lengths in mm, forces in kN: stresses / 1e6, unit weights / 1e9; the
+  // line stays as it is (the input's coordinates, scaled with the mesh).
+  auto         scaled          = base;
+  const double s               = 1000;
+  scaled.geometry.scale_factor = s;
+  for (auto &[name, material] : scaled.materials)
+    {
+      material.youngs_modulus /= s * s;
+      material.cohesion /= s * s;
+      material.unit_weight /= s * s * s;
+      material.saturated_unit_weight /= s * s * s;
+    }
+  scaled.water.unit_weight /= s * s * s;
+  EXPECT_NEAR(safety_factor_of(scaled), K, 1e-8 * K);
+}
+
 namespace
 {
   /**

@@ -63,7 +63,7 @@ namespace fdem
                 "piezometric")
               water_faces.insert(face_group(name));
           const blocks::PiezometricPressure<dim> table(
-            model.get_parameters().water);
+            model.get_parameters().water, model.get_parameters().geometry);
           std::vector<Vector<double>> zero;
           for (const auto &block : model.get_blocks())
             {
@@ -83,7 +83,8 @@ namespace fdem
       parameters::WaterParameters water = model.get_parameters().water;
       for (auto &point : water.piezometric_line)
         point[1] += values[water_variable];
-      const blocks::PiezometricPressure<dim> table(water);
+      const blocks::PiezometricPressure<dim> table(
+        water, model.get_parameters().geometry);
       // The excess of the saturated weight carries what the weight does:
       // lambda g, and the seismic force if it acts on the pore water.
       const double lambda =

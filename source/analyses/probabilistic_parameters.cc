@@ -266,7 +266,7 @@ namespace fdem
         "seismic coefficient (dimensionless): the sample's pseudo-static kh in place of the "
         "case's, towards Loads/Seismic direction (or the free face), with the case's Vertical "
         "seismic coefficient and Seismic on pore water, without a new factorisation; and "
-        "Water/Piezometric line shift (length, positive up): every point of Water/Piezometric "
+        "Water/Piezometric line shift (length, positive up, in the line's own coordinates): every point of Water/Piezometric "
         "line raised by the sample's value, with the pore pressures ('piezometric') and the "
         "saturated weights below it, a new right-hand side on the same factorisations "
         "(e.g. normal, mean 0, sd 1). Values not listed keep those of the case.");

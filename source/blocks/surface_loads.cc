@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/blocks/surface_loads.h>
+#include <fdem/geometry/make_mesh.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/function_parser.h>
@@ -13,13 +14,33 @@ namespace fdem
   {
     template <int dim>
     PiezometricPressure<dim>::PiezometricPressure(
-      const parameters::WaterParameters &water)
+      const parameters::WaterParameters    &water,
+      const parameters::GeometryParameters &geometry)
       : water(water)
     {
       AssertThrow(water.piezometric_line.size() >= 2,
                   ExcMessage(
                     "Water/Piezometric line: a pressure is 'piezometric' "
                     "but no line is given."));
+      // The mesh's map x -> A x + t from the images of the origin and of the
+      // unit vectors (geometry::transformed_point, the one definition of
+      // the transformation): A = s R, so s is the length of A's columns.
+      translation = geometry::transformed_point(geometry, Point<dim>());
+      Tensor<2, dim> A;
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          Point<dim> e;
+          e[j] = 1;
+          const Tensor<1, dim> column =
+            geometry::transformed_point(geometry, e) - translation;
+          for (unsigned int i = 0; i < dim; ++i)
+            A[i][j] = column[i];
+        }
+      Tensor<1, dim> first_column;
+      for (unsigned int i = 0; i < dim; ++i)
+        first_column[i] = A[i][0];
+      scale    = first_column.norm();
+      to_input = invert(A);
     }
 
     template <int dim>
@@ -27,9 +48,10 @@ namespace fdem
     PiezometricPressure<dim>::value(const Point<dim> &p,
                                     const unsigned int) const
     {
-      const auto  &line = water.piezometric_line;
-      const double x = p[0], y = p[dim - 1];
-      double       level = line.front()[1];
+      const auto          &line = water.piezometric_line;
+      const Tensor<1, dim> x0   = to_input * (p - Point<dim>(translation));
+      const double         x = x0[0], y = x0[dim - 1];
+      double               level = line.front()[1];
       if (x >= line.back()[0])
         level = line.back()[1];
       else if (x > line.front()[0])
@@ -41,16 +63,17 @@ namespace fdem
               level = (1 - s) * line[i - 1][1] + s * line[i][1];
               break;
             }
-      return water.unit_weight * std::max(0.0, level - y);
+      return water.unit_weight * scale * std::max(0.0, level - y);
     }
 
     template <int dim>
     std::shared_ptr<const Function<dim>>
-    make_pressure_function(const std::string                 &expression,
-                           const parameters::WaterParameters &water)
+    make_pressure_function(const std::string                    &expression,
+                           const parameters::WaterParameters    &water,
+                           const parameters::GeometryParameters &geometry)
     {
       if (expression == "piezometric")
-        return std::make_shared<PiezometricPressure<dim>>(water);
+        return std::make_shared<PiezometricPressure<dim>>(water, geometry);
       auto function = std::make_shared<FunctionParser<dim>>(1);
       function->initialize(FunctionParser<dim>::default_variable_names(),
                            expression,
@@ -89,10 +112,12 @@ namespace fdem
     template class PiezometricPressure<3>;
     template std::shared_ptr<const Function<2>>
     make_pressure_function(const std::string &,
-                           const parameters::WaterParameters &);
+                           const parameters::WaterParameters &,
+                           const parameters::GeometryParameters &);
     template std::shared_ptr<const Function<3>>
     make_pressure_function(const std::string &,
-                           const parameters::WaterParameters &);
+                           const parameters::WaterParameters &,
+                           const parameters::GeometryParameters &);
     template std::shared_ptr<const Function<2>>
     make_standing_water_pressure(const Point<2> &,
                                  const std::vector<double> &,

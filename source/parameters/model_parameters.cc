@@ -363,10 +363,12 @@ namespace fdem
                         "",
                         Patterns::Anything(),
                         "Piezometric line as points 'x,y; x,y; ...' with "
-                        "increasing x (2D): below it the water pressure is "
-                        "gamma_w times the depth under the line; used where a "
-                        "pressure or pore pressure is 'piezometric'. Empty: "
-                        "none.");
+                        "increasing x (length, in the coordinates before the "
+                        "Geometry transformation, moved with the mesh like "
+                        "the ground and the layers): below it the water "
+                        "pressure is gamma_w times the depth under the line; "
+                        "used where a pressure or pore pressure is "
+                        "'piezometric'. Empty: none.");
       prm.leave_subsection();
     }
 

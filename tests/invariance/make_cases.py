@@ -49,13 +49,11 @@ LAYERS = {"fill": (1.0e4, 19, 20.5, 5), "clay": (5.0e3, 18, 19.5, 10),
 
 
 def layered_water(F, L):
-    """The layered slope's water: the piezometric line is in the model's
-    coordinates (the layers are the generator's, scaled with the mesh)."""
+    """The layered slope's water: its unit weight in the new units; the
+    piezometric line stays as it is, in the input's coordinates, which
+    Geometry/Scale factor scales with the mesh (as the layers)."""
     return ["subsection Water",
             f"  set Unit weight of water = {num(9.81 * F / L**3)}",
-            "  set Piezometric line = " + "; ".join(
-                f"{num(x * L)},{num(y * L)}"
-                for x, y in [(0, 24), (10, 24.8), (30, 29), (50, 30)]),
             "end"]
 
 
