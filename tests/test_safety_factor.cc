@@ -246,32 +246,52 @@ TEST(SafetyFactor, GrowsWithCohesionAndFriction)
     }
 }
 
+namespace
+{
+  /**
+   * K of @p base must not change when the model is translated by
+   * (1000, -250) and rotated by -40 degrees with its gravity, nor when its
+   * lengths are in mm instead of m with forces still in kN (Scale factor
+   * 1000: stresses / 1e6, unit weights / 1e9; what is given in the input's
+   * coordinates, such as the piezometric line, stays as it is).
+   */
+  void
+  expect_invariant_under_moves_and_mm(const parameters::Parameters &base)
+  {
+    const double K                = safety_factor_of(base);
+    auto         moved            = base;
+    moved.geometry.translation    = {1000, -250};
+    moved.geometry.rotation_angle = -40;
+    moved.loads.gravity_direction = {-std::sin(40 * PI / 180),
+                                     -std::cos(40 * PI / 180)};
+    EXPECT_NEAR(safety_factor_of(moved), K, 1e-8 * K);
+
+    auto         scaled          = base;
+    const double s               = 1000;
+    scaled.geometry.scale_factor = s;
+    for (auto &[name, material] : scaled.materials)
+      {
+        material.youngs_modulus /= s * s;
+        material.cohesion /= s * s;
+        material.unit_weight /= s * s * s;
+        material.saturated_unit_weight /= s * s * s;
+      }
+    for (auto &[name, interface] : scaled.interfaces)
+      {
+        interface.cohesion /= s * s;
+        interface.tensile_strength /= s * s;
+      }
+    scaled.water.unit_weight /= s * s * s;
+    EXPECT_NEAR(safety_factor_of(scaled), K, 1e-8 * K);
+  }
+} // namespace
+
 TEST(SafetyFactor, InvariantUnderTranslationRotationAndUnits)
 {
   auto base = test_support::case_parameters("paper_slope.prm");
   base.geometry.slope.mesh_size = 2.0;
   base.output.write_vtu         = false;
-  const double K                = safety_factor_of(base);
-
-  auto moved                    = base;
-  moved.geometry.translation    = {1000, -250};
-  moved.geometry.rotation_angle = -40;
-  moved.loads.gravity_direction = {-std::sin(40 * PI / 180),
-                                   -std::cos(40 * PI / 180)};
-  EXPECT_NEAR(safety_factor_of(moved), K, 1e-8 * K);
-
-  // Lengths in mm instead of m, forces still in kN: stresses / 1e6, unit
-  // weights / 1e9.
-  auto         scaled          = base;
-  const double s               = 1000;
-  scaled.geometry.scale_factor = s;
-  for (auto &[name, material] : scaled.materials)
-    {
-      material.youngs_modulus /= s * s;
-      material.unit_weight /= s * s * s;
-    }
-  scaled.interfaces.at("sliding surface").cohesion /= s * s;
-  EXPECT_NEAR(safety_factor_of(scaled), K, 1e-8 * K);
+  expect_invariant_under_moves_and_mm(base);
 }
 
 TEST(Water, PiezometricLineEqualsItsExpression)
@@ -302,29 +322,7 @@ TEST(Water, PiezometricLineMovesWithTheMesh)
   auto base = test_support::case_parameters("layered_slope.prm");
   base.geometry.slope.mesh_size = 2.0;
   base.output.write_vtu         = false;
-  const double K                = safety_factor_of(base);
-
-  auto moved                    = base;
-  moved.geometry.translation    = {1000, -250};
-  moved.geometry.rotation_angle = -40;
-  moved.loads.gravity_direction = {-std::sin(40 * PI / 180),
-                                   -std::cos(40 * PI / 180)};
-  EXPECT_NEAR(safety_factor_of(moved), K, 1e-8 * K);
-
-  // Lengths in mm, forces in kN: stresses / 1e6, unit weights / 1e9; the
-  // line stays as it is (the input's coordinates, scaled with the mesh).
-  auto         scaled          = base;
-  const double s               = 1000;
-  scaled.geometry.scale_factor = s;
-  for (auto &[name, material] : scaled.materials)
-    {
-      material.youngs_modulus /= s * s;
-      material.cohesion /= s * s;
-      material.unit_weight /= s * s * s;
-      material.saturated_unit_weight /= s * s * s;
-    }
-  scaled.water.unit_weight /= s * s * s;
-  EXPECT_NEAR(safety_factor_of(scaled), K, 1e-8 * K);
+  expect_invariant_under_moves_and_mm(base);
 }
 
 namespace
