@@ -5,6 +5,7 @@
 // 5): the planar oracle, Priest's plane failure, the paper's slope with the
 // circular-surface oracle, monotonicity and invariance, and slopes whose
 // safety factor is below the initial K.
+#include "synthetic_step.h"
 #include "test_helpers.h"
 
 #include <fdem/analyses/safety_factor_iteration.h>
@@ -327,30 +328,7 @@ TEST(Water, PiezometricLineMovesWithTheMesh)
 
 namespace
 {
-  /**
-   * A synthetic step: K* = K F_R/F_tau given as a function of K, no static
-   * solution from @p K_limit up, failing as a mechanism unless
-   * @p numerical_failure.
-   */
-  analyses::ReducedStrengthSolution
-  synthetic_step(const double K,
-                 const double K_star,
-                 const double K_limit,
-                 const bool   numerical_failure = false)
-  {
-    analyses::ReducedStrengthSolution s;
-    s.converged = K < K_limit;
-    s.mechanism = !s.converged && !numerical_failure;
-    s.result    = s.converged       ? "converged" :
-                  numerical_failure ? "breakdown" :
-                                      "singular system";
-    if (s.converged)
-      {
-        s.sliding_force   = 1000;
-        s.resisting_force = s.sliding_force * K_star / K;
-      }
-    return s;
-  }
+  using test_support::synthetic_step;
 
   /** The certificate's numbers hold: a step at its K with its K*, within the
    * tolerance. */

@@ -4,6 +4,8 @@
 // A probabilistic sample's iteration from its predicted start
 // (analyses/sample_iteration.h): taken only if certified, else the
 // reference iteration decides, bit for bit as without the prediction.
+#include "synthetic_step.h"
+
 #include <fdem/analyses/sample_iteration.h>
 
 #include <gtest/gtest.h>
@@ -30,18 +32,11 @@ namespace
     operator()(const double K)
     {
       solved_at.push_back(K);
-      ReducedStrengthSolution s;
-      s.converged = K < K_limit && !poisoned;
-      s.mechanism = K >= K_limit && !poisoned;
-      s.result    = s.converged ? "converged" :
-                    poisoned    ? "numerical breakdown" :
-                                  "singular system";
-      if (s.converged)
-        {
-          s.sliding_force   = 1000;
-          s.resisting_force = s.sliding_force * K_limit / K;
-        }
-      return s;
+      // Poisoned: no K below the limit, a numerical failure everywhere.
+      return test_support::synthetic_step(K,
+                                          K_limit,
+                                          poisoned ? 0. : K_limit,
+                                          poisoned);
     }
   };
 } // namespace

@@ -360,9 +360,10 @@ namespace fdem
                                    values.begin() +
                                      std::size_t(s + 1) * n_variables);
       };
-      std::vector<double>
-            local; // K, status, steps, status iterations, fell back per sample
-      Timer sample_timer;
+      // Per sample: K, status, steps, status iterations, fell back.
+      constexpr unsigned int n_per_sample = 5;
+      std::vector<double>    local;
+      Timer                  sample_timer;
       // A random water level: the samples' water load cases first, on every
       // rank (the blocks' solves are collective), then each rank's slice.
       std::vector<typename contact::MixedSystem<dim>::LoadCase> water_cases;
@@ -401,11 +402,11 @@ namespace fdem
       double n_steps = 0, n_status_iterations = 0, n_fell_back = 0;
       for (unsigned int s = 0; s < p.n_samples; ++s)
         {
-          K[s]      = gathered[5 * s];
-          status[s] = SampleStatus(int(gathered[5 * s + 1]));
-          n_steps += gathered[5 * s + 2];
-          n_status_iterations += gathered[5 * s + 3];
-          n_fell_back += gathered[5 * s + 4];
+          K[s]      = gathered[n_per_sample * s];
+          status[s] = SampleStatus(int(gathered[n_per_sample * s + 1]));
+          n_steps += gathered[n_per_sample * s + 2];
+          n_status_iterations += gathered[n_per_sample * s + 3];
+          n_fell_back += gathered[n_per_sample * s + 4];
         }
       result.update(sample_statistics(K,
                                       status,
@@ -469,8 +470,8 @@ namespace fdem
               out << ",";
               if (status[s] == SampleStatus::certified)
                 out << K[s];
-              out << "," << status_name(status[s]) << "," << gathered[5 * s + 2]
-                  << "\n";
+              out << "," << status_name(status[s]) << ","
+                  << gathered[n_per_sample * s + 2] << "\n";
             }
         }
       model.log << "Probabilistic: " << p.n_samples << " samples, "

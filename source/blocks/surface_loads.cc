@@ -49,7 +49,7 @@ namespace fdem
                                     const unsigned int) const
     {
       const auto          &line = water.piezometric_line;
-      const Tensor<1, dim> x0   = to_input * (p - Point<dim>(translation));
+      const Tensor<1, dim> x0   = to_input * (p - translation);
       const double         x = x0[0], y = x0[dim - 1];
       double               level = line.front()[1];
       if (x >= line.back()[0])

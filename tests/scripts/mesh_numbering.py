@@ -133,19 +133,16 @@ def main(exe, prm, *entries):
             original = os.path.join(folder, "original.msh")
             shutil.copy(first.file("mesh.msh"), original)
         text = open(original).read()
+        meshes = {"original": original}
+        for seed in (1, 2):
+            meshes[f"seed {seed}"] = os.path.join(folder, f"seed_{seed}.msh")
+            open(meshes[f"seed {seed}"], "w").write(renumbered(text, seed))
         runs = {}
-        for name, mesh_text in [("original", text)] + [
-                (f"seed {seed}", renumbered(text, seed)) for seed in (1, 2)]:
-            path = os.path.join(folder, name.replace(" ", "_") + ".msh")
-            if name != "original":
-                open(path, "w").write(mesh_text)
-            else:
-                path = original
+        for name, path in meshes.items():
             run = fdem_run.run_case(exe, prm, settings=dict(
                 settings, **{"Geometry/Source": "mesh file", "Geometry/Mesh file": path}))
             assert run.ok, f"{name}: {run.failure()}"
-            runs[name] = run.summary
-            s = run.summary
+            s = runs[name] = run.summary
             print(f"{name}: {s['n_dofs']} dofs, K = {s['safety_factor']!r}, "
                   f"{len(s['iterations'])} steps, "
                   f"certificate {s['certificate']['kind']}")

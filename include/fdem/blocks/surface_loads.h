@@ -41,9 +41,9 @@ namespace fdem
 
     private:
       const parameters::WaterParameters water;
-      /** The transformation x -> A x + t of the mesh, its inverse and s. */
+      /** The mesh's transformation x -> A x + t: A^-1, t and s. */
       Tensor<2, dim> to_input;
-      Tensor<1, dim> translation;
+      Point<dim>     translation;
       double         scale;
     };
 
