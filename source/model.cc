@@ -82,6 +82,7 @@ namespace fdem
                    "(physical group of dimension " + std::to_string(dim) +
                    ") in " + mesh.source + "."));
     blocks::check_materials(mesh, parameters);
+    blocks::check_interface_water(mesh, parameters);
     for (const std::string &name : parameters.boundary_names)
       face_group(name, "Boundaries/Names");
     for (const std::string &name : parameters.interface_names)
@@ -100,6 +101,9 @@ namespace fdem
   Model<dim>::setup_blocks()
   {
     TimerOutput::Scope scope(timer, "setup");
+    // Parsing has checked this for a .prm file; a program may have built
+    // its parameters itself.
+    parameters.check_piezometric_pressures();
     std::map<types::boundary_id, parameters::BoundaryParameters> conditions;
     for (const std::string &name : parameters.boundary_names)
       conditions[face_group(name, "Boundaries/Names")] =
@@ -194,11 +198,10 @@ namespace fdem
           std::vector<unsigned int>{b},
           blocks::block_materials(mesh, parameters, b),
           parameters.fe_degree));
-        if (!parameters.water.piezometric_line.empty())
+        if (parameters.has_piezometric_line())
           blocks.back()->water_table =
-            blocks::make_pressure_function<dim>("piezometric",
-                                                parameters.water,
-                                                parameters.geometry);
+            std::make_shared<blocks::PiezometricPressure<dim>>(
+              parameters.water, parameters.geometry);
         blocks.back()->setup_constraints(conditions, interface_ids);
         blocks.back()->set_surface_loads(pressures, tractions);
         blocks.back()->find_free_rigid_modes();

@@ -326,6 +326,17 @@ TEST(Water, PiezometricLineMovesWithTheMesh)
   expect_invariant_under_moves_and_mm(base);
 }
 
+// The same with a piezometric line per material (a perched table in the
+// fill, the slope's line in the sand): every material's line is in the
+// input's coordinates and moves with the mesh.
+TEST(Water, LayerPiezometricLinesMoveWithTheMesh)
+{
+  auto base = test_support::case_parameters("perched_water_slope.prm");
+  base.geometry.slope.mesh_size = 2.0;
+  base.output.write_vtu         = false;
+  expect_invariant_under_moves_and_mm(base);
+}
+
 namespace
 {
   using test_support::synthetic_step;

@@ -13,7 +13,9 @@ A section (2D, lengths in the model's unit, x to the right, y up) is:
   gamma_w     the unit weight of water.
 Below the piezometric line a layer weighs gamma_sat and the base carries
 the hydrostatic pore pressure gamma_w (y_piezometric - y), as in the
-program's 'piezometric' pore pressure.
+program's 'piezometric' pore pressure. A layer may have a piezometric line
+of its own (Layer.piezometric, a perched water table): its wet part and a
+base in it use that line instead.
 
 The sliding surface runs from where it leaves the ground on one side to
 where it enters it on the other; its end points lie on the ground. The mass
@@ -46,6 +48,9 @@ class Layer:
     gamma_sat: float = None
     c: float = 0.0
     phi: float = 30.0
+    # The layer's own piezometric line (points from left to right), or None
+    # for the section's.
+    piezometric: list = None
 
     def weight_below_water(self):
         return self.gamma if self.gamma_sat is None else self.gamma_sat
@@ -121,7 +126,9 @@ class SlicedMass:
         self.ground = flip(section.ground)
         self.surface = flip(surface)
         self.layers = [Layer(None if l.top is None else flip(l.top), l.gamma, l.gamma_sat,
-                             l.c, l.phi) for l in section.layers]
+                             l.c, l.phi,
+                             None if l.piezometric is None else flip(l.piezometric))
+                       for l in section.layers]
         self.piezometric = None if section.piezometric is None else flip(section.piezometric)
         self.gamma_w = section.gamma_w
         self.kh, self.kv = getattr(section, "kh", 0.0), getattr(section, "kv", 0.0)
@@ -163,6 +170,7 @@ class SlicedMass:
         lines = [self.ground, self.surface] + [self._top(k) for k in range(1, len(self.layers))]
         if self.piezometric is not None:
             lines.append(self.piezometric)
+        lines += [l.piezometric for l in self.layers if l.piezometric is not None]
         breaks = {x0, x1}
         for line in lines:
             breaks |= {p[0] for p in line if x0 < p[0] < x1}
@@ -178,27 +186,33 @@ class SlicedMass:
         xs.append(x1)
         self.x = np.array(xs)
 
+    def _water_level(self, k, x):
+        """The elevation of layer k's water table at x (its own line or the
+        section's), -inf if it is dry."""
+        line = self.layers[k].piezometric if self.layers[k].piezometric is not None \
+            else self.piezometric
+        return -math.inf if line is None else elevation(line, x)
+
     def _column(self, x):
         """Per layer, the (dry, saturated) thickness of the column above the
-        surface at x; with the piezometric elevation."""
+        surface at x; with the surface's elevation."""
         yb, yg = elevation(self.surface, x), elevation(self.ground, x)
-        yw = -math.inf if self.piezometric is None else elevation(self.piezometric, x)
         parts = []
         for k in range(len(self.layers)):
             top = min(elevation(self._top(k), x), yg)
             bottom = elevation(self._top(k + 1), x) if k + 1 < len(self.layers) else -math.inf
             bottom = max(bottom, yb)
             h = max(top - bottom, 0.0)
-            wet = max(min(top, yw) - bottom, 0.0) if h > 0 else 0.0
+            wet = max(min(top, self._water_level(k, x)) - bottom, 0.0) if h > 0 else 0.0
             parts.append((h - wet, wet))
-        return parts, yb, yw
+        return parts, yb
 
     def _layer_at(self, x, y):
         for k in range(len(self.layers)):
             below = elevation(self._top(k + 1), x) if k + 1 < len(self.layers) else -math.inf
             if y >= below:
-                return self.layers[k]
-        return self.layers[-1]
+                return k
+        return len(self.layers) - 1
 
     def slices(self):
         """Per slice: weight W, x of its line of action, base angle alpha
@@ -217,17 +231,19 @@ class SlicedMass:
             ya, yb = ca[1], cb[1]
             l = math.hypot(b - a, yb - ya)
             alpha = math.atan2(yb - ya, b - a)
-            ua = self.gamma_w * max(ca[2] - ya, 0.0)
-            ub = self.gamma_w * max(cb[2] - yb, 0.0)
-            U = 0.5 * (ua + ub) * l
             xm, ym = 0.5 * (a + b), 0.5 * (ya + yb)
-            layer = self._layer_at(xm, ym + 1e-9 * (1 + abs(ym)))
+            # The base lies in one layer: its strength and its water table.
+            k = self._layer_at(xm, ym + 1e-9 * (1 + abs(ym)))
+            layer = self.layers[k]
+            ua = self.gamma_w * max(self._water_level(k, a) - ya, 0.0)
+            ub = self.gamma_w * max(self._water_level(k, b) - yb, 0.0)
+            U = 0.5 * (ua + ub) * l
             Q, V, y_g = 0.0, 0.0, 0.0
             if self.kh != 0 or self.kv != 0:
                 # The seismic weight W' per unit width at a and b and its
                 # first moment about y = 0, the column stacked from its base.
                 def seismic_weight(column):
-                    parts, y, _ = column
+                    parts, y = column
                     w = m = 0.0
                     for (dry, wet), lay in reversed(list(zip(parts, self.layers))):
                         wet_weight = lay.weight_below_water() if self.seismic_on_pore_water \
@@ -347,15 +363,23 @@ def bishop(section, centre, radius, n_slices=400):
 def _section_strength(mass, x):
     """Along the vertical section at @p x from the surface up to the ground:
     the integral of c over its height, the height-weighted mean tan(phi),
-    its height, and the water force on it (hydrostatic below the
-    piezometric line)."""
-    parts, yb, yw = mass._column(x)
+    its height, and the water force on it (hydrostatic below each layer's
+    piezometric line over that layer's part of the section, the line taken
+    no higher than the ground)."""
+    parts, yb = mass._column(x)
     C = sum(layer.c * (dry + wet) for (dry, wet), layer in zip(parts, mass.layers))
     h = sum(dry + wet for dry, wet in parts)
     T = sum(math.tan(math.radians(layer.phi)) * (dry + wet)
             for (dry, wet), layer in zip(parts, mass.layers)) / h
-    depth = max(min(yw, elevation(mass.ground, x)) - yb, 0.0)
-    return C, T, h, 0.5 * mass.gamma_w * depth**2
+    yg = elevation(mass.ground, x)
+    water, y = 0.0, yb
+    for k in reversed(range(len(mass.layers))):
+        low, high = y, y + parts[k][0] + parts[k][1]
+        yw = min(mass._water_level(k, x), yg)
+        if min(yw, high) > low:
+            water += 0.5 * mass.gamma_w * ((yw - low) ** 2 - (yw - min(yw, high)) ** 2)
+        y = high
+    return C, T, h, water
 
 
 def vertical_wedges(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0):

@@ -197,6 +197,7 @@ namespace fdem
               layer.top = slope.layer_boundaries[k - 1];
             layer.unit_weight           = m.weight(g);
             layer.saturated_unit_weight = m.saturated_weight(g);
+            layer.piezometric           = points(m.piezometric_line);
             strength(layer, m);
             section.layers.push_back(layer);
           }
@@ -227,6 +228,7 @@ namespace fdem
           le::SoilLayer layer;
           layer.unit_weight           = mass->weight(g);
           layer.saturated_unit_weight = mass->saturated_weight(g);
+          layer.piezometric           = points(mass->piezometric_line);
           strength(layer, *mass);
           section.layers.push_back(layer);
         }

@@ -236,11 +236,30 @@ namespace fdem
                                                         mass.layers[k].top;
         }
 
+        /** The water table of layer k: its own line, or the section's. */
+        const std::vector<Point<2>> &
+        water_line(const SlicedMass &mass, const unsigned int k)
+        {
+          return mass.layers[k].piezometric.empty() ?
+                   mass.piezometric :
+                   mass.layers[k].piezometric;
+        }
+
+        /** The water level of layer k at x; -infinity if it is dry. */
+        double
+        water_level(const SlicedMass  &mass,
+                    const unsigned int k,
+                    const double       x)
+        {
+          const std::vector<Point<2>> &line = water_line(mass, k);
+          return line.empty() ? -infinity : elevation(line, x);
+        }
+
         struct Column
         {
           /** Per layer: dry and wet thickness above the surface. */
           std::vector<std::pair<double, double>> parts;
-          double                                 y_base, y_water;
+          double                                 y_base;
         };
 
         Column
@@ -248,9 +267,7 @@ namespace fdem
         {
           Column c;
           c.y_base                    = elevation(mass.surface, x);
-          const double yg             = elevation(mass.ground, x);
-          c.y_water                   = mass.piezometric.empty() ? -infinity :
-                                                                   elevation(mass.piezometric, x);
+          const double       yg       = elevation(mass.ground, x);
           const unsigned int n_layers = mass.layers.size();
           for (unsigned int k = 0; k < n_layers; ++k)
             {
@@ -260,13 +277,16 @@ namespace fdem
               bottom         = std::max(bottom, c.y_base);
               const double h = std::max(t - bottom, 0.);
               const double wet =
-                h > 0 ? std::max(std::min(t, c.y_water) - bottom, 0.) : 0.;
+                h > 0 ?
+                  std::max(std::min(t, water_level(mass, k, x)) - bottom, 0.) :
+                  0.;
               c.parts.emplace_back(h - wet, wet);
             }
           return c;
         }
 
-        const SoilLayer &
+        /** The index of the layer at (x, y). */
+        unsigned int
         layer_at(const SlicedMass &mass, const double x, const double y)
         {
           const unsigned int n_layers = mass.layers.size();
@@ -275,9 +295,9 @@ namespace fdem
               const double below =
                 k + 1 < n_layers ? elevation(top(mass, k + 1), x) : -infinity;
               if (y >= below)
-                return mass.layers[k];
+                return k;
             }
-          return mass.layers.back();
+          return n_layers - 1;
         }
 
         void
@@ -329,6 +349,9 @@ namespace fdem
             lines.push_back(&top(mass, k));
           if (!mass.piezometric.empty())
             lines.push_back(&mass.piezometric);
+          for (const SoilLayer &layer : mass.layers)
+            if (!layer.piezometric.empty())
+              lines.push_back(&layer.piezometric);
           std::set<double> breaks = {x0, x1};
           for (const auto *line : lines)
             for (const Point<2> &p : *line)
@@ -402,20 +425,23 @@ namespace fdem
           s.xg = wa + wb > 0 ? a + (b - a) * (wa + 2 * wb) / (3 * (wa + wb)) :
                                0.5 * (a + b);
           const double ya = ca.y_base, yb = cb.y_base;
-          s.l             = std::hypot(b - a, yb - ya);
-          s.alpha         = std::atan2(yb - ya, b - a);
-          s.sin_alpha     = std::sin(s.alpha);
-          s.cos_alpha     = std::cos(s.alpha);
-          const double gw = mass.pore_pressure ? mass.water_unit_weight : 0.;
-          const double ua = gw * std::max(ca.y_water - ya, 0.);
-          const double ub = gw * std::max(cb.y_water - yb, 0.);
-          s.U             = 0.5 * (ua + ub) * s.l;
-          s.xm            = 0.5 * (a + b);
-          s.ym            = 0.5 * (ya + yb);
-          const SoilLayer &layer =
+          s.l         = std::hypot(b - a, yb - ya);
+          s.alpha     = std::atan2(yb - ya, b - a);
+          s.sin_alpha = std::sin(s.alpha);
+          s.cos_alpha = std::cos(s.alpha);
+          s.xm        = 0.5 * (a + b);
+          s.ym        = 0.5 * (ya + yb);
+          // The base lies in one layer (slices break where layers cross
+          // the surface): its strength and its water table.
+          const unsigned int base =
             layer_at(mass, s.xm, s.ym + 1e-9 * (1 + std::abs(s.ym)));
-          s.c       = layer.cohesion;
-          s.tan_phi = std::tan(layer.friction_angle * M_PI / 180);
+          const SoilLayer &layer = mass.layers[base];
+          const double gw = mass.pore_pressure ? mass.water_unit_weight : 0.;
+          const double ua = gw * std::max(water_level(mass, base, a) - ya, 0.);
+          const double ub = gw * std::max(water_level(mass, base, b) - yb, 0.);
+          s.U             = 0.5 * (ua + ub) * s.l;
+          s.c             = layer.cohesion;
+          s.tan_phi       = std::tan(layer.friction_angle * M_PI / 180);
           for (const WeakLayer &weak : mass.weak_layers)
             if (geometry::case_input::segment_along_polyline(Point<2>(a, ya),
                                                              Point<2>(b, yb),
@@ -464,8 +490,12 @@ namespace fdem
         surface = flip(line);
         layers  = section.layers;
         for (SoilLayer &layer : layers)
-          if (!layer.top.empty())
-            layer.top = flip(layer.top);
+          {
+            if (!layer.top.empty())
+              layer.top = flip(layer.top);
+            if (!layer.piezometric.empty())
+              layer.piezometric = flip(layer.piezometric);
+          }
         if (!section.piezometric.empty())
           piezometric = flip(section.piezometric);
         weak_layers = section.weak_layers;

@@ -80,11 +80,12 @@ namespace fdem
     SampleLoads<dim>::water_case(const std::vector<double> &values) const
     {
       Assert(water_variable >= 0, ExcInternalError());
-      parameters::WaterParameters water = model.get_parameters().water;
-      for (auto &point : water.piezometric_line)
-        point[1] += values[water_variable];
+      // Every line raised by the sample's value: Water/Piezometric line and
+      // the materials' own.
       const blocks::PiezometricPressure<dim> table(
-        water, model.get_parameters().geometry);
+        model.get_parameters().water,
+        model.get_parameters().geometry,
+        values[water_variable]);
       // The excess of the saturated weight carries what the weight does:
       // lambda g, and the seismic force if it acts on the pore water.
       const double lambda =

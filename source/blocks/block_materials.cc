@@ -220,12 +220,81 @@ namespace fdem
       return strengths;
     }
 
+    template <int dim>
+    void
+    check_interface_water(const geometry::MeshDescription<dim> &mesh,
+                          const parameters::Parameters         &parameters)
+    {
+      // Without a material's own line every face has the same one.
+      if (std::none_of(parameters.materials.begin(),
+                       parameters.materials.end(),
+                       [](const auto &material) {
+                         return !material.second.piezometric_line.empty();
+                       }))
+        return;
+      std::vector<std::vector<unsigned int>> cells_at_vertex(
+        mesh.vertices.size());
+      for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+        for (const unsigned int v : mesh.cells[c].vertices)
+          cells_at_vertex[v].push_back(c);
+      const auto line_of = [&](const unsigned int c) {
+        const auto &own =
+          parameters.materials.at(mesh.material_key_name(mesh.material_key(c)))
+            .piezometric_line;
+        return own.empty() ? parameters.water.piezometric_line : own;
+      };
+      for (const std::string &name : parameters.interface_names)
+        {
+          if (parameters.interfaces.at(name).pore_pressure != "piezometric")
+            continue;
+          const auto id = std::find(mesh.face_group_names.begin(),
+                                    mesh.face_group_names.end(),
+                                    name) -
+                          mesh.face_group_names.begin();
+          for (const auto &face : mesh.faces)
+            if (face.boundary_id == id)
+              {
+                // The cells that hold every vertex of the face: one on each
+                // side.
+                std::vector<unsigned int> sides;
+                for (const unsigned int c : cells_at_vertex[face.vertices[0]])
+                  {
+                    const auto &v = mesh.cells[c].vertices;
+                    if (std::all_of(face.vertices.begin(),
+                                    face.vertices.end(),
+                                    [&](const unsigned int f) {
+                                      return std::count(v.begin(), v.end(), f);
+                                    }))
+                      sides.push_back(c);
+                  }
+                for (unsigned int k = 1; k < sides.size(); ++k)
+                  AssertThrow(
+                    line_of(sides[k]) == line_of(sides[0]),
+                    ExcMessage(
+                      "Interfaces/" + name +
+                      "/Pore pressure: 'piezometric' on a face between '" +
+                      mesh.material_key_name(mesh.material_key(sides[0])) +
+                      "' and '" +
+                      mesh.material_key_name(mesh.material_key(sides[k])) +
+                      "', which have different piezometric lines; the pore "
+                      "pressure at a point of the surface is one value, so "
+                      "give both materials the same line."));
+              }
+        }
+    }
+
     template void
     check_materials(const geometry::MeshDescription<2> &,
                     const parameters::Parameters &);
     template void
     check_materials(const geometry::MeshDescription<3> &,
                     const parameters::Parameters &);
+    template void
+    check_interface_water(const geometry::MeshDescription<2> &,
+                          const parameters::Parameters &);
+    template void
+    check_interface_water(const geometry::MeshDescription<3> &,
+                          const parameters::Parameters &);
     template std::map<unsigned int, parameters::MaterialParameters>
     block_materials(const geometry::MeshDescription<2> &,
                     const parameters::Parameters &,

@@ -45,7 +45,8 @@ namespace fdem
               {
                 const double gamma =
                   (saturated_differs &&
-                   water_table->value(fe_values.quadrature_point(q)) > 0) ?
+                   water_table->value(fe_values.quadrature_point(q), material) >
+                     0) ?
                     saturated_weight :
                     weight;
                 const double JxW = fe_values.JxW(q);
@@ -70,7 +71,7 @@ namespace fdem
     template <int dim>
     std::vector<Vector<double>>
     ElasticBlock<dim>::water_loads(
-      const Function<dim>                &table,
+      const PiezometricPressure<dim>     &table,
       const std::set<types::boundary_id> &faces) const
     {
       const MPI_Comm              comm = triangulation.get_communicator();
@@ -108,7 +109,7 @@ namespace fdem
                 fe_values.reinit(cell);
                 for (const unsigned int q :
                      fe_values.quadrature_point_indices())
-                  if (table.value(fe_values.quadrature_point(q)) > 0)
+                  if (table.value(fe_values.quadrature_point(q), material) > 0)
                     for (unsigned int i = 0; i < n; ++i)
                       {
                         const Tensor<1, dim> N_i =
@@ -127,7 +128,8 @@ namespace fdem
                     {
                       // A pressure pushes against the outward normal.
                       const Tensor<1, dim> traction =
-                        -table.value(fe_face_values.quadrature_point(q)) *
+                        -table.value(fe_face_values.quadrature_point(q),
+                                     material) *
                         fe_face_values.normal_vector(q);
                       for (unsigned int i = 0; i < n; ++i)
                         cell_loads[0](i) +=
@@ -150,10 +152,10 @@ namespace fdem
     template std::vector<Vector<double>>
     ElasticBlock<3>::unit_body_force_loads(const bool) const;
     template std::vector<Vector<double>>
-    ElasticBlock<2>::water_loads(const Function<2> &,
+    ElasticBlock<2>::water_loads(const PiezometricPressure<2> &,
                                  const std::set<types::boundary_id> &) const;
     template std::vector<Vector<double>>
-    ElasticBlock<3>::water_loads(const Function<3> &,
+    ElasticBlock<3>::water_loads(const PiezometricPressure<3> &,
                                  const std::set<types::boundary_id> &) const;
   } // namespace blocks
 } // namespace fdem

@@ -170,7 +170,7 @@ namespace fdem
           const double          JxW = fe_values.JxW(q);
           const Tensor<1, dim> &weight =
             (saturated_differs &&
-             water_table->value(fe_values.quadrature_point(q)) > 0) ?
+             water_table->value(fe_values.quadrature_point(q), material) > 0) ?
               saturated_body_force :
               body_force;
           for (unsigned int j = 0; j < n; ++j)
@@ -204,7 +204,7 @@ namespace fdem
                 Tensor<1, dim>    traction;
                 // A pressure pushes against the outward normal.
                 if (pressure != pressures.end())
-                  traction -= pressure->second->value(x) *
+                  traction -= pressure_on_cell(*pressure->second, x, material) *
                               fe_face_values.normal_vector(q);
                 if (given != tractions.end())
                   {

@@ -15,13 +15,11 @@ namespace fdem
     template <int dim>
     PiezometricPressure<dim>::PiezometricPressure(
       const parameters::WaterParameters    &water,
-      const parameters::GeometryParameters &geometry)
+      const parameters::GeometryParameters &geometry,
+      const double                          shift)
       : water(water)
+      , shift(shift)
     {
-      AssertThrow(water.piezometric_line.size() >= 2,
-                  ExcMessage(
-                    "Water/Piezometric line: a pressure is 'piezometric' "
-                    "but no line is given."));
       // The mesh's map x -> A x + t from the images of the origin and of the
       // unit vectors (geometry::transformed_point, the one definition of
       // the transformation): A = s R, so s is the length of A's columns.
@@ -45,25 +43,61 @@ namespace fdem
 
     template <int dim>
     double
-    PiezometricPressure<dim>::value(const Point<dim> &p,
-                                    const unsigned int) const
+    PiezometricPressure<dim>::pressure_below(
+      const std::vector<std::array<double, 2>> &line,
+      const Point<dim>                         &p) const
     {
-      const auto          &line = water.piezometric_line;
-      const Tensor<1, dim> x0   = to_input * (p - translation);
+      if (line.empty())
+        return 0;
+      const Tensor<1, dim> x0 = to_input * (p - translation);
       const double         x = x0[0], y = x0[dim - 1];
-      double               level = line.front()[1];
+      // The shift is added to the points, as a raised line would be given.
+      double level = line.front()[1] + shift;
       if (x >= line.back()[0])
-        level = line.back()[1];
+        level = line.back()[1] + shift;
       else if (x > line.front()[0])
         for (unsigned int i = 1; i < line.size(); ++i)
           if (x <= line[i][0])
             {
               const double s =
                 (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]);
-              level = (1 - s) * line[i - 1][1] + s * line[i][1];
+              level =
+                (1 - s) * (line[i - 1][1] + shift) + s * (line[i][1] + shift);
               break;
             }
       return water.unit_weight * scale * std::max(0.0, level - y);
+    }
+
+    template <int dim>
+    double
+    PiezometricPressure<dim>::value(const Point<dim> &p,
+                                    const unsigned int) const
+    {
+      return pressure_below(water.piezometric_line, p);
+    }
+
+    template <int dim>
+    double
+    PiezometricPressure<dim>::value(
+      const Point<dim>                     &p,
+      const parameters::MaterialParameters &material) const
+    {
+      return pressure_below(material.piezometric_line.empty() ?
+                              water.piezometric_line :
+                              material.piezometric_line,
+                            p);
+    }
+
+    template <int dim>
+    double
+    pressure_on_cell(const Function<dim>                  &pressure,
+                     const Point<dim>                     &p,
+                     const parameters::MaterialParameters &material)
+    {
+      if (const auto *piezometric =
+            dynamic_cast<const PiezometricPressure<dim> *>(&pressure))
+        return piezometric->value(p, material);
+      return pressure.value(p);
     }
 
     template <int dim>
@@ -110,6 +144,14 @@ namespace fdem
 
     template class PiezometricPressure<2>;
     template class PiezometricPressure<3>;
+    template double
+    pressure_on_cell(const Function<2> &,
+                     const Point<2> &,
+                     const parameters::MaterialParameters &);
+    template double
+    pressure_on_cell(const Function<3> &,
+                     const Point<3> &,
+                     const parameters::MaterialParameters &);
     template std::shared_ptr<const Function<2>>
     make_pressure_function(const std::string &,
                            const parameters::WaterParameters &,

@@ -45,8 +45,9 @@ namespace fdem
         "Saturated unit weight",
         "0",
         Patterns::Double(0),
-        "Unit weight below the water table, Water/Piezometric "
-        "line (force/length^3, e.g. kN/m^3), evaluated at each "
+        "Unit weight below the water table (the material's own "
+        "Piezometric line, or Water/Piezometric line) "
+        "(force/length^3, e.g. kN/m^3), evaluated at each "
         "quadrature point; 0: the same weight as above it. It "
         "is the total weight (soil and water): give the water "
         "pressure on interfaces as Pore pressure = piezometric.");
@@ -76,6 +77,21 @@ namespace fdem
         "of those of the cells beside it; limit equilibrium does the same "
         "for a slice base along it. The material has no cells: it is not a "
         "region of the mesh nor a layer. Empty: an ordinary material.");
+      prm.declare_entry(
+        "Piezometric line",
+        "",
+        Patterns::Anything(),
+        "This material's own water table, points 'x,y; x,y; ...' with "
+        "increasing x (length, in the coordinates before the Geometry "
+        "transformation, moved with the mesh): used instead of "
+        "Water/Piezometric line in this material's cells (the saturated unit "
+        "weight below it) and on the faces of its cells where a pressure or "
+        "pore pressure is 'piezometric' (gamma_w times the depth under this "
+        "line); limit equilibrium does the same for the slices' layers and "
+        "bases. A perched water table: the upper layer's line above a "
+        "low-permeability layer, the lower layers on Water/Piezometric line "
+        "or their own. Where neither this nor Water/Piezometric line is "
+        "given, the material is dry. Empty: Water/Piezometric line.");
     }
 
     void
@@ -128,8 +144,15 @@ namespace fdem
                       ExcMessage(path + "/Weak layer: two consecutive points "
                                         "are the same."));
         }
+      piezometric_line = parse_piezometric_line(prm.get("Piezometric line"),
+                                                path + "/Piezometric line");
       if (!weak_layer.empty())
         {
+          AssertThrow(piezometric_line.empty(),
+                      ExcMessage(path +
+                                 "/Piezometric line: a weak layer has no "
+                                 "cells to hold water; give the line to the "
+                                 "layers around it."));
           AssertThrow(path.rfind("Materials/", 0) == 0,
                       ExcMessage(path +
                                  "/Weak layer: a block's own material fills "

@@ -78,6 +78,22 @@ namespace fdem
       return values;
     }
 
+    std::vector<std::array<double, 2>>
+    parse_piezometric_line(const std::string &text, const std::string &path)
+    {
+      std::vector<std::array<double, 2>> line;
+      for (const std::string &point : Utilities::split_string_list(text, ';'))
+        {
+          const std::vector<double> xy = parse_vector(point, 2, path);
+          line.push_back({{xy[0], xy[1]}});
+          AssertThrow(line.size() == 1 || xy[0] > line[line.size() - 2][0],
+                      ExcMessage(path + ": the x coordinates must increase."));
+        }
+      AssertThrow(line.size() != 1,
+                  ExcMessage(path + ": give at least two points."));
+      return line;
+    }
+
     void
     BoundaryParameters::declare_parameters(ParameterHandler &prm)
     {
@@ -376,24 +392,9 @@ namespace fdem
     WaterParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Water");
-      unit_weight = prm.get_double("Unit weight of water");
-      piezometric_line.clear();
-      for (const std::string &point :
-           Utilities::split_string_list(prm.get("Piezometric line"), ';'))
-        {
-          const std::vector<double> xy =
-            parse_vector(point, 2, "Water/Piezometric line");
-          piezometric_line.push_back({{xy[0], xy[1]}});
-          AssertThrow(piezometric_line.size() == 1 ||
-                        xy[0] >
-                          piezometric_line[piezometric_line.size() - 2][0],
-                      ExcMessage(
-                        "Water/Piezometric line: the x coordinates must "
-                        "increase."));
-        }
-      AssertThrow(piezometric_line.size() != 1,
-                  ExcMessage(
-                    "Water/Piezometric line: give at least two points."));
+      unit_weight      = prm.get_double("Unit weight of water");
+      piezometric_line = parse_piezometric_line(prm.get("Piezometric line"),
+                                                "Water/Piezometric line");
       prm.leave_subsection();
     }
 

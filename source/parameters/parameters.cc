@@ -231,7 +231,35 @@ namespace fdem
           prm.leave_subsection();
         }
       prm.leave_subsection();
+      check_piezometric_pressures();
       probabilistic_check_targets();
+    }
+
+    bool
+    Parameters::has_piezometric_line() const
+    {
+      return !water.piezometric_line.empty() ||
+             std::any_of(materials.begin(),
+                         materials.end(),
+                         [](const auto &material) {
+                           return !material.second.piezometric_line.empty();
+                         });
+    }
+
+    void
+    Parameters::check_piezometric_pressures() const
+    {
+      if (has_piezometric_line())
+        return;
+      const std::string why =
+        ": 'piezometric' needs a water table; give Water/Piezometric line "
+        "(or a material's own Piezometric line).";
+      for (const auto &[name, boundary] : boundaries)
+        AssertThrow(boundary.pressure != "piezometric",
+                    ExcMessage("Boundaries/" + name + "/Pressure" + why));
+      for (const auto &[name, interface] : interfaces)
+        AssertThrow(interface.pore_pressure != "piezometric",
+                    ExcMessage("Interfaces/" + name + "/Pore pressure" + why));
     }
 
     void
@@ -249,7 +277,7 @@ namespace fdem
       for (const auto &variable : probabilistic.variables)
         AssertThrow(
           variable.owner != analyses::RandomVariable::Owner::water ||
-            water.piezometric_line.size() >= 2,
+            has_piezometric_line(),
           ExcMessage("Probabilistic/Variables: '" + variable.target +
                      "' shifts Water/Piezometric line, but no line is given."));
       AssertThrow(

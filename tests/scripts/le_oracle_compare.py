@@ -47,7 +47,9 @@ def section_and_surface(prm):
             c, phi = float(prm[path + "Cohesion"]), float(prm[path + "Friction angle"])
         else:
             c, phi = float(prm[first + "Cohesion"]), float(prm[first + "Friction angle"])
-        return le.Layer(top, gamma, saturated, c, phi)
+        # A perched water table: the material's own piezometric line.
+        own = points(prm.get(path + "Piezometric line", "")) or None
+        return le.Layer(top, gamma, saturated, c, phi, own)
 
     layer_names = [n.strip() for n in prm.get(slope + "Layers", "").split(",") if n.strip()]
     if layer_names:

@@ -37,6 +37,12 @@ namespace fdem
         double cohesion = 0;
         /** Friction angle phi (degrees). */
         double friction_angle = 30;
+        /**
+         * The layer's own piezometric line (a perched water table), from
+         * left to right: its wet part and a base in it use this line.
+         * Empty: the section's.
+         */
+        std::vector<Point<2>> piezometric;
       };
 
       /**
@@ -68,8 +74,9 @@ namespace fdem
       /**
        * The section: ground, layers top down (each below its top line down to
        * the next layer's top), piezometric line and the unit weight of water.
-       * Below the piezometric line a layer weighs its saturated unit weight
-       * and, with @p pore_pressure, the base carries gamma_w (y_w - y).
+       * Below the piezometric line (the layer's own, if it has one) a layer
+       * weighs its saturated unit weight and, with @p pore_pressure, a base
+       * in it carries gamma_w (y_w - y).
        */
       struct Section
       {

@@ -28,6 +28,20 @@ namespace fdem
                     const parameters::Parameters         &parameters);
 
     /**
+     * Checks that the pore pressure of every interface whose Pore pressure
+     * is 'piezometric' is one value at each point: the cells on the two
+     * sides of each of its faces must have the same water table (their
+     * materials' own piezometric lines, or Water/Piezometric line). Each
+     * face takes the line of its cell's material, so two different lines
+     * would push the blocks apart by their difference. Throws a one-line
+     * message naming the interface and the two materials.
+     */
+    template <int dim>
+    void
+    check_interface_water(const geometry::MeshDescription<dim> &mesh,
+                          const parameters::Parameters         &parameters);
+
+    /**
      * The materials of block @p b by the material ids its cells get
      * (MeshDescription::material_key()), for ElasticBlock.
      */

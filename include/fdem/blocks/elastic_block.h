@@ -5,6 +5,7 @@
 #include <fdem/blocks/block_factorization.h>
 #include <fdem/blocks/element_family.h>
 #include <fdem/blocks/interface_node.h>
+#include <fdem/blocks/surface_loads.h>
 #include <fdem/geometry/mesh_description.h>
 #include <fdem/parameters/model_parameters.h>
 
@@ -261,7 +262,7 @@ namespace fdem
        * water makes. Collective.
        */
       std::vector<Vector<double>>
-      water_loads(const Function<dim>                &water_table,
+      water_loads(const PiezometricPressure<dim>     &water_table,
                   const std::set<types::boundary_id> &faces) const;
 
       std::string                          name;
@@ -279,11 +280,12 @@ namespace fdem
        */
       std::map<unsigned int, parameters::MaterialParameters> materials;
       /**
-       * Water pressure of the water table (Water/Piezometric line), if one
-       * is given: where it is positive, a cell's weight is its material's
-       * saturated weight (evaluated at each quadrature point).
+       * Water pressure of the water table (Water/Piezometric line, or the
+       * material's own line), if one is given: where it is positive in a
+       * cell, the cell's weight is its material's saturated weight
+       * (evaluated at each quadrature point).
        */
-      std::shared_ptr<const Function<dim>> water_table;
+      std::shared_ptr<const PiezometricPressure<dim>> water_table;
       /** Dirichlet conditions of the block. */
       AffineConstraints<double> dirichlet_constraints;
       /** Dirichlet conditions plus the minimal support of the free modes. */

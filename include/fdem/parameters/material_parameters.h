@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -46,8 +47,9 @@ namespace fdem
        */
       double density = 0;
       /**
-       * Unit weight below the water table (Water/Piezometric line)
-       * (force/length^3); 0: the same weight as above it.
+       * Unit weight below the water table (the material's piezometric line,
+       * or Water/Piezometric line) (force/length^3); 0: the same weight as
+       * above it.
        */
       double saturated_unit_weight = 0;
       /** Soil strength for interfaces with Strength = material. */
@@ -65,6 +67,15 @@ namespace fdem
        * material.
        */
       std::vector<dealii::Point<2>> weak_layer;
+      /**
+       * The material's own piezometric line (Materials/<name>/Piezometric
+       * line, "x,y; ..." with increasing x, in the coordinates before the
+       * Geometry transformation): used instead of Water/Piezometric line in
+       * this material's cells (saturated weight) and on the faces of its
+       * cells that carry a 'piezometric' pressure. A perched water table in
+       * one layer, a lower one in the next. Empty: Water/Piezometric line.
+       */
+      std::vector<std::array<double, 2>> piezometric_line;
 
       /** The weight per unit volume above the water table, with @p g for a
        * density. */

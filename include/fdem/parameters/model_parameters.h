@@ -144,7 +144,8 @@ namespace fdem
       /**
        * Piezometric line as points "x,y; x,y; ..." with increasing x (2D):
        * below it the pressure is gamma_w times the depth under it. Empty:
-       * none.
+       * none. A material with a line of its own
+       * (MaterialParameters::piezometric_line) uses that one instead.
        */
       std::vector<std::array<double, 2>> piezometric_line;
     };
@@ -282,5 +283,12 @@ namespace fdem
     parse_vector(const std::string &text,
                  const unsigned int n_components,
                  const std::string &path);
+
+    /**
+     * Parses a piezometric line "x,y; x,y; ..." (at least two points, x
+     * increasing; empty: none), or throws naming @p path.
+     */
+    std::vector<std::array<double, 2>>
+    parse_piezometric_line(const std::string &text, const std::string &path);
   } // namespace parameters
 } // namespace fdem

@@ -89,6 +89,16 @@ namespace fdem
       void
       probabilistic_check_targets() const;
 
+      /** Whether a water table is given: Water/Piezometric line, or a
+       * material's own Piezometric line. */
+      bool
+      has_piezometric_line() const;
+
+      /** Throws naming the entry if a boundary's Pressure or an interface's
+       * Pore pressure is 'piezometric' and no water table is given. */
+      void
+      check_piezometric_pressures() const;
+
       /** The output folder this run writes into. */
       std::string
       output_directory() const;
