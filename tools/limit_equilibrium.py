@@ -315,7 +315,7 @@ def spencer(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0
 
     def force_F(lam):
         f = lambda F: _spencer_residuals(slices, F, lam, mass.crack_force, mass.crack_point)[0]
-        return _root_in_F(f)
+        return _root_in_F(f, slices)
 
     def moment_gap(lam):
         F = force_F(lam)
@@ -325,16 +325,34 @@ def spencer(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0
                            np.sum(slices["W"]) * (mass.x[-1] - mass.x[0]))
 
 
-def _root_in_F(f):
-    """The largest root of f in [0.05, 50]. Small spurious roots exist where
-    a slice's normal-force denominator (Bishop's m_alpha) changes sign at a
-    small F; the physical root is the one above them."""
-    Fs = np.geomspace(0.05, 50, 200)
+def _largest_root(f, low, high, n):
+    Fs = np.geomspace(low, high, n)
     values = [f(F) for F in Fs]
     for i in reversed(range(len(Fs) - 1)):
         if np.isfinite(values[i]) and np.isfinite(values[i + 1]) and values[i] * values[i + 1] <= 0:
             return brentq(f, Fs[i], Fs[i + 1], xtol=1e-14, rtol=1e-14)
-    raise ValueError("no factor of safety in [0.05, 50]")
+    return None
+
+
+def _root_in_F(f, slices):
+    """The largest root of f in [0.05, 50]. Small spurious roots exist where
+    a slice's normal-force denominator (Bishop's m_alpha = cos(alpha) +
+    sin(alpha) tan(phi) / F) changes sign at a small F; the physical root is
+    the one above them. A root at which some m_alpha of @p slices (arrays
+    'alpha' and 'tan_phi') is not positive is such a spurious root (Whitman
+    and Bailey 1967): the physical one is then looked for up to 1e4, and
+    without it there is no factor."""
+    def admissible(F):
+        return F is not None and bool(np.all(
+            np.cos(slices["alpha"]) + np.sin(slices["alpha"]) * slices["tan_phi"] / F > 0))
+
+    F = _largest_root(f, 0.05, 50, 200)
+    if admissible(F):
+        return F
+    F = _largest_root(f, 50, 1e4, 100)
+    if admissible(F):
+        return F
+    raise ValueError("no factor of safety in [0.05, 1e4] with every m_alpha positive")
 
 
 def bishop(section, centre, radius, n_slices=400):
@@ -357,7 +375,7 @@ def bishop(section, centre, radius, n_slices=400):
             driving += (s["W"] - s["V"]) * (s["xg"] - xc) + s["Q"] * (centre[1] - s["yg"])
         return F - radius * resisting / driving
 
-    return _root_in_F(g)
+    return _root_in_F(g, slice_arrays(slices))
 
 
 def _section_strength(mass, x):
@@ -451,7 +469,8 @@ def vertical_wedges(section, surface, n_slices=400, crack_depth=0.0, crack_water
                 N = -(b["U"] * ca + a * sa - b["W"] + T_left) / (ca + t * sa)
                 return N * (t * ca - sa) + (-b["U"] * sa + a * ca + E_left + U_left + Px), thrusts
 
-    K = _root_in_F(lambda K: march(K)[0])
+    K = _root_in_F(lambda K: march(K)[0],
+                   {k: np.array([b[k] for b in blocks]) for k in ("alpha", "tan_phi")})
     return K, march(K)[1]
 
 
@@ -554,7 +573,7 @@ def morgenstern_price(section, surface, n_slices=400, function="half-sine", crac
 
     def force_F(lam):
         return _root_in_F(lambda F: _interslice_residuals(
-            s, F, lam, f, mass.crack_force, mass.crack_point)[0])
+            s, F, lam, f, mass.crack_force, mass.crack_point)[0], s)
 
     def gap(lam):
         return _interslice_residuals(s, force_F(lam), lam, f, mass.crack_force,
@@ -588,7 +607,7 @@ def janbu(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0
     s = slice_arrays(mass.slices())
     f = np.ones(len(mass.x))
     F0 = _root_in_F(lambda F: _interslice_residuals(
-        s, F, 0.0, f, mass.crack_force, mass.crack_point)[0])
+        s, F, 0.0, f, mass.crack_force, mass.crack_point)[0], s)
     (x0, y0), (x1, y1) = mass.surface[0], mass.surface[-1]
     L = math.hypot(x1 - x0, y1 - y0)
     d = max(max(((x1 - x0) * (y0 - y) - (y1 - y0) * (x0 - x)) / L for x, y in mass.surface), 0.0)

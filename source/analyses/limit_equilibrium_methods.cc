@@ -48,40 +48,71 @@ namespace fdem
         constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
         /**
+         * Whether every slice's normal-force denominator m_alpha = cos(alpha)
+         * + sin(alpha) tan(phi)/K (Bishop's; the march's at lambda = 0) is
+         * positive at @p K. Where it is not, the base normal forces come
+         * from a denominator of the wrong sign: the root is a spurious one
+         * (Whitman and Bailey 1967), not a factor of safety.
+         */
+        bool
+        admissible(const SlicedMass &mass, const double K)
+        {
+          for (const Slice &s : mass.slices)
+            if (!(s.cos_alpha + s.sin_alpha * s.tan_phi / K > 0))
+              return false;
+          return true;
+        }
+
+        /**
          * The largest root of f in [0.05, 50] (_root_in_F of the Python
          * yardstick): small spurious roots exist where a slice's normal-force
          * denominator (Bishop's m_alpha) changes sign at a small K; the
-         * physical root is the one above them.
+         * physical root is the one above them. A root at which some m_alpha
+         * is not positive is such a spurious root, and the physical one may
+         * then lie above 50 (a very strong soil): it is looked for up to
+         * 1e4, and without it there is no factor (an error, not a wrong
+         * number).
          */
         double
         root_in_K(const std::function<double(double)> &f,
-                  const double                         tolerance)
+                  const double                         tolerance,
+                  const SlicedMass                    &mass)
         {
-          // numpy.geomspace(0.05, 50, 200), scanned from the top down: the
+          // numpy.geomspace(low, high, n), scanned from the top down: the
           // first sign change met is the largest root's bracket, as the
           // Python yardstick finds it after evaluating them all.
-          constexpr unsigned int n = 200;
-          const double start = std::log10(0.05), stop = std::log10(50.);
-          const auto   K_at = [&](const unsigned int i) {
-            return i == 0 ?
-                       0.05 :
+          const auto largest_root = [&](const double       low,
+                                        const double       high,
+                                        const unsigned int n) {
+            const double start = std::log10(low), stop = std::log10(high);
+            const auto   K_at  = [&](const unsigned int i) {
+              return i == 0 ? low :
                      i == n - 1 ?
-                       50. :
-                       std::pow(10., start + i * ((stop - start) / (n - 1)));
+                                 high :
+                                 std::pow(10., start + i * ((stop - start) / (n - 1)));
+            };
+            double upper = f(K_at(n - 1));
+            for (int i = n - 2; i >= 0; --i)
+              {
+                const double lower = f(K_at(i));
+                if (std::isfinite(lower) && std::isfinite(upper) &&
+                    lower * upper <= 0)
+                  return find_root(
+                    f, K_at(i), K_at(i + 1), tolerance, tolerance);
+                upper = lower;
+              }
+            return nan;
           };
-          double upper = f(K_at(n - 1));
-          for (int i = n - 2; i >= 0; --i)
-            {
-              const double lower = f(K_at(i));
-              if (std::isfinite(lower) && std::isfinite(upper) &&
-                  lower * upper <= 0)
-                return find_root(f, K_at(i), K_at(i + 1), tolerance, tolerance);
-              upper = lower;
-            }
-          AssertThrow(false,
-                      ExcMessage("Limit equilibrium: no factor of safety in "
-                                 "[0.05, 50]."));
-          return nan;
+          const double K = largest_root(0.05, 50., 200);
+          if (std::isfinite(K) && admissible(mass, K))
+            return K;
+          const double K_above = largest_root(50., 1e4, 100);
+          AssertThrow(std::isfinite(K_above) && admissible(mass, K_above),
+                      ExcMessage(
+                        "Limit equilibrium: no factor of safety in [0.05, "
+                        "1e4] at which every slice's normal force has a "
+                        "positive denominator (m_alpha)."));
+          return K_above;
         }
 
         /**
@@ -168,7 +199,8 @@ namespace fdem
           const auto force_K = [&](const double lambda) {
             return root_in_K(
               [&](const double K) { return march(mass, K, lambda, f).thrust; },
-              tolerance);
+              tolerance,
+              mass);
           };
           const auto moment_gap = [&](const double lambda) {
             return march(mass, force_K(lambda), lambda, f).moment;
@@ -312,7 +344,7 @@ namespace fdem
             return K - mass.radius * resisting / driving;
           };
           MethodResult result;
-          result.K = root_in_K(g, tolerance);
+          result.K = root_in_K(g, tolerance, mass);
           return result;
         }
 
@@ -361,7 +393,8 @@ namespace fdem
             case Method::janbu_corrected:
               result.K = root_in_K(
                 [&](const double K) { return march(mass, K, 0., f).thrust; },
-                tolerance);
+                tolerance,
+                mass);
               if (method == Method::janbu_corrected)
                 {
                   result.f0 = janbu_f0(mass);

@@ -141,10 +141,14 @@ MAY_BE_NULL = {"K_failed", "safety_factor_bracket", "K_star", "relative_differen
 
 def no_nan(value, key=""):
     """Whether the JSON value holds only finite numbers, and nulls only
-    under the keys of MAY_BE_NULL (nlohmann writes NaN as null)."""
+    under the keys of MAY_BE_NULL (nlohmann writes NaN as null) or in an
+    object that says why it is not available (a non-empty "not_computed",
+    e.g. a limit-equilibrium method's {"K": null, "not_computed": ...})."""
     if key in MAY_BE_NULL:
         return True
     if isinstance(value, dict):
+        if value.get("not_computed"):
+            return all(v is None or no_nan(v, k) for k, v in value.items())
         return all(no_nan(v, k) for k, v in value.items())
     if isinstance(value, list):
         return all(no_nan(v, key) for v in value)
