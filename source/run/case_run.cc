@@ -176,7 +176,13 @@ namespace fdem
         if (analysis_results.has_safety_factor && all_stick.solved &&
             all_stick.forces.size() == dim * model.get_mixed_system().n_pairs())
           {
+            // The all-stick state was solved with the loads of K = 1 (an
+            // anchor reduced by K: its full shear); its displacements need
+            // the same loads, then the final state's are put back.
+            the_model.apply_strength_dependent_loads(1.0);
             mechanism = model.block_displacements(all_stick);
+            the_model.apply_strength_dependent_loads(
+              model.get_strength_reduction());
             for (unsigned int b = 0; b < model.get_blocks().size(); ++b)
               mechanism[b].sadd(-1.0, 1.0, model.get_displacements()[b]);
           }

@@ -186,8 +186,50 @@ def paper(exe):
 PAPER_TOLERANCE = 5e-3
 
 
+def mechanism(exe):
+    """The mechanism field of the VTU (final state minus the elastic state
+    with every pair stuck) with an anchor reduced by K: the all-stick state
+    was solved with the anchor's load at K = 1, so its displacements must
+    be recovered with that load too. Then u_stick = u - mechanism is the
+    all-stick state itself, in which both nodes of every pair of the
+    sliding surface move together (no gap, no slip). Recovered with the
+    final K's load instead (T_S/K), u_stick carries a spurious elastic
+    response to T_S (1 - 1/K) in the sliding mass alone, and its two sides
+    part: the difference is checked against 1e-6 of the largest u_stick
+    (the two sides' displacements agree to round-off in the stuck state)."""
+    import paraview_checks as pv
+    import numpy as np
+    settings = {**PAPER_ANCHOR, "Reinforcement/Anchor force reduced by K": "true",
+                "Output/Write VTU": "true"}
+    with fdem_run.temporary_run(exe, "paper_slope.prm", settings=settings) as result:
+        assert result.ok, result.failure()
+        files = {name: f for _, name, f in pv.datasets(result.file("solution.pvd"))}
+        folder = os.path.dirname(result.file("solution.pvd"))
+        stuck = {}
+        for name in ("sliding mass", "foundation"):
+            grid = pv.read(os.path.join(folder, files[name]))
+            _, u = pv.point_array(grid, "displacement")
+            _, m = pv.point_array(grid, "mechanism_displacement")
+            stuck[name] = (pv.points(grid), u - m)
+        surface = pv.points(pv.read(os.path.join(folder, files["sliding surface"])))
+    scale = max(float(np.max(np.abs(stuck["foundation"][1]))),
+                float(np.max(np.abs(stuck["sliding mass"][1]))))
+    worst = 0.0
+    for x in surface:
+        at = {}
+        for name, (xyz, u) in stuck.items():
+            distance = np.linalg.norm(xyz - x, axis=1)
+            at[name] = u[int(np.argmin(distance))]
+            assert float(np.min(distance)) <= 1e-9 * 50, f"no node of {name} at {x}"
+        worst = max(worst, float(np.max(np.abs(at["sliding mass"] - at["foundation"]))))
+    print(f"all-stick state from the VTU: the two sides of the surface differ by "
+          f"{worst:.3e}, {worst / scale:.2e} of the largest displacement {scale:.3e}")
+    assert worst <= 1e-6 * scale, "the mechanism field mixes the loads of two K"
+
+
 def main(exe, what):
-    {"block": block, "invariance": invariance, "paper": paper}[what](exe)
+    {"block": block, "invariance": invariance, "paper": paper,
+     "mechanism": mechanism}[what](exe)
     print("passed")
 
 
