@@ -8,11 +8,13 @@
 
 #include "test_helpers.h"
 
+#include <fdem/analyses/limit_equilibrium_model.h>
 #include <fdem/blocks/elastic_block.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -126,5 +128,29 @@ namespace fdem::test_support::layered_cases
           contact::PairStatus::open)
         open += strengths[k].cohesion_force;
     return open;
+  }
+  /**
+   * Every limit-equilibrium method of the model @p p that applies (all but
+   * Bishop's on a polyline; at least four) gives @p K to @p tolerance
+   * relative.
+   */
+  inline void
+  expect_every_method_gives(const parameters::Parameters &p,
+                            const double                  K,
+                            const double                  tolerance)
+  {
+    const auto le = analyses::model_limit_equilibrium(p);
+    ASSERT_TRUE(le.computed) << le.not_computed;
+    unsigned int n_methods = 0;
+    for (const auto &entry : le.methods)
+      if (entry.not_computed.empty()) // Bishop's is for circles only
+        {
+          ++n_methods;
+          const std::string name =
+            analyses::limit_equilibrium::method_key(entry.method);
+          std::cout << "  " << name << " K " << entry.result.K << std::endl;
+          EXPECT_NEAR(entry.result.K, K, tolerance * K) << name;
+        }
+    EXPECT_GE(n_methods, 4u);
   }
 } // namespace fdem::test_support::layered_cases

@@ -121,18 +121,6 @@ CASES = {
             "subsection Materials", "  subsection seam",
             f"    set Cohesion = {num(1 * F / L**2)}", "  end", "end"] + layered_water(F, L),
     },
-    # The layered slope with a perched water table in the fill
-    # (Materials/fill/Piezometric line, in the input's coordinates like the
-    # slope's line).
-    "perched_water_slope": {
-        "prm": "perched_water_slope.prm",
-        "blocks": {},
-        "materials": LAYERS,
-        "quick": ["subsection Geometry", "  subsection Slope",
-                  "    set Mesh size = 2.0", "  end", "end"],
-        "interfaces": lambda F, L: [],
-        "extra": layered_water,
-    },
     "block_on_plane_3d": {
         "prm": "block_on_plane_3d.prm",
         "blocks": {"block": (1e6, 25), "foundation": (1e6, 25)},
@@ -155,6 +143,10 @@ CASES = {
             "subsection Water", f"  set Unit weight of water = {num(9.81 * F / L**3)}", "end"],
     },
 }
+# The layered slope with a perched water table in the fill
+# (Materials/fill/Piezometric line, in the input's coordinates like the
+# slope's line): the layered slope's entries.
+CASES["perched_water_slope"] = {**CASES["layered_slope"], "prm": "perched_water_slope.prm"}
 
 
 def write(case, variant, lines, description):
