@@ -81,28 +81,28 @@ namespace fdem
           // numpy.geomspace(low, high, n), scanned from the top down: the
           // first sign change met is the largest root's bracket, as the
           // Python yardstick finds it after evaluating them all.
-          const auto largest_root = [&](const double       low,
-                                        const double       high,
-                                        const unsigned int n) {
-            const double start = std::log10(low), stop = std::log10(high);
-            const auto   K_at  = [&](const unsigned int i) {
-              return i == 0 ? low :
-                     i == n - 1 ?
-                                 high :
-                                 std::pow(10., start + i * ((stop - start) / (n - 1)));
+          const auto largest_root =
+            [&](const double low, const double high, const unsigned int n) {
+              const double start = std::log10(low), stop = std::log10(high);
+              const auto   K_at = [&](const unsigned int i) {
+                return i == 0 ?
+                           low :
+                         i == n - 1 ?
+                           high :
+                           std::pow(10., start + i * ((stop - start) / (n - 1)));
+              };
+              double upper = f(K_at(n - 1));
+              for (int i = n - 2; i >= 0; --i)
+                {
+                  const double lower = f(K_at(i));
+                  if (std::isfinite(lower) && std::isfinite(upper) &&
+                      lower * upper <= 0)
+                    return find_root(
+                      f, K_at(i), K_at(i + 1), tolerance, tolerance);
+                  upper = lower;
+                }
+              return nan;
             };
-            double upper = f(K_at(n - 1));
-            for (int i = n - 2; i >= 0; --i)
-              {
-                const double lower = f(K_at(i));
-                if (std::isfinite(lower) && std::isfinite(upper) &&
-                    lower * upper <= 0)
-                  return find_root(
-                    f, K_at(i), K_at(i + 1), tolerance, tolerance);
-                upper = lower;
-              }
-            return nan;
-          };
           const double K = largest_root(0.05, 50., 200);
           if (std::isfinite(K) && admissible(mass, K))
             return K;
