@@ -5,6 +5,7 @@
 #include <fdem/geometry/cases/hertz.h>
 #include <fdem/geometry/cases/hertz_sphere.h>
 #include <fdem/geometry/cases/slope.h>
+#include <fdem/geometry/cases/slope_3d.h>
 #include <fdem/geometry/cases/wedge.h>
 #include <fdem/geometry/gmsh_mesh.h>
 #include <fdem/geometry/make_mesh.h>
@@ -185,13 +186,16 @@ namespace fdem
         {
           AssertThrow(dim == 3,
                       ExcMessage("Geometry/Source: the built-in generators "
-                                 "wedge, block on plane and hertz sphere are "
+                                 "wedge, block on plane, hertz sphere and "
+                                 "slope 3d are "
                                  "3D only; set Dimension = 3."));
           if constexpr (dim == 3)
             mesh = (geometry.source == Source::wedge) ?
                      make_wedge_mesh(geometry.wedge) :
                    (geometry.source == Source::hertz_sphere) ?
                      make_hertz_sphere_mesh(geometry.hertz_sphere) :
+                   (geometry.source == Source::slope_3d) ?
+                     make_slope_3d_mesh(geometry.slope_3d) :
                      make_block_on_plane_mesh(geometry.block_on_plane);
         }
       else
@@ -200,7 +204,7 @@ namespace fdem
                       ExcMessage("Geometry/Source: the built-in generators "
                                  "slope, hertz and inclined block are 2D "
                                  "only; in 3D use wedge, block on plane, hertz "
-                                 "sphere or a mesh file."));
+                                 "sphere, slope 3d or a mesh file."));
           if constexpr (dim == 2)
             mesh = (geometry.source == Source::slope) ?
                      make_slope_mesh(geometry.slope) :

@@ -261,6 +261,33 @@ namespace fdem
         e.n_pairs    = 1.15 * planes / std::pow(0.65 * wedge.mesh_size, 2);
         return e;
       }
+
+      MeshEstimate
+      estimate_slope_3d(const Slope3D &slope)
+      {
+        // An upper bound: the whole model at the size near the sliding
+        // surface. Its area is at most that of the half ellipsoid (or half
+        // cylinder across the width), 2 pi R max(R, b) (pi R W).
+        const bool   hexahedra = slope.element_shape == ElementShape::hypercube;
+        const double near      = (hexahedra ? 2 : 1) * slope.mesh_size;
+        const double volume =
+          slope.length() * slope.width *
+          (slope.base_depth +
+           slope.slope_height *
+             (slope.length() - 0.5 * (slope.crest_x() + slope.toe_length)) /
+             slope.length());
+        const double tetrahedra = 8.5 * volume / (near * near * near);
+        const double area       = slope.surface == Slope3D::Surface::cylinder ?
+                                    numbers::PI * slope.radius * slope.width :
+                                    2 * numbers::PI * slope.radius *
+                                std::max(slope.radius, slope.half_length);
+        MeshEstimate e;
+        e.entry      = "Geometry/Slope 3D/Mesh size";
+        e.n_cells    = tetrahedra * (hexahedra ? 4 : 1);
+        e.n_vertices = tetrahedra / 5.5 * (hexahedra ? 24 : 1);
+        e.n_pairs    = 1.15 * area / std::pow(0.65 * slope.mesh_size, 2);
+        return e;
+      }
     } // namespace
 
 
@@ -294,6 +321,8 @@ namespace fdem
             return estimate_hertz_sphere(geometry.hertz_sphere);
           case Source::wedge:
             return estimate_wedge(geometry.wedge);
+          case Source::slope_3d:
+            return estimate_slope_3d(geometry.slope_3d);
           default:
             return MeshEstimate();
         }

@@ -27,7 +27,8 @@ namespace fdem
           {"inclined block", Source::inclined_block},
           {"wedge", Source::wedge},
           {"block on plane", Source::block_on_plane},
-          {"hertz sphere", Source::hertz_sphere}};
+          {"hertz sphere", Source::hertz_sphere},
+          {"slope 3d", Source::slope_3d}};
         return sources.at(name);
       }
     } // namespace
@@ -44,11 +45,12 @@ namespace fdem
           "slope",
           Patterns::Selection(
             "mesh file|slope|hertz|inclined block|wedge|block on plane|"
-            "hertz sphere"),
+            "hertz sphere|slope 3d"),
           "Where the mesh comes from: a Gmsh file (see Mesh file) or one of "
           "the built-in generators, whose data are in the subsection of the "
           "same name: slope, hertz and inclined block build 2D models "
-          "(Dimension = 2), wedge, block on plane and hertz sphere 3D models "
+          "(Dimension = 2), wedge, block on plane, hertz sphere and slope 3d "
+          "(subsection Slope 3D) 3D models "
           "(Dimension = 3).");
         prm.declare_entry(
           "Mesh file",
@@ -110,6 +112,7 @@ namespace fdem
         Wedge::declare_parameters(prm);
         BlockOnPlane::declare_parameters(prm);
         HertzSphere::declare_parameters(prm);
+        Slope3D::declare_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -150,6 +153,7 @@ namespace fdem
         wedge.parse_parameters(prm);
         block_on_plane.parse_parameters(prm);
         hertz_sphere.parse_parameters(prm);
+        slope_3d.parse_parameters(prm);
       }
       prm.leave_subsection();
 
@@ -175,6 +179,9 @@ namespace fdem
           case Source::hertz_sphere:
             hertz_sphere.validate();
             break;
+          case Source::slope_3d:
+            slope_3d.validate();
+            break;
         }
     }
 
@@ -184,7 +191,7 @@ namespace fdem
     GeometryParameters::source_is_3d() const
     {
       return source == Source::wedge || source == Source::block_on_plane ||
-             source == Source::hertz_sphere;
+             source == Source::hertz_sphere || source == Source::slope_3d;
     }
 
 

@@ -69,12 +69,13 @@ TEST(MakeMesh, Errors)
   expect_error([] { geometry::make_mesh<3>(parse(""), "", ""); },
                "Geometry/Source: the built-in generators slope, hertz and "
                "inclined block are 2D only; in 3D use wedge, block on plane, "
-               "hertz sphere or a mesh file.");
-  for (const std::string source : {"wedge", "block on plane", "hertz sphere"})
+               "hertz sphere, slope 3d or a mesh file.");
+  for (const std::string source :
+       {"wedge", "block on plane", "hertz sphere", "slope 3d"})
     expect_error(
       [&] { geometry::make_mesh<2>(parse("set Source = " + source), "", ""); },
-      "Geometry/Source: the built-in generators wedge, block on plane and "
-      "hertz sphere are 3D only; set Dimension = 3.");
+      "Geometry/Source: the built-in generators wedge, block on plane, "
+      "hertz sphere and slope 3d are 3D only; set Dimension = 3.");
   expect_error(
     [] {
       geometry::make_mesh<2>(parse("set Source = inclined block\n"

@@ -7,6 +7,7 @@
 #include <fdem/geometry/cases/hertz.h>
 #include <fdem/geometry/cases/hertz_sphere.h>
 #include <fdem/geometry/cases/slope.h>
+#include <fdem/geometry/cases/slope_3d.h>
 #include <fdem/geometry/cases/wedge.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -45,7 +46,8 @@ namespace fdem
         inclined_block,
         wedge,
         block_on_plane,
-        hertz_sphere
+        hertz_sphere,
+        slope_3d
       };
 
       using ElementShape   = geometry::ElementShape;
@@ -58,6 +60,7 @@ namespace fdem
       /** The 3D block on plane (source "block on plane"). */
       using BlockOnPlane = geometry::BlockOnPlane<3>;
       using HertzSphere  = geometry::HertzSphere;
+      using Slope3D      = geometry::Slope3D;
 
       Source source = Source::slope;
       /** The mesh file as written in the .prm file: see mesh_file_path(). */
@@ -85,6 +88,7 @@ namespace fdem
       Wedge         wedge;
       BlockOnPlane  block_on_plane;
       HertzSphere   hertz_sphere;
+      Slope3D       slope_3d;
 
       /** Whether the selected source builds 3D models (only). */
       bool

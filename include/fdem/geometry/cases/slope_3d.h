@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+#pragma once
+
+#include <fdem/geometry/cases/case_input.h>
+#include <fdem/geometry/mesh_description.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    /**
+     * The case "slope 3d", subsection "Geometry/Slope 3D": a straight slope
+     * extruded along its strike (y), cut by a curved sliding surface, made
+     * by Gmsh (make_slope_3d_mesh()). x points into the slope (the toe
+     * is at x = Toe length, the crest edge behind it), z up. The section
+     * of the ground is (0, z_t), (L_t, z_t), (L_t + H cot beta, z_t + H),
+     * (L_t + H cot beta + L_c, z_t + H), the base is at z_t - D, and the
+     * model spans 0 <= y <= W.
+     */
+    struct Slope3D
+    {
+      /** The shape of the sliding surface. */
+      enum class Surface
+      {
+        /** Semi-axes R (x and z) and b (y). */
+        ellipsoid,
+        /** Radius R. */
+        sphere,
+        /** Radius R, axis along y through the whole width. */
+        cylinder
+      };
+
+      /** Height H of the slope (m). */
+      double slope_height;
+      /** Angle beta of the slope face to the horizontal (degrees). */
+      double slope_angle;
+      /** Length L_t of the ground in front of the toe (m). */
+      double toe_length;
+      /** Length L_c of the ground behind the crest edge (m). */
+      double crest_length;
+      /** Elevation z_t of the toe (m). */
+      double toe_elevation;
+      /** Depth D of the base below the toe (m). */
+      double base_depth;
+      /** Width W along the strike (m). */
+      double   width;
+      Surface  surface;
+      Point<3> centre;
+      /** R: radius of the sphere and cylinder, semi-axis in x and z. */
+      double radius;
+      /** b: the ellipsoid's semi-axis along y. */
+      double half_length;
+      /** Element size h near the sliding surface (m). */
+      double mesh_size;
+      /** Hexahedra or tetrahedra. */
+      ElementShape element_shape = ElementShape::hypercube;
+
+      /** x of the crest edge, L_t + H cot beta. */
+      double
+      crest_x() const;
+
+      /** x of the back of the model, crest_x() + L_c. */
+      double
+      length() const;
+
+      /** z of the ground at @p x. */
+      double
+      ground(const double x) const;
+
+      /**
+       * The quadric's value at @p p: negative inside the surface, zero on
+       * it, ((x - x_c)/R)^2 + ((y - y_c)/b)^2 + ((z - z_c)/R)^2 - 1 (the
+       * y term left out for the cylinder).
+       */
+      double
+      quadric(const Point<3> &p) const;
+
+      /** Declare the subsection "Slope 3D" (inside "Geometry"). */
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /** Read the subsection "Slope 3D" (inside "Geometry"). */
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /**
+       * Throw a one-sentence message naming the entry if the data are
+       * invalid: also if the sliding surface does not cut the ground, does
+       * not daylight on the slope face, or leaves the model below the
+       * ground (checked on points of the surface 1/720 of a turn apart).
+       */
+      void
+      validate() const;
+    };
+
+    /**
+     * The 3D slope of @p slope: the slope solid and the solid inside the
+     * sliding surface are intersected (the sliding mass) and fragmented
+     * (OpenCASCADE), so that the sliding surface is one conforming set of
+     * faces shared by the blocks "sliding mass" and "foundation". Face
+     * groups: "sliding surface", "ground" (the free surface), "base"
+     * (z = z_t - D) and "sides" (x = 0, x = L, y = 0, y = W; with a
+     * cylinder the ends of the sliding mass too). Gmsh's Delaunay
+     * tetrahedra of size 2 h near the sliding surface (within R/4),
+     * growing to 6 h, each split into four hexahedra, or tetrahedra of
+     * size h. Opens its own GmshSession.
+     */
+    MeshDescription<3>
+    make_slope_3d_mesh(const Slope3D &slope);
+  } // namespace geometry
+} // namespace fdem

@@ -1,0 +1,418 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+
+#include <fdem/geometry/cases/slope_3d.h>
+#include <fdem/geometry/gmsh_mesh.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    void
+    Slope3D::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Slope 3D");
+      {
+        prm.declare_entry(
+          "Slope height",
+          "10",
+          Patterns::Double(0),
+          "Height H of the slope face (m). 3D, x into the slope, y along the "
+          "strike, z up: the ground is z_t in front of the toe (0 <= x <= "
+          "Toe length), rises at Slope angle to z_t + H at the crest edge "
+          "and stays there for Crest length; the model spans 0 <= y <= "
+          "Width.");
+        prm.declare_entry("Slope angle",
+                          "26.565051177",
+                          Patterns::Double(0, 90),
+                          "Angle beta of the slope face to the horizontal "
+                          "(degrees, 0 to 90 excluded).");
+        prm.declare_entry("Toe length",
+                          "10",
+                          Patterns::Double(0),
+                          "Length of the ground in front of the toe (m).");
+        prm.declare_entry("Crest length",
+                          "20",
+                          Patterns::Double(0),
+                          "Length of the ground behind the crest edge (m).");
+        prm.declare_entry("Toe elevation",
+                          "25",
+                          Patterns::Double(),
+                          "Elevation z_t of the toe and of the ground in "
+                          "front of it (m).");
+        prm.declare_entry("Base depth",
+                          "5",
+                          Patterns::Double(0),
+                          "Depth D of the base (z = z_t - D) below the toe "
+                          "(m).");
+        prm.declare_entry("Width",
+                          "40",
+                          Patterns::Double(0),
+                          "Width W of the model along the strike (m).");
+        prm.declare_entry(
+          "Sliding surface",
+          "ellipsoid",
+          Patterns::Selection("ellipsoid|sphere|cylinder"),
+          "Shape of the sliding surface: an ellipsoid with semi-axes Surface "
+          "radius in x and z and Surface half length in y, a sphere of "
+          "Surface radius, or a cylinder of Surface radius along y through "
+          "the whole width (the plane-strain case: set the sides to normal "
+          "constraints).");
+        prm.declare_entry("Surface centre",
+                          "19.61, 20, 46.32",
+                          Patterns::List(Patterns::Double(), 3, 3, ","),
+                          "Centre x, y, z of the sliding surface (m); y is "
+                          "not used for a cylinder.");
+        prm.declare_entry("Surface radius",
+                          "21.32",
+                          Patterns::Double(0),
+                          "Radius R of the sphere or the cylinder, the "
+                          "ellipsoid's semi-axes in x and z (m).");
+        prm.declare_entry("Surface half length",
+                          "15",
+                          Patterns::Double(0),
+                          "Semi-axis b of the ellipsoid along y (m); not "
+                          "used for a sphere or a cylinder.");
+        prm.declare_entry(
+          "Mesh size",
+          "2",
+          Patterns::Double(0),
+          "Element size h near the sliding surface (m): Gmsh meshes "
+          "tetrahedra of size 2 h within Surface radius / 4 of the sliding "
+          "surface, growing to 6 h further away, and splits each into four "
+          "hexahedra (edges about h/3 to h), or with Element shape = "
+          "tetrahedron keeps tetrahedra of size h (growing to 3 h).");
+        prm.declare_entry(
+          "Element shape",
+          "hexahedron",
+          Patterns::Selection("hexahedron|tetrahedron"),
+          "Shape of the cells: hexahedra (FE_Q elements, Gmsh's Delaunay "
+          "tetrahedra each split into four), or the Delaunay tetrahedra "
+          "themselves (FE_SimplexP).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Slope3D::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Slope 3D");
+      {
+        slope_height            = prm.get_double("Slope height");
+        slope_angle             = prm.get_double("Slope angle");
+        toe_length              = prm.get_double("Toe length");
+        crest_length            = prm.get_double("Crest length");
+        toe_elevation           = prm.get_double("Toe elevation");
+        base_depth              = prm.get_double("Base depth");
+        width                   = prm.get_double("Width");
+        const std::string shape = prm.get("Sliding surface");
+        surface                 = (shape == "ellipsoid") ? Surface::ellipsoid :
+                                  (shape == "sphere")    ? Surface::sphere :
+                                                           Surface::cylinder;
+        const std::vector<double> c = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Surface centre"), ','));
+        centre        = Point<3>(c[0], c[1], c[2]);
+        radius        = prm.get_double("Surface radius");
+        half_length   = prm.get_double("Surface half length");
+        mesh_size     = prm.get_double("Mesh size");
+        element_shape = case_input::parse_element_shape(prm);
+        if (surface == Surface::sphere)
+          half_length = radius;
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    double
+    Slope3D::crest_x() const
+    {
+      return toe_length +
+             slope_height / std::tan(slope_angle * numbers::PI / 180);
+    }
+
+
+
+    double
+    Slope3D::length() const
+    {
+      return crest_x() + crest_length;
+    }
+
+
+
+    double
+    Slope3D::ground(const double x) const
+    {
+      const double x_toe = toe_length, x_crest = crest_x();
+      if (x <= x_toe)
+        return toe_elevation;
+      if (x >= x_crest)
+        return toe_elevation + slope_height;
+      return toe_elevation + slope_height * (x - x_toe) / (x_crest - x_toe);
+    }
+
+
+
+    double
+    Slope3D::quadric(const Point<3> &p) const
+    {
+      const double u = (p[0] - centre[0]) / radius,
+                   v = (p[1] - centre[1]) / half_length,
+                   w = (p[2] - centre[2]) / radius;
+      return u * u + w * w + (surface == Surface::cylinder ? 0 : v * v) - 1;
+    }
+
+
+
+    void
+    Slope3D::validate() const
+    {
+      const std::string path = "Geometry/Slope 3D/";
+      for (const auto &[name, value] :
+           {std::make_pair("Slope height", slope_height),
+            std::make_pair("Slope angle", slope_angle),
+            std::make_pair("Base depth", base_depth),
+            std::make_pair("Width", width),
+            std::make_pair("Surface radius", radius),
+            std::make_pair("Surface half length", half_length),
+            std::make_pair("Mesh size", mesh_size)})
+        case_input::require(value > 0, path + name + ": must be positive.");
+      case_input::require(slope_angle < 90,
+                          path + "Slope angle: must be less than 90 degrees.");
+
+      // Points of the surface 1/720 of a turn apart (in the two angles of
+      // the ellipsoid, or around the cylinder's section): the part below
+      // the ground must stay inside the model, with a margin of 1e-3 of
+      // its size so that OpenCASCADE meets no tangent faces.
+      const double margin =
+        1e-3 * (length() + width + base_depth + slope_height);
+      const double       z_base   = toe_elevation - base_depth;
+      const unsigned int n        = 720;
+      const bool         cylinder = surface == Surface::cylinder;
+      bool               below = false, above = false, leaves = false;
+      double             x_low = length(), x_high = 0; // central section
+      for (unsigned int i = 0; i <= (cylinder ? 0 : n / 2); ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const double theta =
+              cylinder ? numbers::PI / 2 : numbers::PI * i / (n / 2);
+            const double   phi = 2 * numbers::PI * j / n;
+            const Point<3> p(centre[0] +
+                               radius * std::sin(theta) * std::cos(phi),
+                             centre[1] + half_length * std::cos(theta),
+                             centre[2] +
+                               radius * std::sin(theta) * std::sin(phi));
+            if (p[2] >= ground(p[0]))
+              {
+                above = true;
+                continue;
+              }
+            below  = true;
+            leaves = leaves || p[0] < margin || p[0] > length() - margin ||
+                     p[2] < z_base + margin ||
+                     (!cylinder && (p[1] < margin || p[1] > width - margin));
+            if (i == n / 4 || cylinder)
+              {
+                x_low  = std::min(x_low, p[0]);
+                x_high = std::max(x_high, p[0]);
+              }
+          }
+      case_input::require(
+        below && above,
+        path + "Surface centre: the sliding surface does not cut the ground "
+               "surface (it must lie partly below and partly above it).");
+      case_input::require(
+        !leaves,
+        path + "Surface centre: the sliding surface leaves the model below "
+               "the ground (it must stay inside 0 < x < L, 0 < y < Width "
+               "and above the base; Surface radius and Surface half length "
+               "too).");
+      case_input::require(
+        x_low < crest_x() && x_high > toe_length,
+        path + "Surface centre: the sliding surface does not daylight on "
+               "the slope face (its central section must cut the ground "
+               "between the toe and the crest edge).");
+      case_input::require(!cylinder || centre[2] > ground(centre[0]),
+                          path + "Surface centre: a cylinder's axis must lie "
+                                 "above the ground.");
+    }
+
+
+
+    MeshDescription<3>
+    make_slope_3d_mesh(const Slope3D &slope)
+    {
+      namespace occ          = gmsh::model::occ;
+      const std::string name = "Geometry/Slope 3D";
+      const std::string unexpected =
+        name + ": OpenCASCADE did not cut the sliding mass out of the slope "
+               "as expected; try a slightly different sliding surface.";
+      const double x_toe = slope.toe_length, x_crest = slope.crest_x();
+      const double x_end = slope.length(), w = slope.width;
+      const double z_toe  = slope.toe_elevation;
+      const double z_top  = z_toe + slope.slope_height;
+      const double z_base = z_toe - slope.base_depth;
+      const double tolerance =
+        1e-7 * (x_end + w + slope.base_depth + slope.slope_height);
+      const Point<3> &c = slope.centre;
+      const double    r = slope.radius;
+
+      GmshSession session;
+      gmsh::model::add("slope 3d");
+      int              mass = 0;
+      std::vector<int> foundation;
+      GmshSession::run(name + ": Gmsh could not build the model", [&]() {
+        // The section in the plane y = 0, extruded along y.
+        std::vector<int> points;
+        for (const auto &[x, z] :
+             std::vector<std::pair<double, double>>{{0, z_base},
+                                                    {x_end, z_base},
+                                                    {x_end, z_top},
+                                                    {x_crest, z_top},
+                                                    {x_toe, z_toe},
+                                                    {0, z_toe}})
+          points.push_back(occ::addPoint(x, 0, z));
+        std::vector<int> lines;
+        for (unsigned int i = 0; i < points.size(); ++i)
+          lines.push_back(
+            occ::addLine(points[i], points[(i + 1) % points.size()]));
+        const int section = occ::addPlaneSurface({occ::addCurveLoop(lines)});
+        gmsh::vectorpair extruded;
+        occ::extrude({{2, section}}, 0, w, 0, extruded);
+        gmsh::vectorpair slope_solid;
+        for (const auto &dim_tag : extruded)
+          if (dim_tag.first == 3)
+            slope_solid.push_back(dim_tag);
+        AssertThrow(slope_solid.size() == 1, ExcMessage(unexpected));
+
+        int inside = 0;
+        if (slope.surface == Slope3D::Surface::cylinder)
+          inside = occ::addCylinder(c[0], -w, c[2], 0, 3 * w, 0, r);
+        else
+          {
+            inside = occ::addSphere(c[0], c[1], c[2], r);
+            if (slope.surface == Slope3D::Surface::ellipsoid)
+              occ::dilate(
+                {{3, inside}}, c[0], c[1], c[2], 1, slope.half_length / r, 1);
+          }
+        gmsh::vectorpair              cut_mass, pieces;
+        std::vector<gmsh::vectorpair> origin;
+        occ::intersect(
+          slope_solid, {{3, inside}}, cut_mass, origin, -1, false, true);
+        AssertThrow(cut_mass.size() == 1, ExcMessage(unexpected));
+        // Fragmenting makes the sliding surface shared by both volumes.
+        occ::fragment(slope_solid, cut_mass, pieces, origin);
+        occ::synchronize();
+        AssertThrow(origin.size() == 2 && origin[1].size() == 1,
+                    ExcMessage(unexpected));
+        mass = origin[1][0].second;
+        for (const auto &piece : pieces)
+          if (piece.first == 3 && piece.second != mass)
+            foundation.push_back(piece.second);
+      });
+      AssertThrow(foundation.size() == 1, ExcMessage(unexpected));
+
+      std::vector<int> sliding_surface;
+      GmshSession::run(name + ": Gmsh could not build the model", [&]() {
+        const auto faces_of = [](const int volume) {
+          gmsh::vectorpair boundary;
+          gmsh::model::getBoundary({{3, volume}}, boundary, false, false);
+          std::vector<int> tags;
+          for (const auto &dim_tag : boundary)
+            tags.push_back(std::abs(dim_tag.second));
+          std::sort(tags.begin(), tags.end());
+          return tags;
+        };
+        const std::vector<int> mass_faces       = faces_of(mass);
+        const std::vector<int> foundation_faces = faces_of(foundation[0]);
+        std::vector<int>       all_faces;
+        std::set_union(mass_faces.begin(),
+                       mass_faces.end(),
+                       foundation_faces.begin(),
+                       foundation_faces.end(),
+                       std::back_inserter(all_faces));
+        std::vector<int> ground, base, sides;
+        for (const int face : all_faces)
+          {
+            const bool of_mass =
+              std::binary_search(mass_faces.begin(), mass_faces.end(), face);
+            const bool of_foundation =
+              std::binary_search(foundation_faces.begin(),
+                                 foundation_faces.end(),
+                                 face);
+            double x0, y0, z0, x1, y1, z1;
+            gmsh::model::getBoundingBox(2, face, x0, y0, z0, x1, y1, z1);
+            const auto at =
+              [&](const double low, const double high, const double value) {
+                return std::abs(low - value) < tolerance &&
+                       std::abs(high - value) < tolerance;
+              };
+            if (of_mass && of_foundation)
+              sliding_surface.push_back(face);
+            else if (at(z0, z1, z_base))
+              base.push_back(face);
+            else if (at(x0, x1, 0) || at(x0, x1, x_end) || at(y0, y1, 0) ||
+                     at(y0, y1, w))
+              sides.push_back(face);
+            else
+              ground.push_back(face);
+          }
+        AssertThrow(!sliding_surface.empty() && !ground.empty() &&
+                      !base.empty() && !sides.empty(),
+                    ExcMessage(unexpected));
+        add_physical_group(3, {mass}, "sliding mass");
+        add_physical_group(3, foundation, "foundation");
+        add_physical_group(2, sliding_surface, "sliding surface");
+        add_physical_group(2, ground, "ground");
+        add_physical_group(2, base, "base");
+        add_physical_group(2, sides, "sides");
+      });
+
+      // Tetrahedra of twice the mesh size within R/4 of the sliding surface,
+      // growing by a quarter of the further distance up to three times
+      // that; each is then split into four hexahedra.
+      const bool hexahedra = slope.element_shape == ElementShape::hypercube;
+      GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
+        namespace field       = gmsh::model::mesh::field;
+        const double near     = (hexahedra ? 2 : 1) * slope.mesh_size;
+        const double far      = 3 * near;
+        const int    distance = field::add("Distance");
+        field::setNumbers(distance,
+                          "SurfacesList",
+                          std::vector<double>(sliding_surface.begin(),
+                                              sliding_surface.end()));
+        field::setNumber(distance, "NumPointsPerCurve", 100);
+        const int threshold = field::add("Threshold");
+        field::setNumber(threshold, "InField", distance);
+        field::setNumber(threshold, "SizeMin", near);
+        field::setNumber(threshold, "SizeMax", far);
+        field::setNumber(threshold, "DistMin", r / 4);
+        field::setNumber(threshold, "DistMax", r / 4 + (far - near) / 0.25);
+        field::setAsBackgroundMesh(threshold);
+        gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+        gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+        gmsh::option::setNumber("Mesh.Algorithm", 6);
+        gmsh::option::setNumber("Mesh.Algorithm3D", 1);
+        gmsh::option::setNumber("Mesh.RecombineAll", 0);
+        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", hexahedra ? 2 : 0);
+        gmsh::model::mesh::generate(3);
+      });
+      return extract_current_gmsh_model<3>(name);
+    }
+  } // namespace geometry
+} // namespace fdem
