@@ -15,7 +15,7 @@ using namespace geometry_test;
 
 namespace
 {
-  /** The entries of prm/slope_3d.prm with another surface. */
+  /** The entries of tests/three_d/slope_3d.prm with another surface. */
   std::string
   slope_entries(const std::string &surface,
                 const std::string &centre,
