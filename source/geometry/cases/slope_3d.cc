@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 
+#include <fdem/geometry/cases/gmsh_3d.h>
 #include <fdem/geometry/cases/slope_3d.h>
 #include <fdem/geometry/gmsh_mesh.h>
 
@@ -387,30 +388,9 @@ namespace fdem
       // that; each is then split into four hexahedra.
       const bool hexahedra = slope.element_shape == ElementShape::hypercube;
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
-        namespace field       = gmsh::model::mesh::field;
-        const double near     = (hexahedra ? 2 : 1) * slope.mesh_size;
-        const double far      = 3 * near;
-        const int    distance = field::add("Distance");
-        field::setNumbers(distance,
-                          "SurfacesList",
-                          std::vector<double>(sliding_surface.begin(),
-                                              sliding_surface.end()));
-        field::setNumber(distance, "NumPointsPerCurve", 100);
-        const int threshold = field::add("Threshold");
-        field::setNumber(threshold, "InField", distance);
-        field::setNumber(threshold, "SizeMin", near);
-        field::setNumber(threshold, "SizeMax", far);
-        field::setNumber(threshold, "DistMin", r / 4);
-        field::setNumber(threshold, "DistMax", r / 4 + (far - near) / 0.25);
-        field::setAsBackgroundMesh(threshold);
-        gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-        gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-        gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-        gmsh::option::setNumber("Mesh.Algorithm", 6);
-        gmsh::option::setNumber("Mesh.Algorithm3D", 1);
-        gmsh::option::setNumber("Mesh.RecombineAll", 0);
-        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", hexahedra ? 2 : 0);
-        gmsh::model::mesh::generate(3);
+        const double near = (hexahedra ? 2 : 1) * slope.mesh_size;
+        gmsh_3d::mesh_near_surfaces(
+          sliding_surface, near, 3 * near, r / 4, hexahedra);
       });
       return extract_current_gmsh_model<3>(name);
     }

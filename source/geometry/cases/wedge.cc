@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 
+#include <fdem/geometry/cases/gmsh_3d.h>
 #include <fdem/geometry/cases/wedge.h>
 #include <fdem/geometry/gmsh_mesh.h>
 
@@ -513,34 +514,9 @@ namespace fdem
       // hexahedra. Tetrahedra that are kept have the mesh size.
       const bool hexahedra = wedge.element_shape == ElementShape::hypercube;
       GmshSession::run(name + ": Gmsh could not mesh the model", [&]() {
-        namespace field       = gmsh::model::mesh::field;
-        const double near     = (hexahedra ? 2 : 1) * wedge.mesh_size;
-        const double far      = 5 * near;
-        const int    distance = field::add("Distance");
-        field::setNumbers(distance,
-                          "SurfacesList",
-                          std::vector<double>(wedge_surfaces.begin(),
-                                              wedge_surfaces.end()));
-        // The faces are sampled by points 1/100 of their size apart.
-        field::setNumber(distance, "NumPointsPerCurve", 100);
-        const int threshold = field::add("Threshold");
-        field::setNumber(threshold, "InField", distance);
-        field::setNumber(threshold, "SizeMin", near);
-        field::setNumber(threshold, "SizeMax", far);
-        field::setNumber(threshold, "DistMin", inradius);
-        field::setNumber(threshold, "DistMax", inradius + (far - near) / 0.25);
-        field::setAsBackgroundMesh(threshold);
-        gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-        gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-        gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-
-        // Delaunay tetrahedra, all split into hexahedra (and the triangles
-        // of the surfaces into quadrilaterals, conformingly), or kept.
-        gmsh::option::setNumber("Mesh.Algorithm", 6);
-        gmsh::option::setNumber("Mesh.Algorithm3D", 1);
-        gmsh::option::setNumber("Mesh.RecombineAll", 0);
-        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", hexahedra ? 2 : 0);
-        gmsh::model::mesh::generate(3);
+        const double near = (hexahedra ? 2 : 1) * wedge.mesh_size;
+        gmsh_3d::mesh_near_surfaces(
+          wedge_surfaces, near, 5 * near, inradius, hexahedra);
       });
       return extract_current_gmsh_model<3>(name);
     }
