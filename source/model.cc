@@ -336,9 +336,27 @@ namespace fdem
 
   template <int dim>
   void
+  Model<dim>::set_bar_links(std::vector<contact::BarLink<dim>> links,
+                            std::vector<contact::PairStrength> capacities,
+                            const bool                         reduced_by_K)
+  {
+    Assert(!mixed_system, ExcMessage("Bars come before the mixed system."));
+    AssertDimension(links.size(), capacities.size());
+    bar_links              = std::move(links);
+    bar_capacities         = std::move(capacities);
+    bar_capacities_reduced = reduced_by_K;
+  }
+
+  template <int dim>
+  void
   Model<dim>::compute_flexibility()
   {
     TimerOutput::Scope scope(timer, "flexibility");
+    AssertThrow(bar_links.empty() ||
+                  parameters.solver.mixed_system != "iterative",
+                ExcMessage("Reinforcement: passive bars need Solver/Mixed "
+                           "system = dense; the iterative solver does not "
+                           "take their rows yet."));
     mixed_system = std::make_unique<contact::MixedSystem<dim>>(
       blocks,
       external_displacements,
@@ -347,7 +365,8 @@ namespace fdem
         contact::MixedSystemSolver::iterative :
         contact::MixedSystemSolver::dense,
       parameters.safety_factor.compute &&
-        parameters.safety_factor.stiffness_check);
+        parameters.safety_factor.stiffness_check,
+      bar_links);
     mixed_system->krylov_control.tolerance = parameters.solver.gmres_tolerance;
   }
 
@@ -429,6 +448,15 @@ namespace fdem
                 shared.area / (p.reduced_by_K ? K : 1.0);
             strength.tensile_force += p.tensile_strength * shared.area;
           }
+      }
+    for (contact::PairStrength bar : bar_capacities)
+      {
+        if (bar_capacities_reduced)
+          {
+            bar.bar_axial_capacity /= K;
+            bar.bar_shear_capacity /= K;
+          }
+        strengths.push_back(bar);
       }
     return strengths;
   }

@@ -265,6 +265,14 @@ def model_picture(folder, summary, prm, interfaces, path):
             colours = [STATUS_COLOURS.get(rows[k]["status"], "k") for k in range(len(rows) - 1)]
             ax.add_collection(LineCollection(segments, colors=colours, linewidths=3))
             ax.annotate(name, (x[0], y[0]), textcoords="offset points", xytext=(4, 6), fontsize=8)
+        reinforcement = summary.get("reinforcement", {})
+        for k, a in enumerate(reinforcement.get("anchors", [])):
+            ax.plot([a["head"][0], a["bond_point"][0]], [a["head"][1], a["bond_point"][1]],
+                    color="#6a3d9a", lw=1.8, label="anchor" if k == 0 else None, zorder=3)
+        for k, b in enumerate(reinforcement.get("passive_bars", {}).get("bars", [])):
+            ax.plot([b["head"][0], b["end"][0]], [b["head"][1], b["end"][1]],
+                    color="#b15928", lw=1.8, ls="-" if b["status"] == "elastic" else "--",
+                    label=("passive bar (dashed: yielded)" if k == 0 else None), zorder=3)
         for status, colour in STATUS_COLOURS.items():
             ax.plot([], [], color=colour, lw=3, label=status)
         ax.autoscale()
@@ -508,6 +516,39 @@ def probabilistic_section(folder, summary):
             "count as failures; every sample is in samples.csv.</p>")
 
 
+def reinforcement_section(summary):
+    """The anchors' and passive bars' forces (summary.json's
+    "reinforcement"), or "" without any."""
+    r = summary.get("reinforcement")
+    if not r:
+        return ""
+    out = ["<h2>Reinforcement</h2>"]
+    if r.get("anchors"):
+        out.append(f"<p>Active anchors ({html.escape(r['convention'])}), in the state at "
+                   f"K = {number(r['K_of_state'], 8)}; anchors.csv has the same.</p>")
+        out.append(table([(k + 1, html.escape(a["interface"]), number(a["force"]),
+                           number(a["normal_force"]), number(a["shear_force"]),
+                           number(a["applied_shear_force"]))
+                          for k, a in enumerate(r["anchors"])],
+                         ["anchor", "surface crossed", "T", "normal part", "shear part",
+                          "shear applied"]))
+    bars = r.get("passive_bars")
+    if bars:
+        out.append(f"<p>Passive bars (capacities {'reduced' if bars['capacity_reduced_by_K'] else 'not reduced'} "
+                   f"by K), in the state at K = {number(bars['K_of_state'], 8)}: axial force N "
+                   "(tension positive) against the capacity applied; bars.csv has the same.</p>")
+        out.append(table([(k + 1, html.escape(b["interface"]), number(b["tensile_capacity"]),
+                           number(b["pullout_in_mass"]), number(b["pullout_in_ground"]),
+                           number(b["applied_axial_capacity"]), number(b["axial_force"]),
+                           number(b["axial_utilisation"], 4), number(b["shear_force"]),
+                           html.escape(b["status"]))
+                          for k, b in enumerate(bars["bars"])],
+                         ["bar", "surface crossed", "steel capacity", "pull-out in the mass",
+                          "pull-out in the ground", "capacity applied", "N", "N / capacity", "shear",
+                          "status"]))
+    return "\n".join(out)
+
+
 # --------------------------------------------------------------------------
 # The page.
 
@@ -683,6 +724,9 @@ stresses in force per length squared.</p>
                        "max normal stress", "total normal force", "total tangential force"]))
     for name, alt in pictures:
         page.append(f"<h2>{html.escape(alt)}</h2>\n<p>{image(os.path.join(folder, name), alt)}</p>")
+    reinforcement = reinforcement_section(summary)
+    if reinforcement:
+        page.append(reinforcement)
     seismic = seismic_section(folder, summary)
     if seismic:
         page.append(seismic)

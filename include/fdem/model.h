@@ -71,6 +71,25 @@ namespace fdem
     /** Node pairs of every interface, with frames, areas and gaps. */
     void
     build_interfaces();
+    /**
+     * The links of the passive reinforcement bars (analyses/bars.h), after
+     * build_interfaces() and before compute_flexibility(), which makes them
+     * pairs of the mixed system: @p links, their capacities at full
+     * strength @p capacities (PairStrength's bar capacities), and whether
+     * K divides those (@p reduced_by_K).
+     */
+    void
+    set_bar_links(std::vector<contact::BarLink<dim>> links,
+                  std::vector<contact::PairStrength> capacities,
+                  const bool                         reduced_by_K);
+
+    /** The passive bars' links (set_bar_links()). */
+    const std::vector<contact::BarLink<dim>> &
+    get_bar_links() const
+    {
+      return bar_links;
+    }
+
     /** C = C_I + C_J, g_bar, W and omega^T F (eqs. 4-8), computed once. */
     void
     compute_flexibility();
@@ -182,7 +201,8 @@ namespace fdem
 
     /**
      * Pair strengths of all interfaces; on the sliding surfaces c and
-     * tan(phi) are divided by @p K (eq. 10).
+     * tan(phi) are divided by @p K (eq. 10). The passive bars' links
+     * follow, with their capacities (divided by K if the bars' are).
      */
     std::vector<contact::PairStrength>
     pair_strengths(const double K) const;
@@ -472,6 +492,11 @@ namespace fdem
      */
     std::vector<std::map<types::global_dof_index, blocks::SoilStrength>>
       soil_strengths;
+    /** The passive bars' links, their capacities at full strength, and
+     * whether K divides them (set_bar_links()). */
+    std::vector<contact::BarLink<dim>> bar_links;
+    std::vector<contact::PairStrength> bar_capacities;
+    bool                               bar_capacities_reduced = false;
     /** The loads that depend on K (set_strength_dependent_loads()). */
     std::function<void(double K)>              strength_dependent_loads;
     std::vector<Vector<double>>                external_displacements;

@@ -1,13 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/anchors.h>
-#include <fdem/geometry/make_mesh.h>
-
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/grid/grid_tools_cache.h>
+#include <fdem/analyses/reinforcement_geometry.h>
 
 #include <cmath>
 #include <filesystem>
@@ -27,129 +21,6 @@ namespace fdem
       anchor_name(const unsigned int k)
       {
         return "Reinforcement: anchor " + std::to_string(k + 1);
-      }
-
-      template <int dim>
-      std::string
-      text(const Point<dim> &p)
-      {
-        std::ostringstream out;
-        out << std::setprecision(6) << "(" << p << ")";
-        return out.str();
-      }
-
-      /** The point as the mesh has it: x -> R (s x) + t
-       * (geometry::apply_transformation()). */
-      template <int dim>
-      Point<dim>
-      transformed(const parameters::GeometryParameters &geometry,
-                  const std::vector<double>            &xyz,
-                  const std::string                    &what)
-      {
-        AssertThrow(xyz.size() == dim,
-                    ExcMessage(what + " has " + std::to_string(xyz.size()) +
-                               " coordinates; this " + std::to_string(dim) +
-                               "D model needs " + std::to_string(dim) + "."));
-        Point<dim> x;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[d] = xyz[d];
-        return geometry::transformed_point(geometry, x);
-      }
-
-      /** Finds points in the blocks' cells (a deal.II cache per block). */
-      template <int dim>
-      class PointLocator
-      {
-      public:
-        explicit PointLocator(const Model<dim> &model)
-          : model(model)
-        {
-          for (const auto &block : model.get_blocks())
-            caches.push_back(
-              std::make_unique<GridTools::Cache<dim>>(block->triangulation,
-                                                      block->mapping));
-        }
-
-        /** The cell of block @p b around @p p and p's reference coordinates; an
-         * invalid iterator if none. */
-        std::pair<typename Triangulation<dim>::active_cell_iterator, Point<dim>>
-        find(const unsigned int b, const Point<dim> &p) const
-        {
-          try
-            {
-              const auto found =
-                GridTools::find_active_cell_around_point(*caches[b], p);
-              if (found.first.state() == IteratorState::valid &&
-                  found.first != model.get_blocks()[b]->triangulation.end())
-                return found;
-            }
-          catch (...)
-            {
-              // Not in this block.
-            }
-          return {typename Triangulation<dim>::active_cell_iterator(),
-                  Point<dim>()};
-        }
-
-        bool
-        inside(const unsigned int b, const Point<dim> &p) const
-        {
-          return find(b, p).first.state() == IteratorState::valid;
-        }
-
-        /** The first block holding @p p, or invalid_unsigned_int. */
-        unsigned int
-        block_of(const Point<dim> &p) const
-        {
-          for (unsigned int b = 0; b < caches.size(); ++b)
-            if (inside(b, p))
-              return b;
-          return numbers::invalid_unsigned_int;
-        }
-
-        /** Adds the point force @p force at @p p to the nodal forces @p load of
-         * block @p b (shape functions). */
-        void
-        add_point_force(const unsigned int    b,
-                        const Point<dim>     &p,
-                        const Tensor<1, dim> &force,
-                        Vector<double>       &load) const
-        {
-          const auto &block = *model.get_blocks()[b];
-          const auto  found = find(b, p);
-          Assert(found.first.state() == IteratorState::valid,
-                 ExcInternalError());
-          const typename DoFHandler<dim>::active_cell_iterator cell(
-            &block.triangulation,
-            found.first->level(),
-            found.first->index(),
-            &block.dof_handler);
-          FEValues<dim> fe_values(block.mapping,
-                                  block.fe,
-                                  Quadrature<dim>(
-                                    std::vector<Point<dim>>{found.second}),
-                                  update_values);
-          fe_values.reinit(cell);
-          std::vector<types::global_dof_index> dofs(block.fe.n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          const FEValuesExtractors::Vector displacement(0);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            load[dofs[i]] += fe_values[displacement].value(i, 0) * force;
-        }
-
-      private:
-        const Model<dim>                                   &model;
-        std::vector<std::unique_ptr<GridTools::Cache<dim>>> caches;
-      };
-
-      template <int dim>
-      std::vector<double>
-      coordinates(const Point<dim> &p)
-      {
-        std::vector<double> x;
-        for (unsigned int d = 0; d < dim; ++d)
-          x.push_back(p[d]);
-        return x;
       }
 
       /** How the anchors' force enters, as the screen and summary.json say. */
@@ -173,24 +44,23 @@ namespace fdem
         {
           const std::string name = anchor_name(k);
           Anchor<dim>       a;
-          a.force      = given.forces[k];
-          a.head       = transformed<dim>(model.get_parameters().geometry,
-                                    given.heads[k],
-                                    name + ": its head");
-          a.bond       = transformed<dim>(model.get_parameters().geometry,
-                                    given.bond_points[k],
-                                    name + ": its bond point");
+          a.force = given.forces[k];
+          a.head =
+            transformed_input_point(model, given.heads[k], name + ": its head");
+          a.bond       = transformed_input_point(model,
+                                           given.bond_points[k],
+                                           name + ": its bond point");
           a.head_block = locator.block_of(a.head);
           AssertThrow(
             a.head_block != numbers::invalid_unsigned_int,
             ExcMessage(
-              name + ": its head " + text(a.head) +
+              name + ": its head " + point_text(a.head) +
               " lies in no block of the mesh; give Reinforcement/Anchor "
               "heads on the sliding mass."));
           AssertThrow(
             model.get_blocks()[a.head_block]->n_free_rigid_modes() > 0,
             ExcMessage(
-              name + ": its head " + text(a.head) + " lies in block '" +
+              name + ": its head " + point_text(a.head) + " lies in block '" +
               model.get_blocks()[a.head_block]->name +
               "', which is supported and cannot slide; the head must be "
               "on the sliding mass (a block without supports)."));
@@ -204,7 +74,7 @@ namespace fdem
           AssertThrow(a.bond_block != numbers::invalid_unsigned_int &&
                         !locator.inside(a.head_block, a.bond),
                       ExcMessage(
-                        name + ": its bond point " + text(a.bond) +
+                        name + ": its bond point " + point_text(a.bond) +
                         (locator.inside(a.head_block, a.bond) ?
                            " lies in the head's block '" +
                              model.get_blocks()[a.head_block]->name + "'" :
@@ -212,59 +82,14 @@ namespace fdem
                         "; give Reinforcement/Anchor bond points in the stable "
                         "ground beyond the sliding surface."));
           a.direction = (a.bond - a.head) / (a.bond - a.head).norm();
-
-          // Where the straight anchor leaves the head's block: bisection on
-          // the segment between the head (inside) and the bond point (not).
-          double lo = 0, hi = 1;
-          for (unsigned int i = 0; i < 60; ++i)
-            {
-              const double mid = 0.5 * (lo + hi);
-              (locator.inside(a.head_block, a.head + mid * (a.bond - a.head)) ?
-                 lo :
-                 hi)           = mid;
-            }
-          a.crossing = a.head + lo * (a.bond - a.head);
-
-          // The nearest node pair of a sliding surface on the head's block,
-          // within the size of the cell there.
-          const auto cell = locator.find(a.head_block, a.crossing).first;
-          Assert(cell.state() == IteratorState::valid, ExcInternalError());
-          const double reach   = cell->diameter();
-          double       nearest = std::numeric_limits<double>::infinity();
-          for (const auto &interface : model.get_interfaces())
-            if (model.get_parameters()
-                  .interfaces.at(interface.name)
-                  .sliding_surface &&
-                (interface.block_I == a.head_block ||
-                 interface.block_J == a.head_block))
-              for (const auto &pair : interface.pairs)
-                {
-                  const double distance =
-                    std::min(a.crossing.distance(pair.position_I),
-                             a.crossing.distance(pair.position_J));
-                  if (distance < nearest)
-                    {
-                      nearest     = distance;
-                      a.normal    = pair.frame[0];
-                      a.interface = interface.name;
-                    }
-                }
-          AssertThrow(
-            nearest <= reach,
-            ExcMessage(
-              name + " does not cross a sliding surface: it leaves block '" +
-              model.get_blocks()[a.head_block]->name + "' at " +
-              text(a.crossing) +
-              ", where no interface with 'Sliding surface = true' is."));
-          if (a.normal * a.direction < 0)
-            a.normal = -a.normal;
+          const SurfaceCrossing<dim> crossing = find_surface_crossing(
+            model, locator, a.head_block, a.head, a.bond, name);
+          a.crossing     = crossing.point;
+          a.normal       = crossing.normal;
+          a.interface    = crossing.interface_name;
           a.normal_force = a.force * (a.normal * a.direction);
           a.shear_force =
             (a.force * a.direction - a.normal_force * a.normal).norm();
-          AssertThrow(a.normal * a.direction > 1e-6,
-                      ExcMessage(name + " runs along the sliding surface '" +
-                                 a.interface + "' at " + text(a.crossing) +
-                                 " instead of crossing it."));
           anchors.push_back(a);
         }
       return anchors;
@@ -337,13 +162,13 @@ namespace fdem
         {
           const Anchor<dim> &a = anchors[k];
           model.log << "  anchor " << k + 1 << ": T = " << a.force << " from "
-                    << text(a.head) << " in '"
+                    << point_text(a.head) << " in '"
                     << model.get_blocks()[a.head_block]->name << "' to "
-                    << text(a.bond) << " in '"
+                    << point_text(a.bond) << " in '"
                     << model.get_blocks()[a.bond_block]->name << "', across '"
-                    << a.interface << "' at " << text(a.crossing) << ": normal "
-                    << a.normal_force << ", shear " << a.shear_force
-                    << std::endl;
+                    << a.interface << "' at " << point_text(a.crossing)
+                    << ": normal " << a.normal_force << ", shear "
+                    << a.shear_force << std::endl;
         }
       return anchors;
     }
@@ -408,16 +233,34 @@ namespace fdem
       if (!summary.contains("reinforcement") ||
           !summary["reinforcement"].is_object())
         return lines;
-      const nlohmann::json &r     = summary["reinforcement"];
-      double                total = 0;
-      for (const auto &a : r["anchors"])
-        total += a["force"].get<double>();
-      std::ostringstream line;
-      line << r["anchors"].size()
-           << (r["anchors"].size() == 1 ? " anchor" : " anchors")
-           << ", total force " << std::setprecision(6) << total << " ("
-           << r["convention"].get<std::string>() << "; anchors.csv)";
-      lines.push_back({"Anchors", line.str()});
+      const nlohmann::json &r = summary["reinforcement"];
+      if (r.contains("anchors"))
+        {
+          double total = 0;
+          for (const auto &a : r["anchors"])
+            total += a["force"].get<double>();
+          std::ostringstream line;
+          line << r["anchors"].size()
+               << (r["anchors"].size() == 1 ? " anchor" : " anchors")
+               << ", total force " << std::setprecision(6) << total << " ("
+               << r["convention"].get<std::string>() << "; anchors.csv)";
+          lines.push_back({"Anchors", line.str()});
+        }
+      if (r.contains("passive_bars"))
+        {
+          const nlohmann::json &bars      = r["passive_bars"]["bars"];
+          unsigned int          n_yielded = 0;
+          for (const auto &b : bars)
+            n_yielded += b["status"] == "yielded";
+          std::ostringstream line;
+          line << bars.size() << (bars.size() == 1 ? " bar, " : " bars, ")
+               << n_yielded << " yielded (capacities "
+               << (r["passive_bars"]["capacity_reduced_by_K"].get<bool>() ?
+                     "reduced by K" :
+                     "not reduced by K")
+               << "; bars.csv)";
+          lines.push_back({"Passive bars", line.str()});
+        }
       return lines;
     }
 

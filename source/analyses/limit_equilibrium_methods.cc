@@ -291,24 +291,34 @@ namespace fdem
           // The anchors' parts along the bases (if reduced by K) apart:
           // K = (R - D_S / K) / D gives K = (R - D_S) / D (their part of R
           // is nil: they are along the base).
+          // Passive bars reduced by K (Rx, Ry) add R_R / K to the resisting
+          // side and D_R / K to the driving one: K D = R - D_S - D_R +
+          // R_R / K, a quadratic in K.
           double     resisting = 0, driving = 0, driving_reduced = 0;
-          const bool reduced = mass.anchors_reduced;
+          double     resisting_bars = 0;
+          const bool reduced        = mass.anchors_reduced;
           for (unsigned int i = 0; i < mass.slices.size(); ++i)
             {
               const Slice &s  = mass.slices[i];
               const double sa = s.sin_alpha, ca = s.cos_alpha;
               // The seismic force Q pushes left like the crack's water, and
               // the anchors' force (Fx, Fy) pulls.
-              const double Fx = reduced ? s.Nx : s.Nx + s.Sx;
-              const double Fy = reduced ? s.Ny : s.Ny + s.Sy;
+              const double Fx = (reduced ? s.Nx : s.Nx + s.Sx) + s.Fx;
+              const double Fy = (reduced ? s.Ny : s.Ny + s.Sy) + s.Fy;
               const double P = crack_on(mass, i) + s.Q - Fx, W = s.W - s.V - Fy;
               resisting += s.c * s.l + (W * ca - s.U - P * sa) * s.tan_phi;
               driving += W * sa + P * ca;
               if (reduced)
                 driving_reduced += -s.Sy * sa - s.Sx * ca;
+              driving_reduced += -s.Ry * sa - s.Rx * ca;
+              resisting_bars += (-s.Ry * ca + s.Rx * sa) * s.tan_phi;
             }
           MethodResult result;
-          result.K = (resisting - driving_reduced) / driving;
+          const double b = resisting - driving_reduced;
+          result.K       = resisting_bars == 0 ?
+                             b / driving :
+                             (b + std::sqrt(b * b + 4 * driving * resisting_bars)) /
+                         (2 * driving);
           return result;
         }
 

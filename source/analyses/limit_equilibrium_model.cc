@@ -155,7 +155,27 @@ namespace fdem
             {Point<2>(p.anchors.heads[k][0], p.anchors.heads[k][1]),
              Point<2>(p.anchors.bond_points[k][0], p.anchors.bond_points[k][1]),
              p.anchors.forces[k]});
-      if (!section.anchors.empty())
+      for (unsigned int k = 0; k < p.anchors.n_bars(); ++k)
+        if (p.anchors.bar_heads[k].size() == 2 &&
+            p.anchors.bar_ends[k].size() == 2)
+          {
+            le::Anchor bar;
+            bar.head =
+              Point<2>(p.anchors.bar_heads[k][0], p.anchors.bar_heads[k][1]);
+            bar.bond =
+              Point<2>(p.anchors.bar_ends[k][0], p.anchors.bar_ends[k][1]);
+            bar.force          = p.anchors.bar_tensile_capacities[k];
+            bar.passive_bar    = true;
+            bar.reduced        = p.anchors.bar_capacity_reduced_by_K;
+            bar.pullout        = p.anchors.bar_pullout_resistances[k];
+            bar.shear_capacity = p.anchors.bar_shear_capacities[k];
+            section.anchors.push_back(bar);
+          }
+      if (p.anchors.n_bars() > 0)
+        notes.push_back(
+          "the passive bars act at their capacities at the base of the slice where each "
+          "crosses the sliding surface (in the FE model where they have yielded)");
+      if (p.anchors.n_anchors() > 0)
         notes.push_back(
           "the anchors act on the base of the slice where each crosses the sliding surface "
           "(in the FE model at their heads: the same line of action)");

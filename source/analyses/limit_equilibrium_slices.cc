@@ -547,8 +547,28 @@ namespace fdem
             while (i + 1 < slices.size() && c[0] > x[i + 1])
               ++i;
             Slice             &s = slices[i];
-            const Tensor<1, 2> F =
-              a.force * (bond - head) / (bond - head).norm();
+            const Tensor<1, 2> d = (bond - head) / (bond - head).norm();
+            if (a.passive_bar)
+              {
+                // At its capacity: the steel, or the bond on either side;
+                // a pile's shear across the bar, against the slide (to +x
+                // here, where the mass moves to -x).
+                double N_y = a.force;
+                if (a.pullout > 0)
+                  N_y = std::min({N_y,
+                                  a.pullout * head.distance(c),
+                                  a.pullout * bond.distance(c)});
+                Tensor<1, 2> across({-d[1], d[0]});
+                if (across[0] < 0 || (across[0] == 0 && across[1] < 0))
+                  across = -across;
+                const Tensor<1, 2> F = N_y * d + a.shear_capacity * across;
+                const double       M = c[0] * F[1] - c[1] * F[0];
+                (a.reduced ? s.Rx : s.Fx) += F[0];
+                (a.reduced ? s.Ry : s.Fy) += F[1];
+                (a.reduced ? s.Mr : s.Mf) += M;
+                continue;
+              }
+            const Tensor<1, 2> F = a.force * d;
             const Tensor<1, 2> n({-s.sin_alpha, s.cos_alpha});
             const Tensor<1, 2> N = (F * n) * n, S = F - N;
             s.Nx += N[0];

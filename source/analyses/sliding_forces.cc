@@ -40,11 +40,48 @@ namespace fdem
           s.resisting_force += reduced_strengths[p].shear_capacity(
             outcome.solution.forces[dim * p]);
         }
+      // A passive bar resists along the surface where it crosses it: its
+      // force's part along the surface is in F_tau with the pairs', and the
+      // same part of the force at which it yields (its capacity as the
+      // solve had it, reduced by K or not) in F_R. While the bar is
+      // elastic, F_R > F_tau and K* > K; at the fixed point it has yielded
+      // (doc/theory.md, "Passive bars").
+      bool an_elastic_bar = false;
+      if (s.converged)
+        for (unsigned int p = system.n_contact_pairs(); p < system.n_pairs();
+             ++p)
+          {
+            an_elastic_bar |=
+              outcome.states[p].status == contact::PairStatus::stick;
+            const contact::BarLink<dim> &bar = system.bar(p);
+            dealii::Tensor<1, dim>       local;
+            for (unsigned int i = 0; i < dim; ++i)
+              local[i] = outcome.solution.forces[dim * p + i];
+            const dealii::Tensor<1, dim> force =
+              dealii::transpose(bar.link.frame) * local;
+            const dealii::Tensor<1, dim> n = bar.surface_frame[0];
+            sum_f_t += bar.surface_frame[1] * force;
+            sum_tangential += force - (force * n) * n;
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                const dealii::Tensor<1, dim> axis = bar.link.frame[i];
+                const double                 capacity =
+                  i == 0 ? reduced_strengths[p].bar_axial_capacity :
+                                           (bar.shear_stiffness > 0 ?
+                                              reduced_strengths[p].bar_shear_capacity :
+                                              0.0);
+                s.resisting_force += capacity * (axis - (axis * n) * n).norm();
+              }
+          }
       s.sliding_force = dim == 2 ? std::abs(sum_f_t) : sum_tangential.norm();
       // The slip rows fix each |f_t| at its reduced strength exactly, so
       // F_tau = F_R holds to round-off of the solve (1e-13 measured);
       // 1e-10 leaves room and is far below any Safety factor/Tolerance.
+      // A bar still elastic has strength left (F_R - F_tau is its unused
+      // capacity, computed to round-off of its force): not degenerate,
+      // however close to yield.
       s.degenerate = s.converged && s.n_stick == 0 && s.n_slip > 0 &&
+                     !an_elastic_bar &&
                      s.sliding_force >= (1 - 1e-10) * s.resisting_force;
       return s;
     }

@@ -17,9 +17,11 @@ namespace fdem
       const std::vector<Vector<double>> &external_displacements,
       const std::vector<Interface<dim>> &interfaces,
       const MixedSystemSolver            solver,
-      const bool                         keep_moving_part)
+      const bool                         keep_moving_part,
+      const std::vector<BarLink<dim>>   &bars)
       : blocks(blocks)
       , solver_type(solver)
+      , bar_links(bars)
     {
       for (const Interface<dim> &interface : interfaces)
         for (const NodePair<dim> &pair : interface.pairs)
@@ -28,6 +30,14 @@ namespace fdem
             pair_block_I.push_back(interface.block_I);
             pair_block_J.push_back(interface.block_J);
           }
+      // A bar's link is a pair of the same two nodes as a contact pair, in
+      // its own frame: C, g_bar and W follow for it as for any pair.
+      for (const BarLink<dim> &bar : bar_links)
+        {
+          pairs.push_back(&bar.link);
+          pair_block_I.push_back(bar.block_I);
+          pair_block_J.push_back(bar.block_J);
+        }
       const unsigned int n_forces = dim * pairs.size();
 
       unsigned int n_rigid = 0;
@@ -443,10 +453,11 @@ namespace fdem
       Assert(strengths.size() == pairs.size(), ExcInternalError());
       std::vector<PairRows<dim>> rows(pairs.size());
       for (unsigned int p = 0; p < pairs.size(); ++p)
-        rows[p] = pair_rows(states[p],
-                            strengths[p],
-                            self_flexibility[p],
-                            held_flexibility);
+        rows[p] = is_bar(p) ? bar_rows(states[p], strengths[p], bar(p)) :
+                              pair_rows(states[p],
+                                        strengths[p],
+                                        self_flexibility[p],
+                                        held_flexibility);
       // Whether the free modes can be held at all is a question of
       // mechanics, answered on the small dimensionless rigid-mode system
       // before any factorisation: a mechanism is never left to the

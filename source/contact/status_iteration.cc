@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/contact/bar_link.h>
 #include <fdem/contact/status_iteration.h>
 
 #include <algorithm>
@@ -71,7 +72,8 @@ namespace fdem
       changed(const PairState<dim> &next, const PairState<dim> &previous)
       {
         if (next.status != previous.status ||
-            next.at_cutoff != previous.at_cutoff)
+            next.at_cutoff != previous.at_cutoff ||
+            next.yield_sign != previous.yield_sign)
           return true;
         if (next.status != PairStatus::slip)
           return false;
@@ -93,6 +95,7 @@ namespace fdem
       {
         for (unsigned int p = 0; p < a.size(); ++p)
           if (a[p].status != b[p].status || a[p].at_cutoff != b[p].at_cutoff ||
+              a[p].yield_sign != b[p].yield_sign ||
               (dim == 2 && a[p].slip_direction != b[p].slip_direction))
             return false;
         return true;
@@ -164,6 +167,8 @@ namespace fdem
       for (unsigned int p = 0; p < states.size(); ++p)
         {
           states[p].slip_direction[0] = 1;
+          if (system.is_bar(p))
+            continue; // elastic
           if (system.pair(p).initial_gap > 0)
             states[p].status = PairStatus::open;
           else if (strengths[p].shear_capacity(0) <= 0 &&
@@ -385,8 +390,25 @@ namespace fdem
         {
           PairState<dim>     &state    = next[p];
           const PairStrength &strength = strengths[p];
-          const double        f_n      = f[dim * p];
-          const double        g_n      = g[dim * p];
+          if (system.is_bar(p))
+            {
+              Tensor<1, dim> f_p, g_p;
+              for (unsigned int i = 0; i < dim; ++i)
+                {
+                  f_p[i] = f[dim * p + i];
+                  g_p[i] = g[dim * p + i];
+                }
+              state = next_bar_state(states[p],
+                                     strength,
+                                     system.bar(p),
+                                     f_p,
+                                     g_p,
+                                     tolerances.force,
+                                     frozen[p].slipping);
+              continue;
+            }
+          const double f_n = f[dim * p];
+          const double g_n = g[dim * p];
           switch (state.status)
             {
               case PairStatus::stick:
@@ -507,7 +529,7 @@ namespace fdem
       const Vector<double> &g     = solution.relative_displacements;
       double                angle = 0;
       for (unsigned int p = 0; p < n_pairs; ++p)
-        if (states[p].status == PairStatus::slip &&
+        if (states[p].status == PairStatus::slip && !system.is_bar(p) &&
             tangential_norm<dim>(g, p) > gap_tolerance)
           angle = std::max(angle,
                            tangential_angle<dim>(states[p].slip_direction,
@@ -536,6 +558,33 @@ namespace fdem
               was_closed |= s != PairStatus::open;
               was_stick |= s == PairStatus::stick;
               was_slip |= s == PairStatus::slip;
+            }
+          if (system.is_bar(p))
+            {
+              // A bar's component that went elastic and yielded within the
+              // cycle stays yielded, at the sign of its force now.
+              bool held = false;
+              for (unsigned int i = 0; i < dim; ++i)
+                {
+                  bool was_elastic = false, was_yielded = false;
+                  for (auto h = seen; h != history.end(); ++h)
+                    {
+                      was_elastic |= (*h)[p].yield_sign[i] == 0;
+                      was_yielded |= (*h)[p].yield_sign[i] != 0;
+                    }
+                  if (was_elastic && was_yielded && !frozen[p].slipping)
+                    {
+                      next[p].yield_sign[i] = forces[dim * p + i] > 0 ? 1 : -1;
+                      next[p].status        = PairStatus::slip;
+                      held                  = true;
+                    }
+                }
+              if (held)
+                {
+                  frozen[p].slipping = true;
+                  ++n_frozen;
+                }
+              continue;
             }
           if (was_open && was_closed && !frozen[p].at_cutoff)
             {

@@ -66,6 +66,9 @@ namespace fdem
     model.assemble_and_factorize();
     model.progress("node pairs of the interfaces");
     model.build_interfaces();
+    // Passive bars are pairs of the mixed system of their own: placed
+    // before C is made.
+    bars = analyses::place_bars(model);
     model.progress("flexibility C of " + std::to_string(model.n_pairs()) +
                    " node pairs");
     model.compute_flexibility();
@@ -224,6 +227,9 @@ namespace fdem
     if (!anchors.empty())
       summary_json["reinforcement"] =
         analyses::reinforcement_output(model, anchors);
+    if (!bars.empty())
+      summary_json["reinforcement"]["passive_bars"] =
+        analyses::bars_output(model, bars);
     if (!analysis_results.probabilistic.is_null())
       summary_json["probabilistic"] = analysis_results.probabilistic;
     // The only entries that differ between two runs of the same input.

@@ -148,6 +148,25 @@ CASES = {
 # slope's line): the layered slope's entries.
 CASES["perched_water_slope"] = {**CASES["layered_slope"], "prm": "perched_water_slope.prm"}
 
+# The paper's slope with three rows of soil nails: their capacities are
+# forces per unit width (F / L), the bond a force per length per width and
+# the stiffness a force per displacement per width (both F / L^2); a common
+# Young's modulus scales the nails' stiffness with the soil's (relative to
+# the slope's 1e4 kPa), so that every stiffness ratio stays.
+def nail_lines(capacity, pullout, stiffness):
+    return ["subsection Reinforcement",
+            f"  set Bar tensile capacities = {', '.join([num(capacity)] * 3)}",
+            f"  set Bar pull-out resistances = {', '.join([num(pullout)] * 3)}",
+            f"  set Bar axial stiffnesses = {', '.join([num(stiffness)] * 3)}",
+            "end"]
+
+
+CASES["nailed_slope"] = {
+    **CASES["paper_slope"], "prm": "nailed_slope.prm",
+    "extra": lambda F, L: nail_lines(137 * F / L, 21 * F / L**2, 33000 * F / L**2),
+    "modulus_extra": lambda factor: nail_lines(137, 21, 33000 * factor),
+    "reference_modulus": 1.0e4}
+
 
 def write(case, variant, lines, description):
     data = CASES[case]
@@ -207,6 +226,8 @@ def modulus_lines(case, E):
             modulus = num(values[0] * float(E) / reference)
             lines += [f"  subsection {name}", f"    set Young's modulus = {modulus}", "  end"]
         lines.append("end")
+    if CASES[case].get("modulus_extra"):
+        lines += CASES[case]["modulus_extra"](float(E) / CASES[case]["reference_modulus"])
     return lines
 
 

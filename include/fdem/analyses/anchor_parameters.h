@@ -44,6 +44,29 @@ namespace fdem
        * load (method A, "active").
        */
       bool reduced_by_K = false;
+
+      /** Number of passive bars. */
+      unsigned int
+      n_bars() const
+      {
+        return bar_tensile_capacities.size();
+      }
+      /**
+       * Passive bars, nails and piles (doc/theory.md, "Passive bars"): each
+       * bar's head (on the sliding mass) and end (in the stable ground), 2 or
+       * 3 coordinates as given.
+       */
+      std::vector<std::vector<double>> bar_heads, bar_ends;
+      /** The bar's tensile (and compressive) strength as a force (> 0). */
+      std::vector<double> bar_tensile_capacities;
+      /** The pull-out resistance per unit length of bar (>= 0; 0: none). */
+      std::vector<double> bar_pullout_resistances;
+      /** The axial stiffness across the surface, force per length (> 0). */
+      std::vector<double> bar_axial_stiffnesses;
+      /** The shear capacity and stiffness of a pile (0: a bar or nail). */
+      std::vector<double> bar_shear_capacities, bar_shear_stiffnesses;
+      /** Whether K divides the bars' capacities like c and tan(phi). */
+      bool bar_capacity_reduced_by_K = false;
     };
   } // namespace analyses
 } // namespace fdem

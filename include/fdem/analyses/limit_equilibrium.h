@@ -55,6 +55,16 @@ namespace fdem
       {
         Point<2> head, bond;
         double   force = 0;
+        /**
+         * A passive bar (analyses/bars.h) at its capacity instead: force is
+         * its tensile capacity, limited where it crosses by @p pullout
+         * (per unit length, 0: none) times its length on either side, with
+         * a pile's @p shear_capacity across it (resisting the slide), and
+         * all of it divided by K if @p reduced (the anchors' convention
+         * does not apply to it).
+         */
+        bool   passive_bar = false, reduced = false;
+        double pullout = 0, shear_capacity = 0;
       };
 
       /**
@@ -191,18 +201,24 @@ namespace fdem
          * y F_x at the crossing).
          */
         double Nx = 0, Ny = 0, Sx = 0, Sy = 0, Mn = 0, Ms = 0;
+        /**
+         * The passive bars crossing it at their capacities: the forces K
+         * does not reduce (Fx, Fy, their moment Mf about the origin) and
+         * those it divides (Rx, Ry, Mr).
+         */
+        double Fx = 0, Fy = 0, Mf = 0, Rx = 0, Ry = 0, Mr = 0;
 
-        /** The anchors' force on the slice at K: the part along the base
-         * divided by K if @p reduced. */
+        /** The anchors' and bars' force on the slice at K: the anchors' part
+         * along the base divided by K if @p reduced. */
         double
         anchor_x(const double K, const bool reduced) const
         {
-          return Nx + (reduced ? Sx / K : Sx);
+          return Nx + (reduced ? Sx / K : Sx) + Fx + Rx / K;
         }
         double
         anchor_y(const double K, const bool reduced) const
         {
-          return Ny + (reduced ? Sy / K : Sy);
+          return Ny + (reduced ? Sy / K : Sy) + Fy + Ry / K;
         }
         /** Their moment about the point @p c at K. */
         double
@@ -211,7 +227,7 @@ namespace fdem
                       const Point<2> &c) const
         {
           const double scale = reduced ? 1 / K : 1.;
-          return Mn + scale * Ms -
+          return Mn + scale * Ms + Mf + Mr / K -
                  (c[0] * anchor_y(K, reduced) - c[1] * anchor_x(K, reduced));
         }
       };

@@ -35,6 +35,13 @@ namespace fdem
       double cohesion_force = 0;
       /** sigma_t A (force, >= 0). */
       double tensile_force = 0;
+      /**
+       * A reinforcement bar's link (contact/bar_link.h) only: the axial
+       * force N_y and the shear force V_y at which the bar yields, as the
+       * current K reduces them (forces, per unit width in 2D). Contact
+       * pairs leave them 0.
+       */
+      double bar_axial_capacity = 0, bar_shear_capacity = 0;
 
       /** Shear capacity c A - mu f_n at the normal force @p f_n. */
       double
@@ -65,6 +72,13 @@ namespace fdem
       std::array<double, dim - 1> slip_direction{};
       bool                        at_cutoff        = false;
       double                      direction_weight = 0;
+      /**
+       * A reinforcement bar's link only (contact/bar_link.h): per component
+       * of its frame (axial first), 0 while elastic, +1 or -1 when yielded
+       * at plus or minus its capacity. Its status is then stick while every
+       * component is elastic and slip once one has yielded.
+       */
+      std::array<int, dim> yield_sign{};
     };
   } // namespace contact
 } // namespace fdem

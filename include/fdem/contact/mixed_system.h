@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/blocks/elastic_block.h>
+#include <fdem/contact/bar_link.h>
 #include <fdem/contact/contact_law.h>
 #include <fdem/contact/interface_pairs.h>
 #include <fdem/contact/pair_rows.h>
@@ -135,14 +136,18 @@ namespace fdem
       /**
        * Computes C, g_bar, W and omega^T F from the factorised blocks, their
        * displacements under the external loads @p external_displacements,
-       * and the interfaces.
+       * and the interfaces. The links of passive reinforcement bars @p bars
+       * follow the pairs of the interfaces as pairs of their own (index
+       * n_contact_pairs() + k for bar k), with the rows of their force law
+       * (bar_rows()) instead of the contact law.
        */
       MixedSystem(
         const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks,
         const std::vector<Vector<double>> &external_displacements,
         const std::vector<Interface<dim>> &interfaces,
         const MixedSystemSolver            solver = MixedSystemSolver::dense,
-        const bool                         keep_moving_part = false);
+        const bool                         keep_moving_part = false,
+        const std::vector<BarLink<dim>>   &bars             = {});
 
       /** The solvers keep a reference to the system: it stays where it is. */
       MixedSystem(const MixedSystem &) = delete;
@@ -370,11 +375,33 @@ namespace fdem
         return mean_flexibility;
       }
 
-      /** Number of pairs over all interfaces. */
+      /** Number of pairs over all interfaces, the bars' links included. */
       unsigned int
       n_pairs() const
       {
         return pairs.size();
+      }
+
+      /** Number of pairs of the interfaces: the bars' links follow them. */
+      unsigned int
+      n_contact_pairs() const
+      {
+        return pairs.size() - bar_links.size();
+      }
+
+      /** Whether pair @p p is a bar's link. */
+      bool
+      is_bar(const unsigned int p) const
+      {
+        return p >= n_contact_pairs();
+      }
+
+      /** The link of pair @p p, a bar's (is_bar()). */
+      const BarLink<dim> &
+      bar(const unsigned int p) const
+      {
+        Assert(is_bar(p), ExcInternalError());
+        return bar_links[p - n_contact_pairs()];
       }
 
       /** Number of rigid unknowns (free modes over all blocks). */
@@ -404,7 +431,10 @@ namespace fdem
     private:
       const std::vector<std::unique_ptr<blocks::ElasticBlock<dim>>> &blocks;
       const MixedSystemSolver solver_type;
-      /** All pairs of all interfaces, in order, with their blocks. */
+      /** The bars' links (their pairs follow the interfaces' pairs). */
+      const std::vector<BarLink<dim>> bar_links;
+      /** All pairs of all interfaces, in order, then the bars' links, with
+       * their blocks. */
       std::vector<const NodePair<dim> *> pairs;
       std::vector<unsigned int>          pair_block_I, pair_block_J;
 

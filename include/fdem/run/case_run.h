@@ -4,6 +4,7 @@
 
 #include <fdem/analyses/analysis_results.h>
 #include <fdem/analyses/anchors.h>
+#include <fdem/analyses/bars.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/run_log.h>
 
@@ -76,6 +77,8 @@ namespace fdem
     std::vector<postprocess::PvdEntry> step_files;
     /** The anchors of Reinforcement placed in the model. */
     std::vector<analyses::Anchor<dim>> anchors;
+    /** The passive bars of Reinforcement placed in the model. */
+    std::vector<analyses::Bar<dim>> bars;
   };
 
   /**
