@@ -127,6 +127,22 @@ namespace fdem
       }
 
       /**
+       * @p line with its end segments lengthened by 1e-6 of their length
+       * beyond the ends on the ground: the ends then lie just above it, as
+       * the generator and limit equilibrium ask of a polyline (an end
+       * computed on the ground may lie below it by round-off), and both
+       * cut the surface where it meets the ground, at the ends' places.
+       */
+      std::vector<Point<2>>
+      lengthened(std::vector<Point<2>> line)
+      {
+        const unsigned int n = line.size();
+        line[0] += 1e-6 * (line[0] - line[1]);
+        line[n - 1] += 1e-6 * (line[n - 1] - line[n - 2]);
+        return line;
+      }
+
+      /**
        * The polyline's free coordinates: the ends' x (on the ground), each
        * interior vertex's place t in (0, 1) between the ends and its
        * elevation y. Moving an end stretches the interior vertices with it,
@@ -157,7 +173,7 @@ namespace fdem
             p.emplace_back(v[0] + v[2 + i] * (v[1] - v[0]),
                            v[2 + n_interior + i]);
           p.emplace_back(v[1], le::elevation(ground, v[1]));
-          return p;
+          return lengthened(p);
         }
       };
     } // namespace
@@ -230,7 +246,7 @@ namespace fdem
               continue;
             }
           ++result.n_polyline_starts;
-          SearchedSurface s = screen(line, "polyline start");
+          SearchedSurface s = screen(lengthened(line), "polyline start");
           if (start == result.le_minimum)
             result.polyline_start = result.surfaces.size() - 1;
           if (!s.valid)
