@@ -221,8 +221,11 @@ namespace fdem
       std::set<std::pair<double, double>> centres = {
         {result.surfaces[result.le_minimum].centre[0],
          result.surfaces[result.le_minimum].centre[1]}};
+      // A circle whose polyline is not admissible (e.g. through a ground
+      // vertex) gives no start: the next one is tried, up to ten times as
+      // many as asked.
       for (const unsigned int i : order)
-        if (starts.size() < settings.n_contact_candidates &&
+        if (starts.size() < 10 * settings.n_contact_candidates &&
             centres
               .insert(
                 {result.surfaces[i].centre[0], result.surfaces[i].centre[1]})
@@ -232,6 +235,8 @@ namespace fdem
       const unsigned int max_evaluations = 20000;
       for (const unsigned int start : starts)
         {
+          if (result.n_polyline_starts >= settings.n_contact_candidates)
+            break;
           const SearchedSurface circle = result.surfaces[start];
           std::vector<Point<2>> line;
           try
@@ -245,12 +250,12 @@ namespace fdem
             {
               continue;
             }
-          ++result.n_polyline_starts;
           SearchedSurface s = screen(lengthened(line), "polyline start");
           if (start == result.le_minimum)
             result.polyline_start = result.surfaces.size() - 1;
           if (!s.valid)
             continue;
+          ++result.n_polyline_starts;
           unsigned int optimum = result.surfaces.size() - 1;
           // Steps: half the spacing of the vertices along x (lengths) and
           // as a fraction of the span (the places t), halved when no move
@@ -259,10 +264,10 @@ namespace fdem
           Coordinates  x(line);
           double       f             = s.le_K;
           const double span          = line.back()[0] - line.front()[0];
-          double       h             = span / (n - 1) / 2;
-          const double stop          = settings.refinement_tolerance * h;
+          const double first         = span / (n - 1) / 2;
+          const double stop          = settings.refinement_tolerance * first;
           unsigned int n_evaluations = 0;
-          while (h > stop && n_evaluations < max_evaluations)
+          for (double h = first; h > stop && n_evaluations < max_evaluations;)
             {
               bool moved = false;
               // Elevations first (the vertices' depth matters most), then

@@ -40,8 +40,9 @@ def close(name, value, expected, tolerance, relative=False):
 def search_outputs(result, contact_may_fail=False):
     """summary.json's surface_search, the rows of search.csv and the circle
     of critical_surface.prm, after the common checks of every search. With
-    @p contact_may_fail the run on the critical circle may end without
-    equilibrium (exit 3): the search's outputs must be there all the same."""
+    @p contact_may_fail the run on the critical surface may end without
+    equilibrium (exit 3 or 4): the search's outputs must be there all the
+    same."""
     if contact_may_fail:
         # 3: no static equilibrium; 4: the contact problem not solved (the
         # statuses' iteration limit: measured on the polyline of
