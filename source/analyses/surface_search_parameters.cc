@@ -154,7 +154,8 @@ namespace fdem
         "Models solved by the contact method during the search (each its own mesh "
         "and safety-factor iteration), the best screened circles first, then a "
         "local pattern search on the contact K (dimensionless count); 0: the "
-        "search is by limit equilibrium alone.");
+        "search is by limit equilibrium alone. With Non-circular, Non-circular "
+        "contact candidates of them are kept for the polylines.");
       prm.declare_entry(
         "Contact candidates",
         "3",
