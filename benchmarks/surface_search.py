@@ -15,6 +15,8 @@ factors (doc/surface_search.md), on the paper's slope (ACADS 1(a)).
    equilibrium per screened circle and of one contact evaluation.
 2. Bishop's and Spencer's K on the critical circle with 25 to 1600 slices
    (the run's own limit equilibrium, the circle from the search).
+3. The same search with the non-circular stage (Non-circular = true): the
+   time of limit equilibrium per polyline and of its contact evaluations.
 The machine is shared: the 1-minute load average is written beside each
 number. Writes the section "Surface search" of DIR/benchmarks.md and keeps
 it in DIR/benchmarks/surface_search.md (run_benchmarks.py puts it back).
@@ -39,6 +41,52 @@ def full_search(exe, n_contact):
     if not run.ok:
         sys.exit("the search failed: " + run.failure())
     return run, load
+
+
+def non_circular_search(exe):
+    """The same search with the non-circular stage: polylines of 7 vertices
+    from the best circles of 2 centres, by Spencer; 2 contact evaluations of
+    circles and 2 of polylines."""
+    load = os.getloadavg()[0]
+    run = common.run_case(exe, SEARCH_PRM, settings={
+        "Surface search/Non-circular": "true",
+        "Output/Report": "false"})
+    if not run.ok:
+        sys.exit("the non-circular search failed: " + run.failure())
+    return run, load
+
+
+def non_circular_lines(exe):
+    run, load = non_circular_search(exe)
+    search = run.summary["surface_search"]
+    polylines = search["non_circular"]
+    t, counts, minimum = polylines["timings"], polylines["counts"], polylines["minimum"]
+    lines = ["",
+             "The non-circular stage on the same slope (`Surface search/Non-circular = true` "
+             "added to `tests/surface_search/paper_slope_search.prm`: polylines of "
+             f"{polylines['n_vertices']} vertices from the best circles of {counts['starts']} "
+             f"centres, {polylines['method']} with 50 slices; 1-minute load average {load:.1f} "
+             "at the start):",
+             ""]
+    lines += common.markdown_table(
+        ["what", "count", "wall time (s)", "per item (ms)"],
+        [(f"limit equilibrium, polylines ({polylines['method']}, 50 slices)",
+          counts["screened"], f"{t['screening']:.2f}",
+          f"{1000 * t['screening'] / max(counts['screened'], 1):.2f}"),
+         ("contact evaluations of polylines (2 m mesh, no output)",
+          counts["contact_evaluations"], f"{t['contact_evaluations']:.2f}",
+          f"{1000 * t['contact_evaluations'] / max(counts['contact_evaluations'], 1):.0f}"),
+         ("the whole run, measured from outside", 1, f"{run.wall:.2f}", "")],
+        "lrrr")
+    critical = search["critical"]
+    lines += ["",
+              f"Lowest polyline factor {minimum['le_K']:.4f} ({polylines['method']}), the "
+              f"circles' screening minimum {search['screening_minimum']['le_K']:.4f} "
+              f"({search['method']}); critical surface: {critical['shape']}, chosen by the "
+              f"{critical['chosen_by']}, contact K {critical['K']:.4f} at 1 m "
+              f"({counts['contact_certified']} of {counts['contact_evaluations']} polyline "
+              "contact evaluations certified)."]
+    return lines
 
 
 def slices(exe, centre, radius):
@@ -118,6 +166,7 @@ def main():
         table.append((n, f"{bishop:.6f}", change[0], f"{spencer:.6f}", change[1]))
     lines += common.markdown_table(["slices", "Bishop K", "change", "Spencer K", "change"],
                                    table, "rrrrr")
+    lines += non_circular_lines(args.exe)
     lines += ["", "<!-- /surface-search -->"]
     common.put_benchmarks_section(os.path.join(args.output_dir, "benchmarks.md"), lines,
                                   "surface-search")

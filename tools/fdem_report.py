@@ -632,7 +632,8 @@ def surface_search_picture(folder, search, path):
     ax.plot(contact[:, 0], contact[:, 1], "o", mfc="none", color="tab:red",
             label="contact evaluations")
     c = search["critical"]["centre"]
-    ax.plot([c[0]], [c[1]], "*", color="w", mec="k", ms=16, label="critical circle's centre")
+    if c is not None:  # a critical polyline has no centre
+        ax.plot([c[0]], [c[1]], "*", color="w", mec="k", ms=16, label="critical circle's centre")
     ax.set_xlabel("x of the centre (length unit)")
     ax.set_ylabel("y of the centre (length unit)")
     ax.set_aspect("equal")
@@ -649,8 +650,14 @@ def surface_search_section(folder, summary):
     picture of K over the grid."""
     search = summary["surface_search"]
     critical, counts = search["critical"], search["counts"]
-    rows = [("critical circle", f"centre ({number(critical['centre'][0])}, "
-                                f"{number(critical['centre'][1])}), radius {number(critical['radius'])}"),
+    if critical.get("shape") == "polyline":
+        surface = ("critical polyline", "; ".join(f"({number(x)}, {number(y)})"
+                                                  for x, y in critical["polyline"]))
+    else:
+        surface = ("critical circle", f"centre ({number(critical['centre'][0])}, "
+                                      f"{number(critical['centre'][1])}), radius "
+                                      f"{number(critical['radius'])}")
+    rows = [surface,
             ("chosen by", html.escape(critical["chosen_by"])),
             ("contact K (the run's, at the model's mesh size)", number(critical["K"], 4)),
             ("contact K during the search (screening mesh size "
@@ -661,6 +668,17 @@ def surface_search_section(folder, summary):
                  f"{counts['grid']} ({counts['valid']} valid), {counts['refinement']}"))
     rows.append(("contact evaluations (certified)",
                  f"{counts['contact_evaluations']} ({counts['contact_certified']})"))
+    polylines = search.get("non_circular")
+    if polylines:
+        p, minimum = polylines["counts"], polylines.get("minimum")
+        rows.append((f"polylines of {polylines['n_vertices']} vertices screened by "
+                     f"{html.escape(polylines['method'])} (from circles)",
+                     f"{p['screened']} ({p['valid']} valid) from {p['starts']}, "
+                     f"{number(polylines['timings']['screening'], 3)} s"))
+        rows.append(("lowest polyline factor",
+                     number(minimum["le_K"], 4) if minimum else "none"))
+        rows.append(("polylines evaluated by the contact method (certified)",
+                     f"{p['contact_evaluations']} ({p['contact_certified']})"))
     out = ["<h2>Surface search</h2>", table(rows)]
     if search.get("minimum_on_grid_edge"):
         out.append('<p class="warning">The screening minimum lies on the edge of the search '

@@ -22,6 +22,49 @@ namespace fdem
     using namespace dealii;
     namespace le = limit_equilibrium;
 
+    void
+    screen_by_limit_equilibrium(const le::Section &section,
+                                const le::Surface &surface,
+                                const le::Method   method,
+                                const unsigned int n_slices,
+                                SearchedSurface   &s)
+    {
+      try
+        {
+          const le::SlicedMass mass(section, surface, n_slices);
+          s.le_K = le::solve(mass, method, 1e-10).K;
+          // m_alpha = cos(alpha) + sin(alpha) tan(phi) / K, the factor that
+          // divides each base's normal force: where it falls below 0.2 the
+          // normal force and with it K are meaningless (Whitman & Bailey
+          // 1967; a circle rising steeply out of the toe, or a mass on flat
+          // ground with almost no driving moment). Such surfaces are skipped.
+          double m_alpha = std::numeric_limits<double>::infinity();
+          for (const le::Slice &slice : mass.slices)
+            m_alpha = std::min(m_alpha,
+                               slice.cos_alpha +
+                                 slice.sin_alpha * slice.tan_phi / s.le_K);
+          if (m_alpha < 0.2)
+            {
+              s.status = "m_alpha below 0.2";
+              s.le_K   = std::numeric_limits<double>::quiet_NaN();
+              return;
+            }
+          s.valid  = true;
+          s.status = "valid";
+        }
+      catch (const ExceptionBase &error)
+        {
+          const std::string text  = error.what();
+          const auto        start = text.find("Limit equilibrium: ");
+          s.status =
+            "no limit-equilibrium answer" +
+            (start == std::string::npos ?
+               std::string() :
+               ": " +
+                 text.substr(start + 19, text.find('\n', start) - start - 19));
+        }
+    }
+
     SearchedSurface
     screen_circle(const le::Section             &section,
                   const double                   base_elevation,
@@ -81,40 +124,8 @@ namespace fdem
         s.status = "shallower than Minimum depth";
       if (!s.status.empty())
         return s;
-      try
-        {
-          const le::SlicedMass mass(section, surface, n_slices);
-          s.le_K = le::solve(mass, settings.method, 1e-10).K;
-          // m_alpha = cos(alpha) + sin(alpha) tan(phi) / K, the factor that
-          // divides each base's normal force: where it falls below 0.2 the
-          // normal force and with it K are meaningless (Whitman & Bailey
-          // 1967; a circle rising steeply out of the toe, or a mass on flat
-          // ground with almost no driving moment). Such circles are skipped.
-          double m_alpha = std::numeric_limits<double>::infinity();
-          for (const le::Slice &slice : mass.slices)
-            m_alpha = std::min(m_alpha,
-                               slice.cos_alpha +
-                                 slice.sin_alpha * slice.tan_phi / s.le_K);
-          if (m_alpha < 0.2)
-            {
-              s.status = "m_alpha below 0.2";
-              s.le_K   = std::numeric_limits<double>::quiet_NaN();
-              return s;
-            }
-          s.valid  = true;
-          s.status = "valid";
-        }
-      catch (const ExceptionBase &error)
-        {
-          const std::string text  = error.what();
-          const auto        start = text.find("Limit equilibrium: ");
-          s.status =
-            "no limit-equilibrium answer" +
-            (start == std::string::npos ?
-               std::string() :
-               ": " +
-                 text.substr(start + 19, text.find('\n', start) - start - 19));
-        }
+      screen_by_limit_equilibrium(
+        section, surface, settings.method, n_slices, s);
       return s;
     }
 

@@ -32,6 +32,16 @@ namespace fdem
     namespace
     {
       std::string
+      polyline_words(const std::vector<Point<2>> &line)
+      {
+        std::ostringstream text;
+        text << std::setprecision(6) << "polyline of " << line.size()
+             << " vertices from (" << line.front()[0] << ", " << line.front()[1]
+             << ") to (" << line.back()[0] << ", " << line.back()[1] << ")";
+        return text.str();
+      }
+
+      std::string
       circle_words(const Point<2> &centre, const double radius)
       {
         std::ostringstream text;
@@ -41,9 +51,9 @@ namespace fdem
       }
 
       /**
-       * K of the circle (@p centre, @p radius) by the contact method on a
-       * model of its own: @p base with that circle and the screening mesh
-       * size, its mesh written into @p scratch only.
+       * K of the surface of @p s (its circle or polyline) by the contact
+       * method on a model of its own: @p base with that surface and the
+       * screening mesh size, its mesh written into @p scratch only.
        */
       void
       evaluate_contact(const parameters::Parameters  &base,
@@ -53,8 +63,13 @@ namespace fdem
       {
         parameters::Parameters p     = base;
         auto                  &slope = p.geometry.slope;
-        slope.circle_centre          = s.centre;
-        slope.circle_radius          = s.radius;
+        if (s.polyline.empty())
+          {
+            slope.circle_centre = s.centre;
+            slope.circle_radius = s.radius;
+          }
+        else
+          use_polyline(p, s.polyline);
         if (settings.screening_mesh_size > 0)
           {
             const double ratio = settings.screening_mesh_size / slope.mesh_size;
@@ -95,6 +110,111 @@ namespace fdem
             s.status = "failed: " + postprocess::one_line(error);
           }
         s.contact_seconds = timer.wall_time();
+      }
+
+      /**
+       * The non-circular stage: the polylines' screening, then the optima
+       * of the starts evaluated by the contact method (at most @p budget),
+       * and the critical surface chosen again among circles and polylines.
+       */
+      void
+      search_polylines(const parameters::Parameters &parameters,
+                       const le::Section            &section,
+                       unsigned int                  budget,
+                       const std::string            &scratch,
+                       SurfaceSearchResult          &result,
+                       std::ostream                 &brief)
+      {
+        const SurfaceSearchParameters &settings = parameters.surface_search;
+        const double base = parameters.geometry.slope.base_elevation;
+        screen_polylines(section, base, settings, result);
+        {
+          std::ostringstream line;
+          line << "Surface search: non-circular: " << result.n_polyline
+               << " polylines of " << settings.n_polyline_vertices
+               << " vertices screened by " << result.polyline_method_key
+               << " from " << result.n_polyline_starts << " circles ("
+               << result.n_polyline_valid << " valid";
+          for (const auto &[why, n] : result.n_polyline_skipped)
+            line << ", " << n << " " << why;
+          line << "), " << std::setprecision(3) << result.seconds_polyline
+               << " s";
+          if (result.polyline_minimum >= 0)
+            {
+              const SearchedSurface &m =
+                result.surfaces[result.polyline_minimum];
+              line << "; minimum " << std::setprecision(5) << m.le_K << " on a "
+                   << polyline_words(m.polyline);
+            }
+          else
+            line << "; no valid polyline";
+          brief << line.str() << std::endl;
+        }
+
+        // The candidates: each start's optimum, the lowest first, distinct.
+        std::vector<unsigned int> candidates;
+        for (const unsigned int i : result.polyline_optima)
+          if (result.surfaces[i].valid &&
+              std::none_of(candidates.begin(),
+                           candidates.end(),
+                           [&](const unsigned int j) {
+                             return result.surfaces[j].polyline ==
+                                    result.surfaces[i].polyline;
+                           }))
+            candidates.push_back(i);
+        std::sort(candidates.begin(),
+                  candidates.end(),
+                  [&](const unsigned a, const unsigned b) {
+                    return result.surfaces[a].le_K < result.surfaces[b].le_K;
+                  });
+        Timer timer;
+        for (unsigned int c = 0; c < candidates.size() && budget > 0;
+             ++c, --budget)
+          {
+            SearchedSurface s = result.surfaces[candidates[c]];
+            s.stage           = "polyline contact";
+            evaluate_contact(parameters, settings, scratch, s);
+            ++result.n_contact;
+            ++result.n_polyline_contact;
+            std::ostringstream line;
+            line << "  contact " << result.n_contact << "/"
+                 << settings.max_contact_evaluations
+                 << " (polyline): " << polyline_words(s.polyline) << ": ";
+            if (std::isfinite(s.contact_K))
+              line << "K = " << std::fixed << std::setprecision(4)
+                   << s.contact_K << std::defaultfloat;
+            else
+              line << s.status;
+            line << " (" << result.polyline_method_key << " " << std::fixed
+                 << std::setprecision(4) << s.le_K << ", "
+                 << std::setprecision(1) << s.contact_seconds << " s)";
+            brief << line.str() << std::endl;
+            result.surfaces.push_back(s);
+          }
+        result.seconds_polyline_contact = timer.wall_time();
+
+        // The critical surface: the lowest certified contact K of all; with
+        // none, the lower screening factor of the circles' and the
+        // polylines' minima (two methods, but each the rigorous one its
+        // shape admits).
+        int best = -1;
+        for (unsigned int i = 0; i < result.surfaces.size(); ++i)
+          if (std::isfinite(result.surfaces[i].contact_K) &&
+              (best < 0 ||
+               result.surfaces[i].contact_K < result.surfaces[best].contact_K))
+            best = i;
+        if (best >= 0)
+          {
+            result.critical  = best;
+            result.chosen_by = "contact K";
+          }
+        else if (result.polyline_minimum >= 0 &&
+                 result.surfaces[result.polyline_minimum].le_K <
+                   result.surfaces[result.le_minimum].le_K)
+          {
+            result.critical  = result.polyline_minimum;
+            result.chosen_by = result.polyline_method_key;
+          }
       }
     } // namespace
 
@@ -148,11 +268,20 @@ namespace fdem
             << std::endl;
       }
 
+      // Of the contact evaluations, Non-circular contact candidates are kept
+      // for the polylines.
+      const unsigned int polyline_budget =
+        settings.non_circular ? std::min(settings.n_polyline_contact_candidates,
+                                         settings.max_contact_evaluations) :
+                                0;
+      const unsigned int circle_budget =
+        settings.max_contact_evaluations - polyline_budget;
       if (settings.max_contact_evaluations > 0)
+        std::filesystem::create_directories(scratch);
+      if (circle_budget > 0)
         {
-          Timer timer;
-          std::filesystem::create_directories(scratch);
-          unsigned int budget = settings.max_contact_evaluations;
+          Timer        timer;
+          unsigned int budget = circle_budget;
           // Circles already solved (the pattern search comes back to them).
           std::map<std::array<double, 3>, unsigned int> done;
           const auto                                    contact =
@@ -276,17 +405,29 @@ namespace fdem
               result.critical  = best;
               result.chosen_by = "contact K";
             }
-          // Only rank 0 writes meshes there (Model's writes_files).
-          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-            std::filesystem::remove_all(scratch);
           result.seconds_contact = timer.wall_time();
         }
 
+      if (settings.non_circular)
+        search_polylines(
+          parameters, section, polyline_budget, scratch, result, brief);
+      // Only rank 0 writes meshes there (Model's writes_files).
+      if (settings.max_contact_evaluations > 0 &&
+          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::filesystem::remove_all(scratch);
+
       const SearchedSurface &critical = result.surfaces[result.critical];
-      slope.circle_centre             = critical.centre;
-      slope.circle_radius             = critical.radius;
-      brief << "Surface search: critical circle "
-            << circle_words(critical.centre, critical.radius)
+      if (critical.polyline.empty())
+        {
+          slope.circle_centre = critical.centre;
+          slope.circle_radius = critical.radius;
+        }
+      else
+        use_polyline(parameters, critical.polyline);
+      brief << "Surface search: critical "
+            << (critical.polyline.empty() ?
+                  "circle " + circle_words(critical.centre, critical.radius) :
+                  polyline_words(critical.polyline))
             << " (chosen by the " << result.chosen_by
             << "); the run computes K on it" << std::endl;
       return result;

@@ -154,7 +154,8 @@ namespace fdem
         "Models solved by the contact method during the search (each its own mesh "
         "and safety-factor iteration), the best screened circles first, then a "
         "local pattern search on the contact K (dimensionless count); 0: the "
-        "search is by limit equilibrium alone.");
+        "search is by limit equilibrium alone. With Non-circular, Non-circular "
+        "contact candidates of them are kept for the polylines.");
       prm.declare_entry(
         "Contact candidates",
         "3",
@@ -168,6 +169,55 @@ namespace fdem
         "Element size of the contact evaluations during the search (length; the "
         "size on the sliding surface is scaled alike); 0: Geometry/Slope/Mesh "
         "size. The critical circle is run at the model's own mesh size.");
+      prm.declare_entry(
+        "Non-circular",
+        "false",
+        Patterns::Bool(),
+        "After the circles, search for a non-circular (polyline) surface: the "
+        "best circle made into a polyline of Polyline vertices, its vertices "
+        "optimised by limit equilibrium (Non-circular method), the best "
+        "polylines evaluated by the contact method; the run is then on the "
+        "surface, circle or polyline, with the lowest certified contact K. See "
+        "doc/surface_search.md.");
+      prm.declare_entry(
+        "Polyline vertices",
+        "7",
+        Patterns::Integer(3, 100),
+        "Vertices of the non-circular search's polylines, their two ends on the "
+        "ground included, from 3 to 100 (dimensionless count).");
+      prm.declare_entry(
+        "Non-circular method",
+        "Spencer",
+        Patterns::Selection(method_name_selection()),
+        "The limit-equilibrium method of the non-circular search (see Limit "
+        "equilibrium/Methods); not Bishop, whose simplified method is for "
+        "circles. Spencer and Morgenstern-Price satisfy every equilibrium "
+        "condition.");
+      prm.declare_entry(
+        "Concave upward",
+        "true",
+        Patterns::Bool(),
+        "Whether the polylines must be concave upward (their segments' slopes "
+        "not decreasing from left to right), as a rigid mass's sliding surface "
+        "usually is; false also admits convex kinks.");
+      prm.declare_entry(
+        "Non-circular contact candidates",
+        "2",
+        Patterns::Integer(0, 1000),
+        "How many of the Maximum contact evaluations are kept for the best "
+        "polylines of the non-circular search, the rest going to the circles "
+        "(dimensionless count); 0: the polylines are not evaluated by the contact "
+        "method.");
+      prm.declare_entry(
+        "Non-circular interslices",
+        "none",
+        Patterns::Selection("none|vertical|bisector"),
+        "How the sliding mass of a polyline evaluated by the contact method is "
+        "cut into blocks (Geometry/Slope/Interslice surfaces), and of the run "
+        "when a polyline is critical: 'none' (one block), 'vertical' or "
+        "'bisector' cuts from each interior vertex up to the ground, the "
+        "interslices with the sliding surface's strength reduced by K and not "
+        "summed in K.");
       prm.leave_subsection();
     }
 
@@ -200,6 +250,16 @@ namespace fdem
       n_contact_candidates    = prm.get_integer("Contact candidates");
       screening_mesh_size     = prm.get_double("Screening mesh size");
       minimum_depth           = prm.get_double("Minimum depth");
+      non_circular            = prm.get_bool("Non-circular");
+      n_polyline_vertices     = prm.get_integer("Polyline vertices");
+      polyline_method = method_from_name(prm.get("Non-circular method"));
+      concave         = prm.get_bool("Concave upward");
+      n_polyline_contact_candidates =
+        prm.get_integer("Non-circular contact candidates");
+      const std::string interslices = prm.get("Non-circular interslices");
+      polyline_interslices = interslices == "vertical" ? Interslices::vertical :
+                             interslices == "bisector" ? Interslices::bisector :
+                                                         Interslices::none;
       prm.leave_subsection();
       if (!enabled)
         return;
@@ -216,6 +276,17 @@ namespace fdem
           path + "Centre grid: the first corner must be the lower-left one and "
                  "the rectangle must have a width and a height where it has "
                  "more than one centre."));
+      AssertThrow(
+        !non_circular || polyline_method != limit_equilibrium::Method::bishop,
+        ExcMessage(path +
+                   "Non-circular method: Bishop's simplified method is for "
+                   "circles; use Spencer, Morgenstern-Price or Janbu for the "
+                   "polylines."));
+      AssertThrow(!non_circular || n_polyline_vertices >= min_polyline_vertices,
+                  ExcMessage(path + "Polyline vertices: at least " +
+                             std::to_string(min_polyline_vertices) +
+                             " are needed, not " +
+                             std::to_string(n_polyline_vertices) + "."));
       AssertThrow(
         radii == Radii::through_point || !tangent_elevations.empty(),
         ExcMessage(path +

@@ -239,15 +239,33 @@ namespace fdem
       const nlohmann::json &s = summary["surface_search"];
       const nlohmann::json &c = s["critical"];
       const nlohmann::json &n = s["counts"];
-      return {"circle centre (" + digits(c["centre"][0].get<double>(), 6) +
-                ", " + digits(c["centre"][1].get<double>(), 6) + "), radius " +
-                digits(c["radius"].get<double>(), 6) +
-                " (critical_surface.prm)",
+      std::string           surface;
+      if (c.value("shape", std::string("circular")) == "polyline")
+        {
+          const nlohmann::json &p = c["polyline"];
+          surface                 = "polyline of " + std::to_string(p.size()) +
+                    " vertices from (" + digits(p.front()[0].get<double>(), 6) +
+                    ", " + digits(p.front()[1].get<double>(), 6) + ") to (" +
+                    digits(p.back()[0].get<double>(), 6) + ", " +
+                    digits(p.back()[1].get<double>(), 6) + ")";
+        }
+      else
+        surface = "circle centre (" + digits(c["centre"][0].get<double>(), 6) +
+                  ", " + digits(c["centre"][1].get<double>(), 6) +
+                  "), radius " + digits(c["radius"].get<double>(), 6);
+      std::string polylines;
+      if (s.contains("non_circular"))
+        polylines =
+          ", " +
+          std::to_string(
+            s["non_circular"]["counts"]["screened"].get<unsigned int>()) +
+          " polylines";
+      return {surface + " (critical_surface.prm)",
               "chosen by the " + c.value("chosen_by", std::string()) +
                 " from " +
                 std::to_string(n["grid"].get<unsigned int>() +
                                n["refinement"].get<unsigned int>()) +
-                " circles screened and " +
+                " circles" + polylines + " screened and " +
                 std::to_string(n["contact_evaluations"].get<unsigned int>()) +
                 " contact evaluations (search.csv)"};
     }

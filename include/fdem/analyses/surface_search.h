@@ -22,15 +22,21 @@ namespace fdem
   namespace analyses
   {
     /**
-     * One circle the search looked at: where it came from, its screening
-     * factor and, where the contact method evaluated it, its contact K.
+     * One surface the search looked at, a circle or a polyline: where it came
+     * from, its screening factor and, where the contact method evaluated it,
+     * its contact K.
      */
     struct SearchedSurface
     {
-      /** "grid", "refinement", "contact" or "contact refinement". */
+      /**
+       * "grid", "refinement", "contact", "contact refinement" (circles),
+       * "polyline start", "polyline" or "polyline contact" (polylines).
+       */
       std::string      stage;
       dealii::Point<2> centre;
       double           radius = 0;
+      /** The polyline from left to right (empty for a circle). */
+      std::vector<dealii::Point<2>> polyline;
       /** Whether it is a valid sliding surface with a screening factor. */
       bool valid = false;
       /** The screening method's factor (NaN if none). */
@@ -73,7 +79,86 @@ namespace fdem
       bool on_grid_edge = false;
       /** The search's settings (for the summary). */
       SurfaceSearchParameters settings;
+
+      /** The non-circular stage (Surface search/Non-circular). */
+      bool non_circular = false;
+      /** Polylines screened by its optimisation, valid among them. */
+      unsigned int n_polyline = 0, n_polyline_valid = 0, n_polyline_starts = 0;
+      /** Polylines evaluated by the contact method. */
+      unsigned int n_polyline_contact = 0;
+      /** Skipped polylines by reason. */
+      std::map<std::string, unsigned int> n_polyline_skipped;
+      /** Index of the polylines' screening minimum (-1: none). */
+      int polyline_minimum = -1;
+      /** Index of the polyline made from the best circle (-1: none). */
+      int polyline_start = -1;
+      /** Index of each start's optimum, in the order of the starts. */
+      std::vector<unsigned int> polyline_optima;
+      double      seconds_polyline = 0, seconds_polyline_contact = 0;
+      std::string polyline_method_key;
     };
+
+    /**
+     * The screening of one polyline on @p section: whether it is a sliding
+     * surface of the model (x increasing, its ends within the ground's x
+     * range, every interior vertex below the ground and no segment above it,
+     * above @p base_elevation, concave upward if asked, at least Minimum depth
+     * deep, m_alpha at least 0.2) and, if so, the factor of the
+     * non-circular method of @p settings.
+     */
+    SearchedSurface
+    screen_polyline(const limit_equilibrium::Section    &section,
+                    const double                         base_elevation,
+                    const std::vector<dealii::Point<2>> &polyline,
+                    const SurfaceSearchParameters       &settings);
+
+    /**
+     * The circle (@p centre, @p radius) as a polyline of @p n_vertices
+     * vertices on the arc below the ground, at equal angles between its two
+     * ground intersections. Throws if the circle does not cut the ground.
+     */
+    std::vector<dealii::Point<2>>
+    circle_to_polyline(const std::vector<dealii::Point<2>> &ground,
+                       const dealii::Point<2>              &centre,
+                       const double                         radius,
+                       const unsigned int                   n_vertices);
+
+    /**
+     * The limit-equilibrium part of the non-circular stage: from each of
+     * the best circles of distinct centres in @p result (Contact
+     * candidates of them), the circle as a polyline, its vertices optimised
+     * by a coordinate search (surface_search_polyline.cc). Appends every
+     * polyline to @p result and sets its counts and minimum.
+     */
+    void
+    screen_polylines(const limit_equilibrium::Section &section,
+                     const double                      base_elevation,
+                     const SurfaceSearchParameters    &settings,
+                     SurfaceSearchResult              &result);
+
+    /**
+     * The base's limit-equilibrium factor of @p surface on @p section by
+     * @p method into @p s (le_K, valid, status): skipped where m_alpha =
+     * cos(alpha) + sin(alpha) tan(phi) / K falls below 0.2 on a slice, or
+     * the method has no answer.
+     */
+    void
+    screen_by_limit_equilibrium(const limit_equilibrium::Section &section,
+                                const limit_equilibrium::Surface &surface,
+                                const limit_equilibrium::Method   method,
+                                const unsigned int                n_slices,
+                                SearchedSurface                  &s);
+
+    /**
+     * @p parameters with the sliding surface @p polyline (Geometry/Slope),
+     * its mass cut into blocks as Surface search/Non-circular interslices
+     * asks: the blocks 'sliding mass i' and interfaces 'sliding surface i'
+     * copy 'sliding mass' and 'sliding surface', the 'interslice i' the
+     * sliding surface's strength, reduced by K and not summed in K.
+     */
+    void
+    use_polyline(parameters::Parameters              &parameters,
+                 const std::vector<dealii::Point<2>> &polyline);
 
     /**
      * The screening of one circle on @p section: whether it is a sliding

@@ -64,6 +64,34 @@ namespace fdem
       double minimum_depth = 0;
       /** Mesh size of the contact evaluations (0: the model's). */
       double screening_mesh_size = 0;
+
+      /** Interslice surfaces of the polyline candidates' sliding masses. */
+      enum class Interslices
+      {
+        /** One block, 'sliding mass', on 'sliding surface'. */
+        none,
+        /** Vertical cuts from the interior vertices up to the ground. */
+        vertical,
+        /** Cuts along the bisectors of the angles at the interior vertices. */
+        bisector
+      };
+
+      /** The fewest vertices of the non-circular search's polylines. */
+      static constexpr unsigned int min_polyline_vertices = 3;
+
+      /** After the circles, optimise a polyline from the best circle. */
+      bool non_circular = false;
+      /** Vertices of the polyline, its two ends on the ground included. */
+      unsigned int n_polyline_vertices = 7;
+      /** The screening method of the polylines (not Bishop's). */
+      limit_equilibrium::Method polyline_method =
+        limit_equilibrium::Method::spencer;
+      /** Whether the polylines must be concave upward. */
+      bool concave = true;
+      /** Of Maximum contact evaluations, those kept for the polylines. */
+      unsigned int n_polyline_contact_candidates = 2;
+      /** How the polyline candidates' sliding masses are cut into blocks. */
+      Interslices polyline_interslices = Interslices::none;
     };
   } // namespace analyses
 } // namespace fdem
