@@ -94,8 +94,10 @@ def main():
         f"{deterministic.wall:.2f} s). Commit {common.git_description()}, on the machine's 2 "
         "cores shared with other work: load average (1 min) "
         f"{min(loads):.1f} to {max(loads):.1f} at the starts of the runs. The process CPU time "
-        "(user and system, all ranks; from getrusage) and rank 0's CPU time per sample do not "
-        "depend on that load as the wall times do.",
+        "(user and system, all ranks; from getrusage) and rank 0's CPU time per sample depend "
+        "on that load far less than the wall times (shared caches and cores still inflate "
+        "them); with 2 ranks both ranks make the fixed part (mesh, factorisations, the "
+        "deterministic K, FOSM) and the first to finish waits in MPI for the other.",
         "",
     ] + common.markdown_table(
         ["samples", "run", "process wall (s)", "process CPU, all ranks (s)",
