@@ -13,6 +13,7 @@ phases). Writes its table into doc/benchmarks.md.
 """
 import argparse
 import os
+import resource
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -23,6 +24,13 @@ import common  # noqa: E402
 VARIABLES = ("Interfaces/sliding surface/Cohesion: lognormal, mean 3, cov 0.3; "
              "Interfaces/sliding surface/Friction angle: normal, mean 19.6, cov 0.1")
 MPIRUN = ["mpirun", "-np", "2", "--oversubscribe"]
+
+
+def children_cpu():
+    """CPU time (user + system, s) of the finished child processes so far:
+    with mpirun, its ranks too (each parent reaps its children)."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
 
 
 def main():
@@ -38,14 +46,17 @@ def main():
         sys.exit(f"probabilistic_cost.py: {deterministic.failure()}")
     t = deterministic.summary["timings"]
     one_K = t.get("contact", 0) + t.get("safety factor", 0)
-    rows = []
+    rows, loads = [], []
     for n in args.samples:
         settings = dict(base, **{"Probabilistic/Compute": "true",
                                  "Probabilistic/Number of samples": str(n),
                                  "Probabilistic/Variables": VARIABLES,
                                  "Safety factor/Stiffness check": "false"})
         for label, launcher in (("1 process", []), ("2 MPI ranks", MPIRUN)):
+            loads.append(os.getloadavg()[0])
+            cpu_before = children_cpu()
             run = common.run_case(args.exe, "paper_slope.prm", settings, launcher=launcher, env=env)
+            process_cpu = children_cpu() - cpu_before
             if not run.ok:
                 sys.exit(f"probabilistic_cost.py: {label}: {run.failure()}")
             p = run.summary["probabilistic"]
@@ -55,10 +66,14 @@ def main():
             # (its samples and the evaluations every rank makes: K at the
             # means, FOSM, point estimates), per sample of rank 0.
             n_rank0 = n // cost["n_ranks"]
-            rows.append([str(n), label, f"{run.wall:.2f}",
+            # CPU time of rank 0's sample loop per sample: what a sample costs
+            # whatever else shares the cores (the wall time is not).
+            cpu_per_sample = cost.get("samples_cpu_seconds", float("nan")) / (n / cost["n_ranks"])
+            rows.append([str(n), label, f"{run.wall:.2f}", f"{process_cpu:.2f}",
                          f"{run.summary['timings'].get('probabilistic', 0):.2f}",
                          f"{n / cost['samples_wall_seconds']:.0f}",
-                         f"{1e3 * per_sample:.2f}", f"{cost['mean_steps_per_sample']:.2f}",
+                         f"{1e3 * per_sample:.2f}", f"{1e3 * cpu_per_sample:.2f}",
+                         f"{cost['mean_steps_per_sample']:.2f}",
                          f"{cost['mean_contact_solves_per_sample']:.1f}",
                          f"{cost['factorizations_rank0'] / n_rank0:.2f}",
                          f"{cost['reused_solves_rank0'] / n_rank0:.1f}",
@@ -77,11 +92,17 @@ def main():
         f"deterministic K: the safety-factor iteration of the same slope took {one_K * 1e3:.1f} ms "
         f"(contact and safety-factor phases of a run without samples; that whole run took "
         f"{deterministic.wall:.2f} s). Commit {common.git_description()}, on the machine's 2 "
-        "cores shared with other work.",
+        "cores shared with other work: load average (1 min) "
+        f"{min(loads):.1f} to {max(loads):.1f} at the starts of the runs. The process CPU time "
+        "(user and system, all ranks; from getrusage) and rank 0's CPU time per sample depend "
+        "on that load far less than the wall times (shared caches and cores still inflate "
+        "them); with 2 ranks both ranks make the fixed part (mesh, factorisations, the "
+        "deterministic K, FOSM) and the first to finish waits in MPI for the other.",
         "",
     ] + common.markdown_table(
-        ["samples", "run", "process wall (s)", "probabilistic phase (s)", "samples / s",
-         "ms per sample (per rank)", "K steps per sample", "contact solves per sample",
+        ["samples", "run", "process wall (s)", "process CPU, all ranks (s)",
+         "probabilistic phase (s)", "samples / s", "ms per sample (per rank)",
+         "CPU ms per sample (rank 0)", "K steps per sample", "contact solves per sample",
          "mixed-system factorisations per sample (rank 0)", "reused solves per sample (rank 0)",
          "mean K", "std K", "P(K < 1)"], rows) + [
         ""] + [

@@ -388,7 +388,10 @@ namespace fdem
                         double(e.n_status_iterations),
                         double(e.fell_back)});
         }
-      const double        sample_seconds = sample_timer.wall_time();
+      const double sample_seconds = sample_timer.wall_time();
+      // The process's CPU time of the same span: what the samples cost
+      // where other work shares the cores (the wall time then is not).
+      const double        sample_cpu_seconds = sample_timer.cpu_time();
       std::vector<double> gathered;
       if (split)
         for (const auto &part :
@@ -439,6 +442,7 @@ namespace fdem
       result["cost"]             = {
                     {"wall_seconds", timer.wall_time()},
                     {"samples_wall_seconds", sample_seconds},
+                    {"samples_cpu_seconds", sample_cpu_seconds},
                     {"seconds_per_sample", n_local > 0 ? sample_seconds / n_local : 0.0},
                     {"water_load_seconds", water_seconds},
                     {"seconds_K_at_means", mean_seconds},

@@ -5,6 +5,9 @@
 // formed C as one dense, dimensionless matrix, solved by ReusableLU.
 #include <fdem/contact/dense_mixed_solver.h>
 
+#include <algorithm>
+#include <limits>
+
 namespace fdem
 {
   namespace contact
@@ -15,6 +18,37 @@ namespace fdem
     {
       Assert(system.flexibility.m() == dim * system.n_pairs(),
              ExcInternalError());
+    }
+
+    namespace
+    {
+      /** Whether two pairs' rows have the same coefficients (not values). */
+      template <int dim>
+      bool
+      same_coefficients(const PairRows<dim> &a, const PairRows<dim> &b)
+      {
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int k = 0; k < dim; ++k)
+            if (!(a.gap[i][k] == b.gap[i][k]) ||
+                !(a.force[i][k] == b.force[i][k]))
+              return false;
+        return true;
+      }
+
+      bool
+      same_scales(const SystemScales &a, const SystemScales &b)
+      {
+        return a.force == b.force && a.flexibility == b.flexibility &&
+               a.displacement == b.displacement && a.rigid == b.rigid;
+      }
+    } // namespace
+
+    template <int dim>
+    void
+    DenseMixedSolver<dim>::clear()
+    {
+      lu.clear();
+      formed = false;
     }
 
     template <int dim>
@@ -31,37 +65,6 @@ namespace fdem
       const unsigned int        n_rigid        = rigid_loads.size();
       const unsigned int        n              = n_forces + n_rigid;
 
-      FullMatrix<double> matrix(n, n);
-      Vector<double>     rhs(n);
-      for (unsigned int p = 0; p < n_pairs; ++p)
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            const unsigned int row = dim * p + i;
-            rhs[row]               = rows[p].value[i];
-            // sum_k gap[i][k] (C f - W gamma - g_bar)_k
-            for (unsigned int k = 0; k < dim; ++k)
-              {
-                const double a = rows[p].gap[i][k];
-                if (a == 0)
-                  continue;
-                const unsigned int source = dim * p + k;
-                for (unsigned int j = 0; j < n_forces; ++j)
-                  matrix(row, j) += a * flexibility(source, j);
-                for (unsigned int j = 0; j < n_rigid; ++j)
-                  matrix(row, n_forces + j) -= a * rigid_coupling(source, j);
-                rhs[row] += a * external_gap[source];
-              }
-            for (unsigned int k = 0; k < dim; ++k)
-              matrix(row, dim * p + k) += rows[p].force[i][k];
-          }
-      // Equilibrium of the free modes: -W^T f = -omega^T F.
-      for (unsigned int r = 0; r < n_rigid; ++r)
-        {
-          for (unsigned int j = 0; j < n_forces; ++j)
-            matrix(n_forces + r, j) = -rigid_coupling(j, r);
-          rhs[n_forces + r] = -rigid_loads[r];
-        }
-
       // The dimensionless system D_r A D_c (D_c x~) = D_r b: unknowns f / F_0
       // and gamma_m w_m / u_0, pair rows over their magnitudes, rigid rows
       // over w_m F_0 (doc/theory.md, "Scale-free decisions"). Its entries
@@ -69,7 +72,9 @@ namespace fdem
       // factorisation decides (pivots, reuse, refinement) is too.
       // ReusableLU equilibrates it further and reuses the factors of an
       // earlier system while few rows have changed.
-      std::vector<double> row_scale(n), column_scale(n);
+      rhs.reinit(n, true);
+      row_scale.resize(n);
+      column_scale.resize(n);
       for (unsigned int p = 0; p < n_pairs; ++p)
         {
           const Tensor<1, dim> rho = row_magnitudes(rows[p], scales);
@@ -84,12 +89,72 @@ namespace fdem
           row_scale[n_forces + r]    = 1.0 / (scales.rigid[r] * scales.force);
           column_scale[n_forces + r] = scales.displacement / scales.rigid[r];
         }
-      for (unsigned int i = 0; i < n; ++i)
+      // Rows of the matrix, scaled: entry (i, j) times row_scale[i]
+      // column_scale[j].
+      const auto scale_row = [&](const unsigned int i) {
+        double *A_i = &matrix(i, 0);
+        for (unsigned int j = 0; j < n; ++j)
+          A_i[j] *= row_scale[i] * column_scale[j];
+      };
+
+      if (!formed || matrix.m() != n || formed_rows.size() != n_pairs ||
+          !same_scales(scales, formed_scales))
         {
-          rhs[i] *= row_scale[i];
-          for (unsigned int j = 0; j < n; ++j)
-            matrix(i, j) *= row_scale[i] * column_scale[j];
+          matrix.reinit(n, n);
+          // Equilibrium of the free modes: -W^T f = -omega^T F.
+          for (unsigned int r = 0; r < n_rigid; ++r)
+            {
+              for (unsigned int j = 0; j < n_forces; ++j)
+                matrix(n_forces + r, j) = -rigid_coupling(j, r);
+              scale_row(n_forces + r);
+            }
+          formed_rows.assign(n_pairs, PairRows<dim>());
+          formed_scales = scales;
+          formed        = true;
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            // Not equal to any rows: every pair's rows are formed below.
+            formed_rows[p].gap[0][0] = std::numeric_limits<double>::quiet_NaN();
         }
+      for (unsigned int p = 0; p < n_pairs; ++p)
+        {
+          const bool form = !same_coefficients(rows[p], formed_rows[p]);
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              const unsigned int row = dim * p + i;
+              rhs[row]               = rows[p].value[i];
+              if (form)
+                std::fill(&matrix(row, 0), &matrix(row, 0) + n, 0.0);
+              // sum_k gap[i][k] (C f - W gamma - g_bar)_k
+              for (unsigned int k = 0; k < dim; ++k)
+                {
+                  const double a = rows[p].gap[i][k];
+                  if (a == 0)
+                    continue;
+                  const unsigned int source = dim * p + k;
+                  if (form)
+                    {
+                      for (unsigned int j = 0; j < n_forces; ++j)
+                        matrix(row, j) += a * flexibility(source, j);
+                      for (unsigned int j = 0; j < n_rigid; ++j)
+                        matrix(row, n_forces + j) -=
+                          a * rigid_coupling(source, j);
+                    }
+                  rhs[row] += a * external_gap[source];
+                }
+              if (form)
+                {
+                  for (unsigned int k = 0; k < dim; ++k)
+                    matrix(row, dim * p + k) += rows[p].force[i][k];
+                  scale_row(row);
+                }
+            }
+          if (form)
+            formed_rows[p] = rows[p];
+        }
+      for (unsigned int r = 0; r < n_rigid; ++r)
+        rhs[n_forces + r] = -rigid_loads[r];
+      for (unsigned int i = 0; i < n; ++i)
+        rhs[i] *= row_scale[i];
       const linear_algebra::ReusableLU::Result result = lu.solve(matrix, rhs);
       for (unsigned int i = 0; i < n; ++i)
         rhs[i] *= column_scale[i];

@@ -281,7 +281,7 @@ namespace fdem
       moving_compliance_scale = scale;
       combine_loads();
       set_diagonal_scales();
-      dense->lu.clear(); // the factors are of the old C
+      dense->clear(); // the factors and the formed matrix are of the old C
     }
 
     template <int dim>

@@ -7,6 +7,7 @@
 #include <deal.II/lac/lapack_templates.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace fdem
@@ -93,13 +94,16 @@ namespace fdem
         // Gram-Schmidt on the rows, keeping the combination that maps v:
         // q_k = (h_k - sum_{l<k} (h_k . q_l) q_l) / |.|, and w_k the value of
         // q_k . f_0, so that f_0 = sum_k w_k q_k.
-        std::vector<Tensor<1, dim>> q;
-        std::vector<double>         w;
+        // At most dim of each (no allocation: called for every pair of
+        // every solve).
+        std::array<Tensor<1, dim>, dim> q;
+        std::array<double, dim>         w;
+        unsigned int                    n_q = 0;
         for (unsigned int k = 0; k < h.size(); ++k)
           {
             Tensor<1, dim> r     = h[k];
             double         value = v[k];
-            for (unsigned int l = 0; l < q.size(); ++l)
+            for (unsigned int l = 0; l < n_q; ++l)
               {
                 const double c = r * q[l];
                 r -= c * q[l];
@@ -110,16 +114,17 @@ namespace fdem
             // this small is a row that repeats the others.
             if (norm > 1e-10 * h[k].norm())
               {
-                q.push_back(r / norm);
-                w.push_back(value / norm);
+                q[n_q] = r / norm;
+                w[n_q] = value / norm;
+                ++n_q;
               }
           }
         f_0 = Tensor<1, dim>();
-        for (unsigned int l = 0; l < q.size(); ++l)
+        for (unsigned int l = 0; l < n_q; ++l)
           f_0 += w[l] * q[l];
         // The complement: the unit vectors with the largest remainders.
         basis.clear();
-        while (q.size() < dim)
+        while (n_q < dim)
           {
             Tensor<1, dim> best;
             double         best_norm = 0;
@@ -127,16 +132,17 @@ namespace fdem
               {
                 Tensor<1, dim> r;
                 r[i] = 1;
-                for (const Tensor<1, dim> &q_l : q)
-                  r -= (r * q_l) * q_l;
+                for (unsigned int l = 0; l < n_q; ++l)
+                  r -= (r * q[l]) * q[l];
                 if (r.norm() > best_norm)
                   {
                     best      = r;
                     best_norm = r.norm();
                   }
               }
-            q.push_back(best / best_norm);
-            basis.push_back(q.back());
+            q[n_q] = best / best_norm;
+            basis.push_back(q[n_q]);
+            ++n_q;
           }
       }
     } // namespace
@@ -182,11 +188,15 @@ namespace fdem
       for (unsigned int m = 0; m < n_rigid; ++m)
         load[m] = rigid_loads[m] / (scales.rigid[m] * scales.force);
 
-      // Columns of E (stored as rows of E^T, by columns) and rows of K.
-      std::vector<std::vector<double>> E_columns, K_rows;
-      Vector<double>                   fixed(n_rigid); // W~^T f_0 of all pairs
-      std::vector<Tensor<1, dim>>      h, basis;
-      std::vector<double>              v;
+      // Columns of E (stored as rows of E^T) and rows of K, n_rigid numbers
+      // each, one after the other (one array each: a solve makes this test,
+      // and an allocation per row was a measurable part of it).
+      std::vector<double>         E_columns, K_rows;
+      Vector<double>              fixed(n_rigid); // W~^T f_0 of all pairs
+      std::vector<Tensor<1, dim>> h, basis;
+      std::vector<double>         v;
+      E_columns.reserve(std::size_t(dim) * rows.size() * n_rigid);
+      K_rows.reserve(std::size_t(dim) * rows.size() * n_rigid);
       for (unsigned int p = 0; p < rows.size(); ++p)
         {
           const Tensor<1, dim> rho = row_magnitudes(rows[p], scales);
@@ -209,11 +219,13 @@ namespace fdem
               else
                 {
                   // A row on the gap: it resists the rigid motion g . W gamma.
-                  std::vector<double> row(n_rigid, 0.0);
                   for (unsigned int m = 0; m < n_rigid; ++m)
-                    for (unsigned int k = 0; k < dim; ++k)
-                      row[m] += g[k] * W(dim * p + k, m);
-                  K_rows.push_back(std::move(row));
+                    {
+                      double entry = 0.0;
+                      for (unsigned int k = 0; k < dim; ++k)
+                        entry += g[k] * W(dim * p + k, m);
+                      K_rows.push_back(entry);
+                    }
                 }
             }
           Tensor<1, dim> f_0;
@@ -223,26 +235,28 @@ namespace fdem
               fixed[m] += W(dim * p + k, m) * f_0[k];
           for (const Tensor<1, dim> &direction : basis)
             {
-              std::vector<double> column(n_rigid, 0.0);
               for (unsigned int m = 0; m < n_rigid; ++m)
-                for (unsigned int k = 0; k < dim; ++k)
-                  column[m] += W(dim * p + k, m) * direction[k];
-              E_columns.push_back(std::move(column));
+                {
+                  double entry = 0.0;
+                  for (unsigned int k = 0; k < dim; ++k)
+                    entry += W(dim * p + k, m) * direction[k];
+                  E_columns.push_back(entry);
+                }
             }
         }
 
       // A tall matrix by columns from a list of its rows, padded with zero
       // rows up to n_rigid (that changes neither rank nor range).
-      const auto by_columns =
-        [n_rigid](const std::vector<std::vector<double>> &list,
-                  unsigned int                           &m) {
-          m = std::max<unsigned int>(list.size(), n_rigid);
-          std::vector<double> a(std::size_t(m) * n_rigid, 0.0);
-          for (unsigned int i = 0; i < list.size(); ++i)
-            for (unsigned int j = 0; j < n_rigid; ++j)
-              a[std::size_t(j) * m + i] = list[i][j];
-          return a;
-        };
+      const auto by_columns = [n_rigid](const std::vector<double> &list,
+                                        unsigned int              &m) {
+        const unsigned int n_rows = list.size() / n_rigid;
+        m                         = std::max<unsigned int>(n_rows, n_rigid);
+        std::vector<double> a(std::size_t(m) * n_rigid, 0.0);
+        for (unsigned int i = 0; i < n_rows; ++i)
+          for (unsigned int j = 0; j < n_rigid; ++j)
+            a[std::size_t(j) * m + i] = list[std::size_t(i) * n_rigid + j];
+        return a;
+      };
       unsigned int              m_E = 0, m_K = 0;
       FullMatrix<double>        V_T;
       std::vector<double>       E_T = by_columns(E_columns, m_E);

@@ -84,14 +84,11 @@ namespace fdem
         std::vector<double> b      = y, r(n), z(n);
         double              b_norm = 0, B_norm = 0;
         for (unsigned int i = 0; i < n; ++i)
-          {
-            b_norm            = std::max(b_norm, std::abs(b[i]));
-            const double *A_i = n > 0 ? &A(i, 0) : nullptr;
-            double        row = 0;
-            for (unsigned int j = 0; j < n; ++j)
-              row += std::abs(A_i[j] * s[j]);
-            B_norm = std::max(B_norm, std::abs(s[i]) * row);
-          }
+          b_norm = std::max(b_norm, std::abs(b[i]));
+        // |B|_inf = max_i |s_i| sum_j |A_ij s_j|, summed in the first pass
+        // over A of backward_error() (the same sums, in the same order, as a
+        // pass of its own).
+        bool                B_norm_known = false;
         const double        nan = std::numeric_limits<double>::quiet_NaN();
         std::vector<double> size(n);
         const auto          backward_error = [&]() {
@@ -103,17 +100,31 @@ namespace fdem
             {
               const double *A_i = &A(i, 0);
               double        sum = 0, row = 0;
-              for (unsigned int j = 0; j < n; ++j)
+              if (B_norm_known)
+                for (unsigned int j = 0; j < n; ++j)
+                  {
+                    const double term = A_i[j] * z[j];
+                    sum += term;
+                    row += std::abs(term);
+                  }
+              else
                 {
-                  const double term = A_i[j] * z[j];
-                  sum += term;
-                  row += std::abs(term);
+                  double B_row = 0;
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      const double term = A_i[j] * z[j];
+                      sum += term;
+                      row += std::abs(term);
+                      B_row += std::abs(A_i[j] * s[j]);
+                    }
+                  B_norm = std::max(B_norm, std::abs(s[i]) * B_row);
                 }
               r[i]    = b[i] - s[i] * sum;
               r_norm  = std::max(r_norm, std::abs(r[i]));
               y_norm  = std::max(y_norm, std::abs(y[i]));
               size[i] = std::abs(s[i]) * row + std::abs(b[i]);
             }
+          B_norm_known = true;
           if (!std::isfinite(r_norm) || !std::isfinite(y_norm))
             return BackwardErrors{nan, nan};
           const double scale = B_norm * y_norm + b_norm;
@@ -163,15 +174,26 @@ namespace fdem
       std::vector<double>
       row_and_column_scale(const dealii::FullMatrix<double> &matrix)
       {
+        // One pass by rows (the matrix is stored by rows): the largest
+        // entry of each row and, alongside, of each column. A maximum is
+        // exact in any order, so this is the same scale as row i and
+        // column i searched together.
         const unsigned int  n = matrix.m();
-        std::vector<double> scale(n);
+        std::vector<double> scale(n, 0.0);
         for (unsigned int i = 0; i < n; ++i)
           {
-            double s = 0;
+            const double *A_i = &matrix(i, 0);
+            double        row = 0;
             for (unsigned int j = 0; j < n; ++j)
-              s = std::max({s, std::abs(matrix(i, j)), std::abs(matrix(j, i))});
-            scale[i] = s > 0 ? 1.0 / std::sqrt(s) : 1.0;
+              {
+                const double a = std::abs(A_i[j]);
+                row            = std::max(row, a);
+                scale[j]       = std::max(scale[j], a);
+              }
+            scale[i] = std::max(scale[i], row);
           }
+        for (unsigned int i = 0; i < n; ++i)
+          scale[i] = scale[i] > 0 ? 1.0 / std::sqrt(scale[i]) : 1.0;
         return scale;
       }
     } // namespace
@@ -190,23 +212,26 @@ namespace fdem
     {
       Assert(matrix.m() == matrix.n(), dealii::ExcInternalError());
       Assert(rhs.size() == matrix.m(), dealii::ExcInternalError());
-      const unsigned int  n     = matrix.m();
-      std::vector<double> scale = row_and_column_scale(matrix);
+      const unsigned int n = matrix.m();
       if (!control.reuse || !lu || factorized_matrix.m() != n)
         {
-          Result fresh = factorize_and_solve(matrix, std::move(scale), rhs);
+          Result fresh =
+            factorize_and_solve(matrix, row_and_column_scale(matrix), rhs);
           fresh.why_factorized = control.reuse ? "first system" : "reuse off";
           return fresh;
         }
 
       std::vector<unsigned int> changed;
       for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < n; ++j)
-          if (matrix(i, j) != factorized_matrix(i, j))
-            {
-              changed.push_back(i);
-              break;
-            }
+        {
+          const double *A_i = &matrix(i, 0), *F_i = &factorized_matrix(i, 0);
+          for (unsigned int j = 0; j < n; ++j)
+            if (A_i[j] != F_i[j])
+              {
+                changed.push_back(i);
+                break;
+              }
+        }
 
       Result result;
       result.factorized     = false;
@@ -222,6 +247,9 @@ namespace fdem
           ++n_reused_solves;
           return result;
         }
+      // The scaling of the new matrix: its own factorisation's, and that of
+      // its condition estimate (not needed for the very same matrix).
+      std::vector<double> scale = row_and_column_scale(matrix);
       // The old factors must be a good start: a near-singular one is not.
       const char *why = nullptr;
       if (changed.size() > control.max_changed_fraction * n)
@@ -386,14 +414,18 @@ namespace fdem
       // The condition estimate of S' A' S' in its own scaling S', as dgecon
       // makes it: 1 / (|S' A' S'|_1 est|(S' A' S')^{-1}|_1), where
       // (S' A' S')^{-1} = R B^{-1} R with R = S_0 / S'.
+      // The column sums by rows (the matrix is stored by rows): each column's
+      // terms are added in the same order, top to bottom.
+      std::vector<double> columns(n, 0.0);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double *A_i = &matrix(i, 0);
+          for (unsigned int j = 0; j < n; ++j)
+            columns[j] += std::abs(A_i[j] * scale[i] * scale[j]);
+        }
       double A_norm = 0;
       for (unsigned int j = 0; j < n; ++j)
-        {
-          double column = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            column += std::abs(matrix(i, j) * scale[i] * scale[j]);
-          A_norm = std::max(A_norm, column);
-        }
+        A_norm = std::max(A_norm, columns[j]);
       std::vector<double> R(n);
       for (unsigned int i = 0; i < n; ++i)
         R[i] = s0[i] / scale[i];

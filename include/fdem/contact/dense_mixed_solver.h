@@ -40,11 +40,39 @@ namespace fdem
       static std::string
       describe(const ContactSolution &solution);
 
+      /**
+       * Forgets the factors and the formed matrix: to be called when C, W or
+       * the system's scales change
+       * (MixedSystem::set_moving_compliance_scale()).
+       */
+      void
+      clear();
+
       /** The factors of the last factorised system and their counts. */
       linear_algebra::ReusableLU lu;
 
     private:
       const MixedSystem<dim> &system;
+
+      /**
+       * The dimensionless matrix of the last solve, kept between solves: the
+       * rows of a pair whose PairRows did not change are those of the last
+       * solve (C, W and the scales are fixed until clear()), so only the
+       * changed pairs' rows are formed again, each from zero by the same
+       * operations as a whole new matrix: the matrix is the same, bit for
+       * bit, whatever was solved before (as the samples of a probabilistic
+       * analysis need, on any number of ranks).
+       */
+      FullMatrix<double> matrix;
+      /** The pair rows each pair's rows of #matrix were formed from. */
+      std::vector<PairRows<dim>> formed_rows;
+      /** Whether #matrix holds the rigid rows and #formed_rows is valid. */
+      bool formed = false;
+      /** The scales #matrix was formed with (compared at every solve). */
+      SystemScales formed_scales;
+      /** Work arrays of a solve: right-hand side and solution, row scales. */
+      Vector<double>      rhs;
+      std::vector<double> row_scale, column_scale;
     };
   } // namespace contact
 } // namespace fdem
