@@ -3,7 +3,7 @@
 """Passive bars (Reinforcement/Bar ...) of runs of the executable against
 closed forms (doc/verification.md, "Passive bars"):
 
-  bar_checks.py EXE block|stiffness|invariance|paper
+  bar_checks.py EXE block|pile|stiffness|invariance|paper
 
 block: prm/inclined_block.prm (plane at beta = 30 degrees, phi = 35, c = 10,
   A = 10, W = 1250) with one bar from a head in the block, pointing upslope
@@ -23,6 +23,8 @@ block: prm/inclined_block.prm (plane at beta = 30 degrees, phi = 35, c = 10,
   the block, head to surface) and q L' (surface to end). Also summary.json's
   and bars.csv's forces (at the limit the bar's force is its applied
   capacity) and the result block's line.
+pile: a pile normal to the plane with a shear capacity: the closed forms
+  with its shear capacity along the plane (see pile()).
 stiffness: the same K for axial stiffnesses 1e4 and 1e7 (the limit does not
   depend on it), 1e-10.
 invariance: both conventions in N-m-Pa (forces x 1000, stiffnesses x 1000),
@@ -146,6 +148,35 @@ def block(exe):
             check(name, K, expected, 1e-10)
 
 
+def pile(exe):
+    """A pile normal to the plane (theta = 90 degrees) with a shear
+    capacity V_y: sliding shears it across, and at the limit its shear
+    force is V_y along the plane, against the slide; its axial force N
+    (elastic, tension pressing the block on) is what the solve gives, so the
+    closed forms take the reported N:
+      not reduced: K = (c A + (W cos(beta) + N) tan(phi)) / (W sin(beta) - V_y),
+      reduced:     K = (c A + (W cos(beta) + N) tan(phi) + V_y) / (W sin(beta))."""
+    V_y = 100.0
+    for reduced in (False, True):
+        settings = {**BASE, **bar(1e6, 90.0, n=2.0, length=5.0, reduced=reduced),
+                    "Reinforcement/Bar shear capacities": repr(V_y),
+                    "Reinforcement/Bar shear stiffnesses": "1e5"}
+        summary, _, _ = run(exe, "inclined_block.prm", settings)
+        name = f"pile, {'reduced' if reduced else 'not reduced'}"
+        assert summary["converged"] and summary["certificate"]["holds"], name
+        b = summary["reinforcement"]["passive_bars"]["bars"][0]
+        K, N = summary["safety_factor"], b["axial_force"]
+        check(f"  {name}: shear force at the limit", b["shear_force"],
+              V_y / K if reduced else V_y, 1e-9)
+        if reduced:
+            expected = (C * A + (W * math.cos(BETA) + N) * math.tan(PHI) + V_y) / (W * math.sin(BETA))
+        else:
+            expected = (C * A + (W * math.cos(BETA) + N) * math.tan(PHI)) / (W * math.sin(BETA) - V_y)
+        print(f"  {name}: axial force {N:.6g} (elastic, below its capacity)")
+        assert abs(N) < 1e6
+        check(name, K, expected, 1e-10)
+
+
 def stiffness(exe):
     for reduced in (False, True):
         K = []
@@ -227,7 +258,8 @@ def paper(exe):
 
 
 def main(exe, what):
-    {"block": block, "stiffness": stiffness, "invariance": invariance, "paper": paper}[what](exe)
+    {"block": block, "pile": pile, "stiffness": stiffness, "invariance": invariance,
+     "paper": paper}[what](exe)
     print("passed")
 
 
