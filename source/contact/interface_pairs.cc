@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace fdem
 {
@@ -13,6 +15,16 @@ namespace fdem
   {
     namespace
     {
+      /** "(x y)" with 6 digits, for messages. */
+      template <int dim>
+      std::string
+      position_text(const Point<dim> &p)
+      {
+        std::ostringstream out;
+        out << std::setprecision(6) << "(" << p << ")";
+        return out.str();
+      }
+
       /** Local frame with rows n, t (2D) or n, t1, t2 (3D). */
       template <int dim>
       Tensor<2, dim>
@@ -109,8 +121,23 @@ namespace fdem
               ++interface.n_unpaired_I;
               continue;
             }
-          used_J[best]    = true;
-          const auto   &b = nodes_J[best];
+          used_J[best]  = true;
+          const auto &b = nodes_J[best];
+          // The faces around a node that turn back on each other (a surface
+          // folding, or a sliver cell between two nearly coincident lines)
+          // leave it without a normal: its frame, and every force of the
+          // mixed system, would be NaN.
+          AssertThrow(std::isfinite(b.area_normal.norm()) &&
+                        b.area_normal.norm() > 1e-3 * b.area,
+                      ExcMessage(
+                        "Interfaces/" + name + ": at " +
+                        position_text(b.position) + " the faces of block '" +
+                        block_J.name +
+                        "' around a node turn back on each other, so "
+                        "the surface has no normal there: it folds, or "
+                        "the mesh has a sliver cell between nearly "
+                        "coincident lines; move the surface or change "
+                        "the mesh size."));
           NodePair<dim> pair;
           pair.position_I = a.position;
           pair.position_J = b.position;

@@ -284,8 +284,9 @@ def weak_layer(exe, prm):
         # The polyline's contact evaluation: recorded in search.csv, certified
         # or not. The optimum hugs the layer's lower boundary (2 mm above it,
         # measured): the screening mesh of 2 m then has slivers between the
-        # two lines, and the evaluation fails (an SVD error, measured), which
-        # the search records and goes on. The critical surface is then the
+        # two lines, and the evaluation fails (a node of the surface without
+        # a normal, the interface check's one line; before it an SVD error on
+        # NaN), which the search records and goes on. The critical surface is then the
         # lowest certified contact K's.
         evaluated = [r for r in rows if r["stage"] == "polyline contact"]
         check("the polyline's contact evaluation is in search.csv with its outcome",
