@@ -47,41 +47,21 @@ namespace fdem
           a.force = given.forces[k];
           a.head =
             transformed_input_point(model, given.heads[k], name + ": its head");
-          a.bond       = transformed_input_point(model,
+          a.bond = transformed_input_point(model,
                                            given.bond_points[k],
                                            name + ": its bond point");
-          a.head_block = locator.block_of(a.head);
-          AssertThrow(
-            a.head_block != numbers::invalid_unsigned_int,
-            ExcMessage(
-              name + ": its head " + point_text(a.head) +
-              " lies in no block of the mesh; give Reinforcement/Anchor "
-              "heads on the sliding mass."));
-          AssertThrow(
-            model.get_blocks()[a.head_block]->n_free_rigid_modes() > 0,
-            ExcMessage(
-              name + ": its head " + point_text(a.head) + " lies in block '" +
-              model.get_blocks()[a.head_block]->name +
-              "', which is supported and cannot slide; the head must be "
-              "on the sliding mass (a block without supports)."));
-          a.bond_block = numbers::invalid_unsigned_int;
-          for (unsigned int b = 0; b < model.get_blocks().size(); ++b)
-            if (b != a.head_block && locator.inside(b, a.bond))
-              {
-                a.bond_block = b;
-                break;
-              }
-          AssertThrow(a.bond_block != numbers::invalid_unsigned_int &&
-                        !locator.inside(a.head_block, a.bond),
-                      ExcMessage(
-                        name + ": its bond point " + point_text(a.bond) +
-                        (locator.inside(a.head_block, a.bond) ?
-                           " lies in the head's block '" +
-                             model.get_blocks()[a.head_block]->name + "'" :
-                           std::string(" lies in no block of the mesh")) +
-                        "; give Reinforcement/Anchor bond points in the stable "
-                        "ground beyond the sliding surface."));
-          a.direction = (a.bond - a.head) / (a.bond - a.head).norm();
+          const ReinforcementBlocks blocks =
+            locate_reinforcement(model,
+                                 locator,
+                                 a.head,
+                                 a.bond,
+                                 name,
+                                 "Anchor heads",
+                                 "Anchor bond points",
+                                 "bond point");
+          a.head_block = blocks.head;
+          a.bond_block = blocks.end;
+          a.direction  = (a.bond - a.head) / (a.bond - a.head).norm();
           const SurfaceCrossing<dim> crossing = find_surface_crossing(
             model, locator, a.head_block, a.head, a.bond, name);
           a.crossing     = crossing.point;

@@ -73,42 +73,22 @@ namespace fdem
           const std::string name =
             "Reinforcement: bar " + std::to_string(k + 1);
           Bar<dim> b;
-          b.head       = transformed_input_point(model,
+          b.head                           = transformed_input_point(model,
                                            given.bar_heads[k],
                                            name + ": its head");
-          b.end        = transformed_input_point(model,
+          b.end                            = transformed_input_point(model,
                                           given.bar_ends[k],
                                           name + ": its end");
-          b.head_block = locator.block_of(b.head);
-          AssertThrow(b.head_block != numbers::invalid_unsigned_int,
-                      ExcMessage(name + ": its head " + point_text(b.head) +
-                                 " lies in no block of the mesh; give "
-                                 "Reinforcement/Bar heads on the sliding "
-                                 "mass."));
-          AssertThrow(
-            model.get_blocks()[b.head_block]->n_free_rigid_modes() > 0,
-            ExcMessage(name + ": its head " + point_text(b.head) +
-                       " lies in block '" +
-                       model.get_blocks()[b.head_block]->name +
-                       "', which is supported and cannot slide; the head must "
-                       "be on the sliding mass (a block without supports)."));
-          b.end_block = numbers::invalid_unsigned_int;
-          for (unsigned int blk = 0; blk < model.get_blocks().size(); ++blk)
-            if (blk != b.head_block && locator.inside(blk, b.end))
-              {
-                b.end_block = blk;
-                break;
-              }
-          AssertThrow(b.end_block != numbers::invalid_unsigned_int &&
-                        !locator.inside(b.head_block, b.end),
-                      ExcMessage(
-                        name + ": its end " + point_text(b.end) +
-                        (locator.inside(b.head_block, b.end) ?
-                           " lies in the head's block '" +
-                             model.get_blocks()[b.head_block]->name + "'" :
-                           std::string(" lies in no block of the mesh")) +
-                        "; give Reinforcement/Bar ends in the stable ground "
-                        "beyond the sliding surface."));
+          const ReinforcementBlocks blocks = locate_reinforcement(model,
+                                                                  locator,
+                                                                  b.head,
+                                                                  b.end,
+                                                                  name,
+                                                                  "Bar heads",
+                                                                  "Bar ends",
+                                                                  "end");
+          b.head_block                     = blocks.head;
+          b.end_block                      = blocks.end;
           b.direction = (b.end - b.head) / (b.end - b.head).norm();
           const SurfaceCrossing<dim> crossing = find_surface_crossing(
             model, locator, b.head_block, b.head, b.end, name);

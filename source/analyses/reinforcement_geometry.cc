@@ -87,6 +87,52 @@ namespace fdem
     }
 
     template <int dim>
+    ReinforcementBlocks
+    locate_reinforcement(const Model<dim>        &model,
+                         const PointLocator<dim> &locator,
+                         const Point<dim>        &head,
+                         const Point<dim>        &end,
+                         const std::string       &name,
+                         const std::string       &head_entry,
+                         const std::string       &end_entry,
+                         const std::string       &end_word)
+    {
+      const auto         &blocks = model.get_blocks();
+      ReinforcementBlocks found;
+      found.head = locator.block_of(head);
+      AssertThrow(found.head != numbers::invalid_unsigned_int,
+                  ExcMessage(name + ": its head " + point_text(head) +
+                             " lies in no block of the mesh; give "
+                             "Reinforcement/" +
+                             head_entry + " on the sliding mass."));
+      AssertThrow(blocks[found.head]->n_free_rigid_modes() > 0,
+                  ExcMessage(name + ": its head " + point_text(head) +
+                             " lies in block '" + blocks[found.head]->name +
+                             "', which is supported and cannot slide; the "
+                             "head must be on the sliding mass (a block "
+                             "without supports)."));
+      found.end = numbers::invalid_unsigned_int;
+      for (unsigned int b = 0; b < blocks.size(); ++b)
+        if (b != found.head && locator.inside(b, end))
+          {
+            found.end = b;
+            break;
+          }
+      const bool in_head_block = locator.inside(found.head, end);
+      AssertThrow(found.end != numbers::invalid_unsigned_int && !in_head_block,
+                  ExcMessage(name + ": its " + end_word + " " +
+                             point_text(end) +
+                             (in_head_block ?
+                                " lies in the head's block '" +
+                                  blocks[found.head]->name + "'" :
+                                std::string(" lies in no block of the mesh")) +
+                             "; give Reinforcement/" + end_entry +
+                             " in the stable ground beyond the sliding "
+                             "surface."));
+      return found;
+    }
+
+    template <int dim>
     SurfaceCrossing<dim>
     find_surface_crossing(const Model<dim>        &model,
                           const PointLocator<dim> &locator,
@@ -190,6 +236,24 @@ namespace fdem
 
     template class PointLocator<2>;
     template class PointLocator<3>;
+    template ReinforcementBlocks
+    locate_reinforcement(const Model<2> &,
+                         const PointLocator<2> &,
+                         const Point<2> &,
+                         const Point<2> &,
+                         const std::string &,
+                         const std::string &,
+                         const std::string &,
+                         const std::string &);
+    template ReinforcementBlocks
+    locate_reinforcement(const Model<3> &,
+                         const PointLocator<3> &,
+                         const Point<3> &,
+                         const Point<3> &,
+                         const std::string &,
+                         const std::string &,
+                         const std::string &,
+                         const std::string &);
     template SurfaceCrossing<2>
     find_surface_crossing(const Model<2> &,
                           const PointLocator<2> &,

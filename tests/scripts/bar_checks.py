@@ -41,17 +41,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:0] = [os.path.join(HERE, "..", "..", "tools")]
 import fdem_run  # noqa: E402
-
-BETA = math.radians(30)
-C, PHI, A, W = 10.0, math.radians(35), 10.0, 1250.0
-BASE = {"Interfaces/sliding surface/Tensile strength": "1e3",
-        "Safety factor/Tolerance": "1e-11"}
-
-
-def plane_point(s, n):
-    """The point s along the plane (upslope) and n above it, as the
-    Inclined block generator places it (rotated by beta)."""
-    return (s * math.cos(BETA) - n * math.sin(BETA), s * math.sin(BETA) + n * math.cos(BETA))
+# The same block, plane and check as the anchors'.
+from anchor_checks import BETA, C, PHI, A, W, BASE, plane_point, check  # noqa: E402,F401
 
 
 def bar(capacity, theta_deg, s=2.0, n=2.0, length=8.0, reduced=False, pullout=None,
@@ -81,13 +72,6 @@ def reduced_K(N, theta):
     b = C * A + W * math.cos(BETA) * math.tan(PHI) + N * math.cos(theta)
     c = N * math.sin(theta) * math.tan(PHI)
     return (b + math.sqrt(b * b + 4 * a * c)) / (2 * a)
-
-
-def check(name, value, expected, tolerance):
-    error = abs(value - expected) / abs(expected)
-    print(f"{'ok  ' if error <= tolerance else 'FAIL'} {name}: {value!r} against {expected!r} "
-          f"({error:.1e}, tolerance {tolerance:g})")
-    assert error <= tolerance, name
 
 
 def run(exe, prm, settings):

@@ -57,6 +57,29 @@ namespace fdem
       std::vector<std::unique_ptr<GridTools::Cache<dim>>> caches;
     };
 
+    /** The blocks of a reinforcement's two ends. */
+    struct ReinforcementBlocks
+    {
+      unsigned int head = 0, end = 0;
+    };
+
+    /**
+     * The blocks of a reinforcement @p name (for the messages) from @p head
+     * to @p end: the head in a block that can move, the end in another
+     * block. Throws one line naming @p head_entry or @p end_entry (the
+     * Reinforcement entries; @p end_word is what the end is called) if not.
+     */
+    template <int dim>
+    ReinforcementBlocks
+    locate_reinforcement(const Model<dim>        &model,
+                         const PointLocator<dim> &locator,
+                         const Point<dim>        &head,
+                         const Point<dim>        &end,
+                         const std::string       &name,
+                         const std::string       &head_entry,
+                         const std::string       &end_entry,
+                         const std::string       &end_word);
+
     /**
      * Where a straight reinforcement from @p head (in block @p head_block)
      * towards @p end leaves the head's block through a sliding surface.
