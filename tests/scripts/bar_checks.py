@@ -3,7 +3,7 @@
 """Passive bars (Reinforcement/Bar ...) of runs of the executable against
 closed forms (doc/verification.md, "Passive bars"):
 
-  bar_checks.py EXE block|pile|stiffness|invariance|paper
+  bar_checks.py EXE block|pile|block3d|stiffness|invariance|paper
 
 block: prm/inclined_block.prm (plane at beta = 30 degrees, phi = 35, c = 10,
   A = 10, W = 1250) with one bar from a head in the block, pointing upslope
@@ -25,6 +25,7 @@ block: prm/inclined_block.prm (plane at beta = 30 degrees, phi = 35, c = 10,
   capacity) and the result block's line.
 pile: a pile normal to the plane with a shear capacity: the closed forms
   with its shear capacity along the plane (see pile()).
+block3d: the closed forms of block on the 3D block on a plane (see block3d()).
 stiffness: the same K for axial stiffnesses 1e4 and 1e7 (the limit does not
   depend on it), 1e-10.
 invariance: both conventions in N-m-Pa (forces x 1000, stiffnesses x 1000),
@@ -161,6 +162,42 @@ def pile(exe):
         check(name, K, expected, 1e-10)
 
 
+def block3d(exe):
+    """prm/block_on_plane_3d.prm (dip 30 degrees towards azimuth 120,
+    c = 15, phi = 30, A = 60, W = 7500) with one bar from the block at 2 m
+    above the plane into the foundation, 45 degrees below the plane and
+    pointing up the dip: the closed forms of block() in 3D. Safety factor/
+    Tolerance = 1e-9: the certified fixed point has K* = K to 1e-9, and the
+    limit is (K* - K) / (1 - m) away (m = dK*/dK, below 0.9 here), so 1e-8
+    (measured 2e-10 not reduced, 4e-11 reduced; 17 and 43 steps)."""
+    beta, azimuth, theta = math.radians(30), math.radians(120), math.radians(45)
+    dd = (math.sin(azimuth) * math.cos(beta), math.cos(azimuth) * math.cos(beta), -math.sin(beta))
+    up = (math.sin(azimuth) * math.sin(beta), math.cos(azimuth) * math.sin(beta), math.cos(beta))
+
+    def point(x, z):  # x down the dip from the origin, z above the plane
+        return ", ".join(repr(x * dd[i] + z * up[i]) for i in range(3))
+    c, phi, area, weight, N = 15.0, math.radians(30), 60.0, 7500.0, 1000.0
+    for reduced in (False, True):
+        settings = {"Safety factor/Tolerance": "1e-9",
+                    "Reinforcement/Bar heads": point(5, 2),
+                    "Reinforcement/Bar ends": point(1.5, -1.5),
+                    "Reinforcement/Bar tensile capacities": repr(N),
+                    "Reinforcement/Bar axial stiffnesses": "1e6",
+                    "Reinforcement/Bar capacity reduced by K": "true" if reduced else "false"}
+        summary, _, _ = run(exe, "block_on_plane_3d.prm", settings)
+        name = f"3D, {'reduced' if reduced else 'not reduced'}"
+        assert summary["converged"] and summary["certificate"]["kind"] == "fixed point", name
+        if reduced:
+            a = weight * math.sin(beta)
+            b = c * area + weight * math.cos(beta) * math.tan(phi) + N * math.cos(theta)
+            q = N * math.sin(theta) * math.tan(phi)
+            expected = (b + math.sqrt(b * b + 4 * a * q)) / (2 * a)
+        else:
+            expected = (c * area + (weight * math.cos(beta) + N * math.sin(theta)) * math.tan(phi)) / \
+                (weight * math.sin(beta) - N * math.cos(theta))
+        check(name, summary["safety_factor"], expected, 1e-8)
+
+
 def stiffness(exe):
     for reduced in (False, True):
         K = []
@@ -242,8 +279,8 @@ def paper(exe):
 
 
 def main(exe, what):
-    {"block": block, "pile": pile, "stiffness": stiffness, "invariance": invariance,
-     "paper": paper}[what](exe)
+    {"block": block, "pile": pile, "block3d": block3d, "stiffness": stiffness,
+     "invariance": invariance, "paper": paper}[what](exe)
     print("passed")
 
 
