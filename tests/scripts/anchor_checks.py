@@ -39,6 +39,14 @@ BASE = {"Interfaces/sliding surface/Tensile strength": "1e3",
         "Safety factor/Tolerance": "1e-11"}
 
 
+# The inclined block's entries in N-m-Pa (forces x 1000), for the invariance checks.
+NEWTON_BLOCK = {"Interfaces/sliding surface/Tensile strength": "1e6",
+                "Interfaces/sliding surface/Cohesion": "1e4",
+                "Blocks/block/Young's modulus": "1e8", "Blocks/block/Unit weight": "25e3",
+                "Blocks/foundation/Young's modulus": "1e9",
+                "Blocks/foundation/Unit weight": "25e3"}
+
+
 def plane_point(s, n):
     """The point s along the plane (upslope) and n above it, as the
     Inclined block generator places it (rotated by beta)."""
@@ -126,11 +134,7 @@ def invariance(exe):
     for reduced in (False, True):
         settings = {**BASE, **anchor(150.0, 30.0, reduced=reduced)}
         reference, _, _ = run(exe, "inclined_block.prm", settings)
-        newton = {**settings, "Interfaces/sliding surface/Tensile strength": "1e6",
-                  "Interfaces/sliding surface/Cohesion": "1e4",
-                  "Blocks/block/Young's modulus": "1e8", "Blocks/block/Unit weight": "25e3",
-                  "Blocks/foundation/Young's modulus": "1e9",
-                  "Blocks/foundation/Unit weight": "25e3",
+        newton = {**settings, **NEWTON_BLOCK,
                   "Reinforcement/Anchor forces": "150e3"}
         angle = math.radians(25)
         rotated = {**settings, "Geometry/Rotation angle": 25,

@@ -43,7 +43,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:0] = [os.path.join(HERE, "..", "..", "tools")]
 import fdem_run  # noqa: E402
 # The same block, plane and check as the anchors'.
-from anchor_checks import BETA, C, PHI, A, W, BASE, plane_point, check  # noqa: E402,F401
+from anchor_checks import BETA, C, PHI, A, W, BASE, NEWTON_BLOCK, plane_point, check  # noqa: E402,F401
 
 
 def bar(capacity, theta_deg, s=2.0, n=2.0, length=8.0, reduced=False, pullout=None,
@@ -213,11 +213,7 @@ def invariance(exe):
     for reduced in (False, True):
         settings = {**BASE, **bar(150.0, 30.0, reduced=reduced)}
         reference, _, _ = run(exe, "inclined_block.prm", settings)
-        newton = {**settings, "Interfaces/sliding surface/Tensile strength": "1e6",
-                  "Interfaces/sliding surface/Cohesion": "1e4",
-                  "Blocks/block/Young's modulus": "1e8", "Blocks/block/Unit weight": "25e3",
-                  "Blocks/foundation/Young's modulus": "1e9",
-                  "Blocks/foundation/Unit weight": "25e3",
+        newton = {**settings, **NEWTON_BLOCK,
                   "Reinforcement/Bar tensile capacities": "150e3",
                   "Reinforcement/Bar axial stiffnesses": "1e8"}
         stiffer = {**settings, "Blocks/block/Young's modulus": "1e8",
