@@ -491,7 +491,8 @@ TEST(SafetyFactorIteration, FactorThatDependsOnKConvergesToItsFixedPoint)
 TEST(SafetyFactorIteration,
      SlowlyCreepingFactorStopsWithinTheToleranceOfItsFixedPoint)
 {
-  // h = K* - K = (K_lim - K)^1.75 as measured on a 3D wedge, the limit a
+  // h = K* - K = (K_lim - K)^1.75, roughly as on a 3D wedge (there with
+  // every pair slipping, FoldOfAllSlippingStates... below), the limit a
   // mechanism: the reported K must be within the tolerance of K_lim (the
   // stop used to fire 2e-6 short on such a sequence).
   parameters::SafetyFactorParameters control;
@@ -509,6 +510,35 @@ TEST(SafetyFactorIteration,
   expect_certificate_holds(result, control.tolerance);
   EXPECT_LE(std::abs(result.safety_factor - K_lim), control.tolerance * K_lim)
     << log.str();
+}
+
+TEST(SafetyFactorIteration, FoldOfAllSlippingStatesIsReachedInFewSteps)
+{
+  // A 3D sliding mass with every pair slipping: h = K* - K = a d^2 /
+  // (1 + c d), d = L - K, the local exponent 1.8 at d = 5e-3 and 2 at the
+  // limit, as measured on prm/rock_wedge.prm (a = 6, L = 0.7266); the
+  // solves end 1.3e-6 (relative) below L, as there. The answer must be a
+  // static K within the tolerance below where the solves end, certified;
+  // the secant on h alone took 26 steps on the wedge.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const double                       L = 0.7266, end = L * (1 - 1.3e-6);
+  const auto                         result = analyses::iterate(
+    [&](const double K) {
+      const double d = L - K;
+      analyses::ReducedStrengthSolution s =
+        synthetic_step(K, K + 6 * d * d / (1 + 44 * d), end);
+      s.all_slipping = s.converged;
+      s.n_slip       = 10;
+      return s;
+    },
+    control,
+    log);
+  ASSERT_TRUE(result.converged) << log.str();
+  expect_certificate_holds(result, control.tolerance);
+  EXPECT_LT(result.safety_factor, end);
+  EXPECT_GE(result.safety_factor, end * (1 - control.tolerance)) << log.str();
+  EXPECT_LE(result.steps.size(), 14u) << log.str();
 }
 
 TEST(SafetyFactorIteration, AllSlipStatesBoundFromAboveAndNeverCertify)

@@ -89,7 +89,7 @@ TEST(ThreeD, BlockOnPlaneMatchesThePlanarFormula)
       CaseRun<3>         model(block_on_plane(30, 120, phi, cohesion), "", log);
       model.run();
       ASSERT_EQ(model.summary()["status"], "completed")
-        << model.summary()["safety_factor_reason"];
+        << model.summary()["safety_factor_reason"] << log.str();
       const double exact = block_on_plane_K(phi, cohesion);
       // Sums of normal and tangential forces are fixed by equilibrium:
       // round-off only.

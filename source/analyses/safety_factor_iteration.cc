@@ -3,6 +3,7 @@
 #include <fdem/analyses/safety_factor_iteration.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -16,12 +17,119 @@ namespace fdem
       const double nan = std::numeric_limits<double>::quiet_NaN();
 
       /**
+       * The solved steps that inform the next K: the last three that had a
+       * factor and were not degenerate, the latest first (nullptr where
+       * there are fewer).
+       */
+      using History = std::array<const Step *, 3>;
+
+      /** Where K* - K reaches zero by fold_limit(), and where to aim. */
+      struct Fold
+      {
+        /** The extrapolated limit (NaN if the steps are not of the kind). */
+        double limit = nan;
+        /** A K below it that a step can aim at without overshooting. */
+        double aim = nan;
+      };
+
+      /**
+       * L of h = c (L - K)^p through three points (K_i, h_i), K rising, h
+       * falling: the root of ln((L-K_0)/(L-K_1)) / ln((L-K_1)/(L-K_2)) =
+       * ln(h_0/h_1) / ln(h_1/h_2) above K_2 (points latest last), by
+       * bisection; NaN where there is none (h falling off exponentially).
+       */
+      double
+      power_law_limit(const std::array<double, 3> &K,
+                      const std::array<double, 3> &h)
+      {
+        const double r = std::log(h[0] / h[1]) / std::log(h[1] / h[2]);
+        const auto   f = [&](const double L) {
+          return std::log((L - K[0]) / (L - K[1])) /
+                   std::log((L - K[1]) / (L - K[2])) -
+                 r;
+        };
+        double lo = K[2], hi = K[2] + (K[2] - K[0]);
+        for (unsigned int i = 0; i < 40 && !(f(hi) > 0); ++i)
+          hi = K[2] + 2 * (hi - K[2]);
+        if (!(f(hi) > 0))
+          return nan;
+        for (unsigned int i = 0; i < 100 && hi - lo > 1e-15 * hi; ++i)
+          {
+            const double mid       = 0.5 * (lo + hi);
+            (f(mid) > 0 ? hi : lo) = mid;
+          }
+        return hi;
+      }
+
+      /**
+       * Where K* - K reaches zero, extrapolated from the steps of @p history
+       * if each had every pair slipping, at rising K with falling K* - K and
+       * rising K*.
+       * Such states lead up to the limit of a 3D sliding mass: as K nears
+       * it, the slip directions turn towards one, and K* - K, which measures
+       * how far the shears cancel, falls off as the square of the distance:
+       * h = a (L - K)^2 (1 + b (L - K)) (measured on prm/rock_wedge.prm: the
+       * local exponent goes 1.72, 1.88, 1.95, 1.99 from 5e-3 to 1e-4 below
+       * L). A secant on h then only halves the distance per step.
+       *
+       * The limit: sqrt(h) is nearly linear in K, and a parabola through
+       * three (K, sqrt(h)) (Muller's method) extrapolates to L with an error
+       * of the cube of the distances (1.3e-5 from 1e-3 below L, 5e-8 from
+       * 1.4e-4); with two steps, the secant on sqrt(h). Further away the
+       * exponent is below 2 and both overshoot (by 0.8 % from 1.6e-2 below
+       * L). The aim: the lower of that and the power law c (L - K)^p through
+       * the three, which undershoots there by 1 to 3 % of the distance; with
+       * two steps, the secant on h.
+       */
+      Fold
+      fold_limit(const History &history)
+      {
+        std::array<double, 3> K{}, h{};
+        unsigned int          n = 0;
+        for (; n < 3 && history[n] != nullptr; ++n)
+          {
+            const Step &step = *history[n];
+            K[n]             = step.K;
+            h[n]             = step.K_star - step.K;
+            // h falling at most half as fast as K rises (K* climbing with
+            // K): a planar limit, where K* is independent of K, falls as
+            // fast and is no fold.
+            if (!step.solution.all_slipping || !(h[n] > 0) ||
+                (n > 0 && !(K[n] < K[n - 1] && h[n] > h[n - 1] &&
+                            h[n] - h[n - 1] <= 0.5 * (K[n - 1] - K[n]))))
+              break;
+          }
+        if (n < 2)
+          return {};
+        // Newton's form through (K_0, g_0), (K_1, g_1) [, (K_2, g_2)] with
+        // g = sqrt(h), in t = K - K_0: g = g_0 + beta t + d2 t^2.
+        const std::array<double, 3> g = {
+          {std::sqrt(h[0]), std::sqrt(h[1]), std::sqrt(h[2])}};
+        const double d1 = (g[0] - g[1]) / (K[0] - K[1]);
+        const double d2 =
+          n < 3 ? 0.0 : (d1 - (g[1] - g[2]) / (K[1] - K[2])) / (K[0] - K[2]);
+        const double beta  = d1 + d2 * (K[0] - K[1]);
+        const double disc  = beta * beta - 4 * d2 * g[0];
+        const double t_two = -g[0] / d1;
+        if (n < 3 || disc < 0)
+          return {K[0] + t_two, K[0] + h[0] * (K[0] - K[1]) / (h[1] - h[0])};
+        // The smaller positive root, in the form without cancellation.
+        const double limit = K[0] + 2 * g[0] / (-beta + std::sqrt(disc));
+        const double power =
+          power_law_limit({{K[2], K[1], K[0]}}, {{h[2], h[1], h[0]}});
+        // Not further than the three steps span: beyond, neither model is
+        // known to hold.
+        return {limit, std::min({limit, power, K[0] + 0.25 * (K[0] - K[2])})};
+      }
+
+      /**
        * The next K after a solved step at K with K* = K + h. Near the limit
-       * h(K) = K* - K can fall off faster than linearly (a wedge whose pairs
-       * all slip: h ~ (K_limit - K)^1.75 measured), and plain substitution
-       * K <- K* then creeps. A secant step on h through the previous solved
-       * step extrapolates to h = 0; it is taken only when h has decreased as
-       * K rose, and never beyond a K already known to fail (bisect instead).
+       * h(K) = K* - K can fall off faster than linearly, and plain
+       * substitution K <- K* then creeps. A secant step on h through the
+       * previous solved step extrapolates to h = 0; it is taken only when h
+       * has decreased as K rose, and never beyond a K already known to fail
+       * (bisect instead). Where every pair slips, fold_limit() extrapolates
+       * further and better.
        *
        * Once a K has failed, the limit is known to be where the static
        * solutions end, and a step aimed at it exactly lands above it about
@@ -34,8 +142,10 @@ namespace fdem
       double
       next_factor(const Step  &step,
                   const Step  *previous,
+                  const Fold  &fold,
                   const double K_low,
-                  const double K_high)
+                  const double K_high,
+                  const double tolerance)
       {
         const double K = step.K, h = step.K_star - step.K;
         double       next = step.K_star; // eq. (12): K* itself
@@ -46,6 +156,21 @@ namespace fdem
               next =
                 std::max(next, K + h * (K - previous->K) / (previous_h - h));
           }
+        if (fold.aim > next)
+          next = fold.aim;
+        // A fold beyond a K that failed: the solves end before K* - K
+        // reaches zero (on the wedge 1.3e-6 below it, where the slip
+        // directions are nearly parallel). The limit is then that end; try
+        // just below the failure, by an eighth of the bracket, so that a
+        // static solve there closes it.
+        if (fold.limit >= K_high)
+          return K_high - std::max(0.5 * tolerance * K, (K_high - K) / 8);
+        // A fold within a few tolerances: the solves may end before it (the
+        // wedge: 1.3e-6 below), so probe a tolerance above K. A failure there
+        // closes the bracket; a static solve moves K_low up as far.
+        if (fold.limit - K <= 8 * tolerance * K &&
+            next - K > 0.9 * tolerance * K)
+          return std::min(K + 0.9 * tolerance * K, 0.5 * (K + K_high));
         if (std::isfinite(K_high) && next > K)
           next = K + 0.99 * (next - K);
         return next < K_high ? next : 0.5 * (K_low + K_high);
@@ -72,14 +197,17 @@ namespace fdem
        * K_high.
        */
       void
-      advance(Step        &step,
-              const Step  *previous,
-              const double previous_step,
-              double      &K_low,
-              double      &K_high)
+      advance(Step          &step,
+              const History &solved,
+              const bool     after_failure,
+              const double   previous_step,
+              const double   tolerance,
+              double        &K_low,
+              double        &K_high)
       {
-        const ReducedStrengthSolution &s = step.solution;
-        const double                   K = step.K;
+        const ReducedStrengthSolution &s        = step.solution;
+        const double                   K        = step.K;
+        const Step                    *previous = solved[0];
         if (s.has_factor() && s.degenerate)
           {
             // Every pair in contact slips: K* = K whatever K is, which only
@@ -93,14 +221,29 @@ namespace fdem
           }
         else if (s.has_factor())
           {
-            K_low              = std::isnan(K_low) ? K : std::max(K_low, K);
-            step.K_next        = next_factor(step, previous, K_low, K_high);
+            K_low           = std::isnan(K_low) ? K : std::max(K_low, K);
+            const Fold fold = fold_limit({{&step, solved[0], solved[1]}});
+            step.K_next =
+              next_factor(step, previous, fold, K_low, K_high, tolerance);
             step.distance_left = distance_left(step, previous_step);
+            // The fixed point is where the fold lies, wherever the step goes.
+            if (fold.limit > K)
+              step.distance_left = std::max(step.distance_left, fold.limit - K);
           }
         else if (!s.converged)
           {
-            K_high      = std::min(K_high, K);
-            step.K_next = std::isnan(K_low) ? 0.5 * K : 0.5 * (K_low + K_high);
+            K_high = std::min(K_high, K);
+            // Right after a solved step that aimed at a fold, the failure is
+            // most likely the end of the solves just below it: try just below
+            // the failure first (as next_factor()); bisect after two failures.
+            const bool fold = !after_failure && !std::isnan(K_low) &&
+                              !std::isnan(fold_limit(solved).limit);
+            step.K_next =
+              std::isnan(K_low) ? 0.5 * K :
+              fold              ? std::max(0.5 * (K_low + K_high),
+                              K_high - std::max(0.5 * tolerance * K_low,
+                                                (K_high - K_low) / 8)) :
+                                  0.5 * (K_low + K_high);
           }
       }
 
@@ -165,16 +308,25 @@ namespace fdem
       const double tolerance = parameters.tolerance;
       double      &K_low = result.bracket_low, &K_high = result.bracket_high;
       double       K = parameters.initial_factor, previous_step = nan;
-      const Step  *previous = nullptr; // the last solved step
-      result.reason         = "iteration limit reached";
-      result.steps.reserve(parameters.max_iterations); // keeps `previous` valid
+      History      solved{}; // the last solved steps, latest first
+      const Step *&previous      = solved[0];
+      bool         after_failure = false;
+      result.reason              = "iteration limit reached";
+      result.steps.reserve(parameters.max_iterations); // keeps `solved` valid
       for (unsigned int i = 0; i < parameters.max_iterations; ++i)
         {
           Step step{K, nan, nan, nan, solve(K)}; // eqs. (10)-(11)
           const ReducedStrengthSolution &s = step.solution;
           if (s.has_factor())
             step.K_star = K * s.resisting_force / s.sliding_force; // eq. (12)
-          advance(step, previous, previous_step, K_low, K_high);
+          advance(step,
+                  solved,
+                  after_failure,
+                  previous_step,
+                  tolerance,
+                  K_low,
+                  K_high);
+          after_failure = !s.converged;
           result.steps.push_back(step);
           log_step(step, result.steps.size(), log);
 
@@ -219,7 +371,7 @@ namespace fdem
             }
           if (s.has_factor() && !s.degenerate)
             {
-              previous      = &result.steps.back();
+              solved        = {{&result.steps.back(), solved[0], solved[1]}};
               previous_step = std::abs(result.steps.back().K_next - K);
             }
           else

@@ -80,9 +80,18 @@ namespace fdem
       // A bar still elastic has strength left (F_R - F_tau is its unused
       // capacity, computed to round-off of its force): not degenerate,
       // however close to yield.
-      s.degenerate = s.converged && s.n_stick == 0 && s.n_slip > 0 &&
-                     !an_elastic_bar &&
-                     s.sliding_force >= (1 - 1e-10) * s.resisting_force;
+      //
+      // In 3D the shears of slipping pairs add up only where they are
+      // parallel, and F_R - F_tau falls off as the square of their angles:
+      // a wedge a relative 3e-6 below its limit has F_tau = (1 - 7.5e-11)
+      // F_R, so 1e-10 would take it for the limit and bound K 5.5e-6 too
+      // low (measured on prm/rock_wedge.prm). There only round-off counts:
+      // 1e-12, ten times the solve's.
+      s.all_slipping =
+        s.converged && s.n_stick == 0 && s.n_slip > 0 && !an_elastic_bar;
+      s.degenerate =
+        s.all_slipping &&
+        s.sliding_force >= (1 - (dim == 2 ? 1e-10 : 1e-12)) * s.resisting_force;
       return s;
     }
 

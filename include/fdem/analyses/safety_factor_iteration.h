@@ -49,6 +49,14 @@ namespace fdem
        * "Degenerate states").
        */
       bool degenerate = false;
+      /**
+       * Every pair in contact on the sliding surface slips and no passive
+       * bar is elastic (degenerate or not). In 3D such states lead up to the
+       * limit with K* - K falling off as (K_limit - K)^2: the shears turn
+       * towards one direction (doc/theory.md, "The safety-factor
+       * iteration").
+       */
+      bool all_slipping = false;
 
       /** Solved, with a sliding force: K* is defined. */
       bool
