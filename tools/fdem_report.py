@@ -677,6 +677,9 @@ def surface_search_section(folder, summary):
                      f"{number(polylines['timings']['screening'], 3)} s"))
         rows.append(("lowest polyline factor",
                      number(minimum["le_K"], 4) if minimum else "none"))
+        if p.get("snapped"):
+            rows.append(("optima snapped onto layer lines (within)",
+                         f"{p['snapped']} ({number(polylines['snap_distance'], 3)})"))
         rows.append(("polylines evaluated by the contact method (certified)",
                      f"{p['contact_evaluations']} ({p['contact_certified']})"))
     out = ["<h2>Surface search</h2>", table(rows)]

@@ -126,8 +126,20 @@ namespace fdem
                        std::ostream                 &brief)
       {
         const SurfaceSearchParameters &settings = parameters.surface_search;
-        const double base = parameters.geometry.slope.base_elevation;
-        screen_polylines(section, base, settings, result);
+        const auto                    &slope    = parameters.geometry.slope;
+        const double                   base     = slope.base_elevation;
+        // The optima's vertices within a tenth of the element size on the
+        // sliding surface (the screening mesh's or the run's, the larger)
+        // of a layer line are snapped onto it: a thinner gap leaves cells
+        // of aspect ratio above 10 between the two lines (measured, doc/
+        // surface_search.md).
+        const double on_surface =
+          std::max(slope.mesh_size_on_sliding_surface,
+                   settings.screening_mesh_size > 0 ?
+                     slope.mesh_size_on_sliding_surface *
+                       settings.screening_mesh_size / slope.mesh_size :
+                     0.);
+        screen_polylines(section, base, settings, 0.1 * on_surface, result);
         {
           std::ostringstream line;
           line << "Surface search: non-circular: " << result.n_polyline
@@ -208,12 +220,23 @@ namespace fdem
             result.critical  = best;
             result.chosen_by = "contact K";
           }
-        else if (result.polyline_minimum >= 0 &&
-                 result.surfaces[result.polyline_minimum].le_K <
-                   result.surfaces[result.le_minimum].le_K)
+        else
           {
-            result.critical  = result.polyline_minimum;
-            result.chosen_by = result.polyline_method_key;
+            // The lowest of the optima as snapped (the polylines the
+            // contact method would have evaluated), not the unsnapped
+            // minimum: the run meshes it too.
+            int lowest = -1;
+            for (const unsigned int i : result.polyline_optima)
+              if (result.surfaces[i].valid &&
+                  (lowest < 0 ||
+                   result.surfaces[i].le_K < result.surfaces[lowest].le_K))
+                lowest = i;
+            if (lowest >= 0 && result.surfaces[lowest].le_K <
+                                 result.surfaces[result.le_minimum].le_K)
+              {
+                result.critical  = lowest;
+                result.chosen_by = result.polyline_method_key;
+              }
           }
       }
     } // namespace

@@ -85,6 +85,7 @@ namespace fdem
                      SurfaceSearchParameters::Interslices::bisector ?
                    "bisector" :
                    "none"},
+                {"snap_distance", result.snap_distance},
                 {"start",
                  result.polyline_start >= 0 ?
                    circle_json(result.surfaces[result.polyline_start]) :
@@ -98,6 +99,7 @@ namespace fdem
                   {"screened", result.n_polyline},
                   {"valid", result.n_polyline_valid},
                   {"skipped", skipped},
+                  {"snapped", result.n_polyline_snapped},
                   {"contact_evaluations", result.n_polyline_contact},
                   {"contact_certified", n_certified},
                   {"contact_candidates", s.n_polyline_contact_candidates}}},

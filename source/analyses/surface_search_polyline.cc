@@ -120,6 +120,66 @@ namespace fdem
 
     namespace
     {
+      /** The point of @p line nearest to @p p. */
+      Point<2>
+      nearest_on(const std::vector<Point<2>> &line, const Point<2> &p)
+      {
+        Point<2> best     = line.front();
+        double   distance = p.distance(best);
+        for (unsigned int i = 1; i < line.size(); ++i)
+          {
+            const Tensor<1, 2> s  = line[i] - line[i - 1];
+            const double       l2 = s.norm_square();
+            const double       t =
+              l2 > 0 ? std::clamp((p - line[i - 1]) * s / l2, 0., 1.) : 0.;
+            const Point<2> q = line[i - 1] + t * s;
+            if (p.distance(q) < distance)
+              {
+                distance = p.distance(q);
+                best     = q;
+              }
+          }
+        return best;
+      }
+
+      /**
+       * The points where @p line meets @p ground (crosses or touches it),
+       * within the x range of both.
+       */
+      std::vector<Point<2>>
+      ground_crossings(const std::vector<Point<2>> &ground,
+                       const std::vector<Point<2>> &line)
+      {
+        const double from = std::max(ground.front()[0], line.front()[0]),
+                     to   = std::min(ground.back()[0], line.back()[0]);
+        std::vector<Point<2>> crossings;
+        if (!(from < to))
+          return crossings;
+        std::set<double> breaks = {from, to};
+        for (const auto *l : {&ground, &line})
+          for (const Point<2> &p : *l)
+            if (p[0] > from && p[0] < to)
+              breaks.insert(p[0]);
+        const std::vector<double> x(breaks.begin(), breaks.end());
+        const auto                gap = [&](const double x) {
+          return le::elevation(line, x) - le::elevation(ground, x);
+        };
+        const auto on_ground = [&](const double x) {
+          return Point<2>(x, le::elevation(ground, x));
+        };
+        // Both lines are straight between the breaks: the gap is linear.
+        for (unsigned int i = 0; i < x.size(); ++i)
+          {
+            const double a = gap(x[i]);
+            if (a == 0)
+              crossings.push_back(on_ground(x[i]));
+            else if (i + 1 < x.size() && a * gap(x[i + 1]) < 0)
+              crossings.push_back(
+                on_ground(x[i] + (x[i + 1] - x[i]) * a / (a - gap(x[i + 1]))));
+          }
+        return crossings;
+      }
+
       std::string
       reason(const std::string &status)
       {
@@ -178,14 +238,69 @@ namespace fdem
       };
     } // namespace
 
+    std::vector<Point<2>>
+    snap_polyline(const le::Section           &section,
+                  const std::vector<Point<2>> &polyline,
+                  const double                 distance)
+    {
+      // The lines the mesh has (the boundaries between layers: the tops of
+      // all layers but the first) and those limit equilibrium and the
+      // contact strengths look for (named weak layers, whose faces must lie
+      // on the seam within 1e-3 of their length).
+      std::vector<const std::vector<Point<2>> *> lines;
+      for (unsigned int k = 1; k < section.layers.size(); ++k)
+        if (section.layers[k].top.size() >= 2)
+          lines.push_back(&section.layers[k].top);
+      for (const le::WeakLayer &weak : section.weak_layers)
+        if (weak.line.size() >= 2)
+          lines.push_back(&weak.line);
+      std::vector<Point<2>> snapped = polyline;
+      const unsigned int    n       = polyline.size();
+      if (!(distance > 0) || n < 2)
+        return snapped;
+      for (unsigned int i = 1; i + 1 < n; ++i)
+        {
+          double nearest = distance;
+          for (const auto *line : lines)
+            {
+              const Point<2> q = nearest_on(*line, polyline[i]);
+              if (q.distance(polyline[i]) < nearest)
+                {
+                  nearest    = q.distance(polyline[i]);
+                  snapped[i] = q;
+                }
+            }
+        }
+      for (const unsigned int end : {0u, n - 1})
+        {
+          double nearest = distance;
+          bool   moved   = false;
+          for (const auto *line : lines)
+            for (const Point<2> &c : ground_crossings(section.ground, *line))
+              if (c.distance(polyline[end]) < nearest)
+                {
+                  nearest      = c.distance(polyline[end]);
+                  snapped[end] = c;
+                  moved        = true;
+                }
+          // Just above the ground, as every end of the search.
+          if (moved)
+            snapped[end] +=
+              1e-6 * (snapped[end] - snapped[end == 0 ? 1 : n - 2]);
+        }
+      return snapped;
+    }
+
     void
     screen_polylines(const le::Section             &section,
                      const double                   base_elevation,
                      const SurfaceSearchParameters &settings,
+                     const double                   snap_distance,
                      SurfaceSearchResult           &result)
     {
       Timer timer;
       result.non_circular        = true;
+      result.snap_distance       = snap_distance;
       result.polyline_method_key = le::method_key(settings.polyline_method);
       const unsigned int n       = settings.n_polyline_vertices;
       const auto         screen  = [&](const std::vector<Point<2>> &line,
@@ -301,6 +416,25 @@ namespace fdem
                   }
               if (!moved)
                 h /= 2;
+            }
+          // The optimum onto the layer lines it runs along: one a few
+          // millimetres from a layer boundary leaves sliver cells between
+          // the two lines in the contact evaluation's mesh, whose nodes have
+          // no normal. Screened again, so that the factor that goes with the
+          // evaluated polyline is its own; if snapping makes it inadmissible,
+          // the optimum stays as it is.
+          if (snap_distance > 0)
+            {
+              const std::vector<Point<2>> snapped =
+                snap_polyline(section,
+                              result.surfaces[optimum].polyline,
+                              snap_distance);
+              if (snapped != result.surfaces[optimum].polyline &&
+                  screen(snapped, "polyline snapped").valid)
+                {
+                  optimum = result.surfaces.size() - 1;
+                  ++result.n_polyline_snapped;
+                }
             }
           result.polyline_optima.push_back(optimum);
         }

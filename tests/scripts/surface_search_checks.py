@@ -7,6 +7,7 @@ program as a user does:
     surface_search_checks.py invariance EXE PRM  the same search in N, mm, MPa
     surface_search_checks.py noncircular-planar EXE PRM   polylines on a plane
     surface_search_checks.py weak-layer EXE PRM           along a weak layer
+    surface_search_checks.py noncircular-contact-choice EXE PRM  chosen by contact K
     surface_search_checks.py noncircular-invariance EXE PRM PRM SCALE
     surface_search_checks.py noncircular-interslices EXE PRM  polylines in blocks
 
@@ -250,7 +251,7 @@ def weak_layer(exe, prm):
         line = minimum["polyline"]
         check_admissible(result, line)
         # Clearly below the circles: a circle only touches the layer, a
-        # polyline follows it. Measured 1.061 against 1.227 (13.5 % lower);
+        # polyline follows it. Measured 1.0607 against 1.2272 (13.6 % lower);
         # a margin of 10 % shows that the search found the layer.
         check("the polyline's Spencer factor is clearly below the best circle's",
               K < 0.9 * circle_K, f"{K} against {circle_K}")
@@ -281,13 +282,11 @@ def weak_layer(exe, prm):
         F_wedge, _ = le.spencer(section, wedge, n_slices=400)
         check("the search's polyline is not above an engineer's wedge along the layer",
               K <= F_wedge * (1 + 1e-3), f"{K} against {F_wedge}")
-        # The polyline's contact evaluation: recorded in search.csv, certified
-        # or not. The optimum hugs the layer's lower boundary (2 mm above it,
-        # measured): the screening mesh of 2 m then has slivers between the
-        # two lines, and the evaluation fails (a node of the surface without
-        # a normal, the interface check's one line; before it an SVD error on
-        # NaN), which the search records and goes on. The critical surface is then the
-        # lowest certified contact K's.
+        # The polyline's contact evaluation: recorded in search.csv with its
+        # outcome. The optimum hugs the layer's lower boundary (2 mm above it,
+        # measured); snapped onto it the evaluation is certified (checked in
+        # noncircular_contact_choice()). The critical surface is the lowest
+        # certified contact K's.
         evaluated = [r for r in rows if r["stage"] == "polyline contact"]
         check("the polyline's contact evaluation is in search.csv with its outcome",
               len(evaluated) == 1 and evaluated[0]["status"] != "", str(evaluated))
@@ -297,6 +296,71 @@ def weak_layer(exe, prm):
               search["critical"]["contact_K"], float(lowest["contact_K"]), 1e-11, True)
         print(f"circle {circle_K:.5f}, polyline {K:.5f}, wedge {F_wedge:.5f}, "
               f"contact K {search['critical']['K']}")
+
+
+def noncircular_contact_choice(exe, prm):
+    # The weak-layer case (weak_layer.prm): the optimum runs 1 to 3 mm above
+    # the layer's lower boundary y = 23.5; snapped onto it, its contact
+    # evaluation on the 2 m screening mesh is certified (without snapping
+    # the mesh has slivers there and it fails: bad_input.sliver_without_normal),
+    # below the circle's certified contact K, and the critical surface is
+    # that polyline, chosen by the contact K.
+    with fdem_run.temporary_run(exe, prm) as result:
+        summary, search, rows = search_outputs(result)
+        polylines = search["non_circular"]
+        snap = polylines["snap_distance"]
+        # A tenth of the larger element size on the sliding surface: the
+        # screening mesh's 2 m here.
+        close("the snap distance", snap, 0.2, 1e-12, True)
+        snapped = [r for r in rows if r["stage"] == "polyline snapped"]
+        check("an optimum was snapped", len(snapped) >= 1 and
+              polylines["counts"]["snapped"] >= 1, f"{len(snapped)} rows, counts "
+              f"{polylines['counts']}")
+        contact = [r for r in rows if r["stage"] == "polyline contact"]
+        check("one polyline evaluated by the contact method", len(contact) == 1,
+              str(len(contact)))
+        row = contact[0]
+        check("it is a snapped optimum", any(r["polyline"] == row["polyline"] for r in snapped),
+              row["polyline"])
+        line = [[float(v) for v in p.split()] for p in row["polyline"].split(";")]
+        # Snapped: every interior vertex on the layer's boundaries (12 digits
+        # in search.csv) or at least the snap distance from them.
+        for p in line[1:-1]:
+            gap = min(abs(p[1] - 23.5), abs(p[1] - 24.5))
+            check("an interior vertex on a layer boundary or clear of it",
+                  gap <= 1e-9 or gap >= snap, f"{p}, {gap:.3g} from a boundary")
+        check("a vertex on the layer's lower boundary",
+              any(abs(p[1] - 23.5) <= 1e-9 for p in line[1:-1]), str(line))
+        check("its contact K is certified", row["certified"] == "1", row["status"])
+        circles = [r for r in rows if r["stage"] in ("contact", "contact refinement") and
+                   r["certified"] == "1"]
+        check("a circle's contact K is certified", len(circles) >= 1,
+              str([r["status"] for r in rows if r["stage"].startswith("contact")]))
+        K, circle_K = float(row["contact_K"]), min(float(r["contact_K"]) for r in circles)
+        check("the polyline's contact K is below the best circle's", K < circle_K,
+              f"{K} against {circle_K}")
+        critical = search["critical"]
+        check("the critical surface is that polyline, chosen by the contact K",
+              critical["shape"] == "polyline" and critical["chosen_by"] == "contact K",
+              f"{critical['shape']}, chosen by {critical['chosen_by']}")
+        for p, q in zip(line, critical["polyline"]):
+            for d in range(2):
+                close("the critical polyline's vertex", q[d], p[d], 1e-10, True)
+        close("the critical surface's contact K", critical["contact_K"], K, 1e-11, True)
+        # The contact K against Spencer on the same polyline (50 slices, the
+        # screening's) and the run's K (1 m mesh) against Spencer with 400
+        # slices: measured +1.67 % and +2.17 % (the contact K above limit
+        # equilibrium by a few per cent, as on the paper's slope,
+        # doc/paper_slope.md; 2 m to 1 m moves it by 0.5 %). 3 % keeps a
+        # margin of 0.8 points above the larger for the mesh and Gmsh.
+        close("its contact K against its Spencer factor", K, float(row["le_K"]), 0.03, True)
+        check("the run's K on the critical polyline (1 m mesh) is certified",
+              critical["certified"] and math.isfinite(critical["K"]), f"K = {critical['K']}")
+        close("the run's K against Spencer (400 slices) on the critical polyline", critical["K"],
+              critical["limit_equilibrium"]["spencer"], 0.03, True)
+        print(f"polyline contact K {K:.5f}, Spencer {float(row['le_K']):.5f}, "
+              f"circle contact K {circle_K:.5f}, run's K {critical['K']}, "
+              f"Spencer (400 slices) {critical['limit_equilibrium'].get('spencer')}")
 
 
 def noncircular_interslices(exe, prm):
@@ -349,5 +413,6 @@ if __name__ == "__main__":
     what, exe, *args = sys.argv[1:]
     {"paper": paper, "planar": planar, "invariance": invariance,
      "noncircular-planar": noncircular_planar, "weak-layer": weak_layer,
+     "noncircular-contact-choice": noncircular_contact_choice,
      "noncircular-invariance": noncircular_invariance,
      "noncircular-interslices": noncircular_interslices}[what](exe, *args)

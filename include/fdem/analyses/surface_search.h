@@ -92,10 +92,18 @@ namespace fdem
       int polyline_minimum = -1;
       /** Index of the polyline made from the best circle (-1: none). */
       int polyline_start = -1;
-      /** Index of each start's optimum, in the order of the starts. */
+      /**
+       * Index of each start's optimum, in the order of the starts: the
+       * optimum snapped onto the layer lines (snap_polyline()) where that
+       * moved it and left it valid.
+       */
       std::vector<unsigned int> polyline_optima;
-      double      seconds_polyline = 0, seconds_polyline_contact = 0;
-      std::string polyline_method_key;
+      /** Snap distance of the optima (length; 0: no snapping). */
+      double snap_distance = 0;
+      /** Optima that snapping moved and left valid. */
+      unsigned int n_polyline_snapped = 0;
+      double       seconds_polyline = 0, seconds_polyline_contact = 0;
+      std::string  polyline_method_key;
     };
 
     /**
@@ -124,16 +132,35 @@ namespace fdem
                        const unsigned int                   n_vertices);
 
     /**
+     * @p polyline (a search's polyline: its ends just above the ground)
+     * with its vertices that lie within @p distance of a layer line of
+     * @p section (a boundary between two layers, or a named weak layer)
+     * moved onto the nearest point of the nearest such line, and each end
+     * within @p distance of a point where such a line meets the ground
+     * moved along the ground to that point (then lengthened by 1e-6 of its
+     * segment, as every end of the search). A surface that runs a few
+     * millimetres from a layer boundary leaves sliver cells between the two
+     * lines in the mesh; on the line it shares the boundary's edges.
+     */
+    std::vector<dealii::Point<2>>
+    snap_polyline(const limit_equilibrium::Section    &section,
+                  const std::vector<dealii::Point<2>> &polyline,
+                  const double                         distance);
+
+    /**
      * The limit-equilibrium part of the non-circular stage: from each of
      * the best circles of distinct centres in @p result (Contact
      * candidates of them), the circle as a polyline, its vertices optimised
-     * by a coordinate search (surface_search_polyline.cc). Appends every
-     * polyline to @p result and sets its counts and minimum.
+     * by a coordinate search (surface_search_polyline.cc), the optimum then
+     * snapped onto the layer lines within @p snap_distance (0: not) and
+     * screened again. Appends every polyline to @p result and sets its
+     * counts, minimum and optima.
      */
     void
     screen_polylines(const limit_equilibrium::Section &section,
                      const double                      base_elevation,
                      const SurfaceSearchParameters    &settings,
+                     const double                      snap_distance,
                      SurfaceSearchResult              &result);
 
     /**
