@@ -163,15 +163,16 @@ namespace fdem
               states = last_states = outcome.states;
             return solution;
           };
-          // Every sample starts from the initial states with a fresh
-          // factorisation, as the deterministic K did; at Safety
-          // factor/Initial factor (the reference) or, given a @p start, at
-          // its predicted K below its limit, that iteration taken only if
-          // certified, else the reference decides (iterate_from()). Not
-          // from the limit state at the means: where every pair slips,
-          // K* = K at any K where that state is static (measured on the
-          // paper's slope: one step, K certified below the sample's own,
-          // FOSM's dK/dc half the true one).
+          // Every sample starts with a fresh factorisation: given a
+          // @p start, at its predicted K below its limit from the warm
+          // statuses (set_warm_states()), that iteration taken only if
+          // certified, else (and without a start) the reference decides
+          // (iterate_from()): at Safety factor/Initial factor from the
+          // initial states, as the deterministic K. Never from the limit
+          // state at the means: where every pair slips, K* = K at any K
+          // where that state is static (measured on the paper's slope: one
+          // step, K certified below the sample's own, FOSM's dK/dc half the
+          // true one).
           const auto reset = [&]() {
             model.forget_mixed_factorization();
             states = start_states;
