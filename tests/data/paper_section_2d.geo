@@ -1,0 +1,12 @@
+// The paper's section (paper_section.geo) as a 2D model: the reference for
+// tests/three_d/plane_strain.prm, meshed exactly as the extruded model's
+// section (paper_section_extruded.geo).
+h = 2;
+Include "paper_section.geo";
+Physical Surface("sliding mass") = {1};
+Physical Surface("foundation") = {2};
+Physical Curve("sliding surface") = {sliding[]};
+Physical Curve("ground") = {3, 4, 5, 6, 7};
+Physical Curve("left") = {8};
+Physical Curve("right") = {2};
+Physical Curve("bottom") = {1};
