@@ -36,6 +36,13 @@
                                          2D statuses once per node plane; with
                                          REFERENCE (2D, another mesh of the
                                          section), K within TOL of its K
+  run_checks.py plane-strain-contact EXE CASE.prm CASE_2D.prm WIDTH TOL
+                                         one contact solve at full strength
+                                         of a 3D model of WIDTH with rollers
+                                         on its sides and of its 2D section:
+                                         both converge, the 3D total normal
+                                         force per unit width within TOL of
+                                         the 2D one
   run_checks.py mpi EXE CASE.prm [N]     the case serially and with
                                          `mpirun -np N` (default 2) in separate
                                          folders: the same safety factor to
@@ -374,6 +381,30 @@ def check_plane_strain(exe, prm, prm_2d, reference=None, tolerance=None):
         assert abs(K3 / K_ref - 1) <= float(tolerance), (K3, K_ref)
 
 
+def check_plane_strain_contact(exe, prm, prm_2d, width, tolerance):
+    """One contact solve at full strength (Safety factor/Compute = false)
+    of @p prm, a 3D model of @p width (m) along the axis of a cylindrical
+    sliding surface with rollers on its sides, and of @p prm_2d, its
+    section in 2D: both converge, and the 3D interface's total normal
+    force per unit width is the 2D one within @p tolerance (relative), the
+    discretisation error of the 2D total measured over meshes
+    (doc/verification.md)."""
+    totals = []
+    for path in (prm, prm_2d):
+        summary = completed_run(exe, path, settings={"Safety factor/Compute": "false",
+                                                     "Output/Report": "false"}).summary
+        assert summary["status"] == "completed", summary["status"]
+        interface = summary["interfaces"][0]
+        totals.append(interface["total_normal_force"])
+        print(f"dimension {summary['dimension']}: {summary['n_dofs']} dofs, {interface['n_pairs']} pairs "
+              f"({interface['n_stick']} stick, {interface['n_slip']} slip, {interface['n_open']} open), "
+              f"total normal force {interface['total_normal_force']!r}")
+    per_width = totals[0] / float(width)
+    print(f"3D per unit width {per_width!r} against 2D {totals[1]!r}: relative difference "
+          f"{per_width / totals[1] - 1:.2e} (tolerance {tolerance})")
+    assert abs(per_width / totals[1] - 1) <= float(tolerance), (per_width, totals[1])
+
+
 def check_wedge(exe, prm, tolerance="1e-5", max_share="0.05"):
     from wedge_reference import safety_factor_of_run
     result = completed_run(exe, prm)
@@ -512,6 +543,7 @@ if __name__ == "__main__":
          "deterministic": check_deterministic,
          "wedge": check_wedge, "mpi": check_mpi,
          "plane-strain": check_plane_strain,
+         "plane-strain-contact": check_plane_strain_contact,
          "certified": check_certified, "fe-stress": check_fe_stress,
          "mesh-convergence": check_mesh_convergence,
          "stiffness-consistency": check_stiffness_consistency,
