@@ -3,6 +3,7 @@
 #include <fdem/contact/interface_pairs.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -52,6 +53,62 @@ namespace fdem
             frame[2] = cross_product_3d(n, t1);
           }
         return frame;
+      }
+
+      /**
+       * The direction along which the Dirichlet conditions of both blocks
+       * hold the relative displacement of a pair's nodes, or zero if there
+       * is none or more than one: the direction normal to every
+       * displacement that the nodes' constraints leave free (rollers with
+       * the same normal on both sides, where a sliding surface meets a
+       * side of the model). A component tied to dofs of other nodes (a
+       * plate) counts as free.
+       */
+      template <int dim>
+      Tensor<1, dim>
+      held_direction(const blocks::ElasticBlock<dim>  &block_I,
+                     const blocks::InterfaceNode<dim> &a,
+                     const blocks::ElasticBlock<dim>  &block_J,
+                     const blocks::InterfaceNode<dim> &b)
+      {
+        SymmetricTensor<2, dim> free; // sum of v v^T over free directions
+        for (const auto &[block, node] :
+             {std::make_pair(&block_I, &a), std::make_pair(&block_J, &b)})
+          {
+            const AffineConstraints<double> &c = block->dirichlet_constraints;
+            for (unsigned int k = 0; k < dim; ++k)
+              {
+                Tensor<1, dim> v;
+                v[k]                = 1;
+                bool off_node_entry = false;
+                if (c.is_constrained(node->dofs[k]))
+                  {
+                    for (const auto &entry :
+                         *c.get_constraint_entries(node->dofs[k]))
+                      off_node_entry |=
+                        std::find(node->dofs.begin(),
+                                  node->dofs.end(),
+                                  entry.first) == node->dofs.end();
+                    if (!off_node_entry)
+                      continue; // follows the node's free components
+                  }
+                else
+                  // The components that follow this one move with it.
+                  for (unsigned int j = 0; j < dim; ++j)
+                    if (j != k && c.is_constrained(node->dofs[j]))
+                      for (const auto &entry :
+                           *c.get_constraint_entries(node->dofs[j]))
+                        if (entry.first == node->dofs[k])
+                          v[j] += entry.second;
+                free += symmetrize(outer_product(v, v));
+              }
+          }
+        const auto   eigen   = eigenvectors(free); // descending eigenvalues
+        const double largest = eigen[0].first;
+        if (largest <= 0 || eigen[dim - 1].first > 1e-12 * largest ||
+            (dim > 1 && eigen[dim - 2].first <= 1e-12 * largest))
+          return Tensor<1, dim>();
+        return eigen[dim - 1].second;
       }
 
       /** Typical node spacing around a node of tributary area @p area. */
@@ -144,7 +201,35 @@ namespace fdem
           pair.dofs_I     = a.dofs;
           pair.dofs_J     = b.dofs;
           pair.frame = local_frame<dim>(b.area_normal / b.area_normal.norm());
-          pair.area  = b.area;
+          if constexpr (dim == 3)
+            {
+              // A direction held by rollers on both sides must be an axis
+              // of the frame, where pair_rows() frees its force; the mean
+              // normal of an unstructured mesh's facets is not normal to
+              // the roller there, and C_pp would be singular
+              // (doc/theory.md, "The 3D slope"). The normal is turned into
+              // the roller's plane, or onto its normal.
+              const Tensor<1, dim> m = held_direction(block_I, a, block_J, b);
+              bool                 an_axis = m.norm() == 0;
+              for (unsigned int i = 0; i < dim; ++i)
+                an_axis |= std::abs(std::abs(pair.frame[i] * m) - 1) <= 1e-12;
+              if (!an_axis)
+                {
+                  const Tensor<1, dim> n     = pair.frame[0];
+                  const double         along = n * m;
+                  if (std::abs(along) > std::sqrt(0.5))
+                    pair.frame = local_frame<dim>(along > 0 ? m : -m);
+                  else
+                    {
+                      Tensor<1, dim> turned = n - along * m;
+                      turned /= turned.norm();
+                      pair.frame[0] = turned;
+                      pair.frame[1] = m;
+                      pair.frame[2] = cross_product_3d(turned, m);
+                    }
+                }
+            }
+          pair.area        = b.area;
           pair.initial_gap = std::max(0.0, best_gap);
           interface.pairs.push_back(pair);
         }

@@ -29,6 +29,20 @@
                                          (default 1e-5); where a plane lifts
                                          off, it must carry under SHARE
                                          (default 0.05) of the normal force
+  run_checks.py plane-strain EXE CASE.prm CASE_2D.prm [REFERENCE.prm TOL]
+                                         a 2D model extruded along z with
+                                         rollers on its ends: both certified,
+                                         the same K to 2e-6 relative and the
+                                         2D statuses once per node plane; with
+                                         REFERENCE (2D, another mesh of the
+                                         section), K within TOL of its K
+  run_checks.py plane-strain-contact EXE CASE.prm CASE_2D.prm WIDTH TOL
+                                         one contact solve at full strength
+                                         of a 3D model of WIDTH with rollers
+                                         on its sides and of its 2D section:
+                                         both converge, the 3D total normal
+                                         force per unit width within TOL of
+                                         the 2D one
   run_checks.py mpi EXE CASE.prm [N]     the case serially and with
                                          `mpirun -np N` (default 2) in separate
                                          folders: the same safety factor to
@@ -329,6 +343,68 @@ def check_deterministic(exe, prm):
     assert texts[0] == texts[1], "two runs of the same input differ"
 
 
+def check_plane_strain(exe, prm, prm_2d, reference=None, tolerance=None):
+    """The plane-strain limit: @p prm, a 2D model (@p prm_2d) extruded along
+    z with rollers on both ends, gives the 2D model's K, both certified.
+    The 2D solution, constant along z, solves the discrete 3D model exactly
+    when the 3D mesh is the 2D mesh extruded (the elements along z hold
+    constants); so the two K differ only by the iteration's stopping:
+    each is certified to Safety factor/Tolerance (1e-6 relative), and
+    2e-6 allows both ends of that. The statuses of the certified state are
+    the 2D ones once per node plane along z. With @p reference, another 2D
+    model of the same section (the slope generator's mesh), K must also lie
+    within @p tolerance of its K: the 2D discretisation error, measured
+    over meshes (doc/verification.md)."""
+    runs = {}
+    for name, path in (("3D", prm), ("2D", prm_2d)) + ((("reference", reference),) if reference else ()):
+        summary = completed_run(exe, path).summary
+        assert summary["converged"] and summary["certificate"]["holds"], (name, summary["certificate"])
+        c = summary["certificate"]
+        state = [s for s in summary["iterations"] if s["K"] == c["K"] and s["K_star"] == c["K_star"]][-1]
+        runs[name] = (summary, state)
+        print(f"{name}: dimension {summary['dimension']}, {summary['n_dofs']} dofs, "
+              f"{summary['interfaces'][0]['n_pairs']} pairs, K = {summary['safety_factor']!r} "
+              f"({len(summary['iterations'])} steps); certified state: {state['n_stick']} stick, "
+              f"{state['n_slip']} slip, {state['n_open']} open, F_R = {state['F_R']!r}")
+    (s3, state3), (s2, state2) = runs["3D"], runs["2D"]
+    assert s3["dimension"] == 3 and s2["dimension"] == 2
+    K3, K2 = s3["safety_factor"], s2["safety_factor"]
+    print(f"3D against 2D: relative difference {K3 / K2 - 1:.2e} (tolerance 2e-6)")
+    assert abs(K3 / K2 - 1) <= 2e-6, (K3, K2)
+    planes, rest = divmod(s3["interfaces"][0]["n_pairs"], s2["interfaces"][0]["n_pairs"])
+    assert rest == 0, "the 3D pairs are not the 2D pairs once per node plane"
+    for status in ("n_stick", "n_slip", "n_open"):
+        assert state3[status] == planes * state2[status], (status, state3[status], state2[status])
+    if reference:
+        K_ref = runs["reference"][0]["safety_factor"]
+        print(f"3D against the reference: relative difference {K3 / K_ref - 1:.2e} (tolerance {tolerance})")
+        assert abs(K3 / K_ref - 1) <= float(tolerance), (K3, K_ref)
+
+
+def check_plane_strain_contact(exe, prm, prm_2d, width, tolerance):
+    """One contact solve at full strength (Safety factor/Compute = false)
+    of @p prm, a 3D model of @p width (m) along the axis of a cylindrical
+    sliding surface with rollers on its sides, and of @p prm_2d, its
+    section in 2D: both converge, and the 3D interface's total normal
+    force per unit width is the 2D one within @p tolerance (relative), the
+    discretisation error of the 2D total measured over meshes
+    (doc/verification.md)."""
+    totals = []
+    for path in (prm, prm_2d):
+        summary = completed_run(exe, path, settings={"Safety factor/Compute": "false",
+                                                     "Output/Report": "false"}).summary
+        assert summary["status"] == "completed", summary["status"]
+        interface = summary["interfaces"][0]
+        totals.append(interface["total_normal_force"])
+        print(f"dimension {summary['dimension']}: {summary['n_dofs']} dofs, {interface['n_pairs']} pairs "
+              f"({interface['n_stick']} stick, {interface['n_slip']} slip, {interface['n_open']} open), "
+              f"total normal force {interface['total_normal_force']!r}")
+    per_width = totals[0] / float(width)
+    print(f"3D per unit width {per_width!r} against 2D {totals[1]!r}: relative difference "
+          f"{per_width / totals[1] - 1:.2e} (tolerance {tolerance})")
+    assert abs(per_width / totals[1] - 1) <= float(tolerance), (per_width, totals[1])
+
+
 def check_wedge(exe, prm, tolerance="1e-5", max_share="0.05"):
     from wedge_reference import safety_factor_of_run
     result = completed_run(exe, prm)
@@ -466,6 +542,8 @@ if __name__ == "__main__":
          "no-equilibrium": check_no_equilibrium,
          "deterministic": check_deterministic,
          "wedge": check_wedge, "mpi": check_mpi,
+         "plane-strain": check_plane_strain,
+         "plane-strain-contact": check_plane_strain_contact,
          "certified": check_certified, "fe-stress": check_fe_stress,
          "mesh-convergence": check_mesh_convergence,
          "stiffness-consistency": check_stiffness_consistency,
