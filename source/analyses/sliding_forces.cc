@@ -8,6 +8,68 @@ namespace fdem
 {
   namespace analyses
   {
+    namespace
+    {
+      /** @p direction less its part along @p normal, of unit length (zero
+       * if nothing is left). */
+      template <int dim>
+      dealii::Tensor<1, dim>
+      along_plane(const dealii::Tensor<1, dim> &direction,
+                  const dealii::Tensor<1, dim> &normal)
+      {
+        dealii::Tensor<1, dim> t = direction - (direction * normal) * normal;
+        const double           length = t.norm();
+        return length > 0 ? t / length : dealii::Tensor<1, dim>();
+      }
+
+      /**
+       * The 3D sliding force: each pair's (and passive bar's) shear along
+       * the sliding direction, the shear resultant @p resultant projected on
+       * the pair's tangent plane, summed. In plane strain it is the 2D sum
+       * along the surface's tangents; where every shear is along the
+       * resultant (a block on a plane, a wedge at its limit), the magnitude
+       * of the resultant. The magnitude alone is shorter than the shears
+       * along a curved surface (the paper's section extruded: 4 m x 678.82
+       * against 4 m x 710.84 at K = 1), while F_R adds the pairs'
+       * capacities: K* > K at every K, and no K was certified.
+       */
+      template <int dim>
+      double
+      shears_along_sliding_direction(
+        const contact::MixedSystem<dim>    &system,
+        const contact::ContactOutcome<dim> &outcome,
+        const std::vector<bool>            &on_sliding_surface,
+        const dealii::Tensor<1, dim>       &resultant)
+      {
+        if (!outcome.converged())
+          return 0;
+        double sum = 0;
+        for (unsigned int p = 0; p < on_sliding_surface.size(); ++p)
+          if (on_sliding_surface[p] &&
+              outcome.states[p].status != contact::PairStatus::open)
+            {
+              const auto            &frame = system.pair(p).frame;
+              dealii::Tensor<1, dim> shear;
+              for (unsigned int i = 1; i < dim; ++i)
+                shear += outcome.solution.forces[dim * p + i] * frame[i];
+              sum += shear * along_plane(resultant, frame[0]);
+            }
+        for (unsigned int p = system.n_contact_pairs(); p < system.n_pairs();
+             ++p)
+          {
+            const contact::BarLink<dim> &bar = system.bar(p);
+            dealii::Tensor<1, dim>       local;
+            for (unsigned int i = 0; i < dim; ++i)
+              local[i] = outcome.solution.forces[dim * p + i];
+            const dealii::Tensor<1, dim> force =
+              dealii::transpose(bar.link.frame) * local;
+            const dealii::Tensor<1, dim> n = bar.surface_frame[0];
+            sum += (force - (force * n) * n) * along_plane(resultant, n);
+          }
+        return std::abs(sum);
+      }
+    } // namespace
+
     template <int dim>
     ReducedStrengthSolution
     resisting_and_sliding_forces(
@@ -73,7 +135,12 @@ namespace fdem
                 s.resisting_force += capacity * (axis - (axis * n) * n).norm();
               }
           }
-      s.sliding_force = dim == 2 ? std::abs(sum_f_t) : sum_tangential.norm();
+      s.sliding_force = dim == 2 ?
+                          std::abs(sum_f_t) :
+                          shears_along_sliding_direction(system,
+                                                         outcome,
+                                                         on_sliding_surface,
+                                                         sum_tangential);
       // The slip rows fix each |f_t| at its reduced strength exactly, so
       // F_tau = F_R holds to round-off of the solve (1e-13 measured);
       // 1e-10 leaves room and is far below any Safety factor/Tolerance.

@@ -168,10 +168,10 @@ namespace fdem
      * in the paper; open pairs carry none). F_tau is the sliding force: in
      * 2D |sum f_t|, the tangential forces summed along the surface's tangent
      * as in the paper; in 3D, where a pair's tangents have no common
-     * direction, the magnitude of the sum of the pairs' tangential force
-     * vectors, i.e. the shear resultant along the direction in which it
-     * drives the sliding mass (on a wedge at its limit: the line of
-     * intersection).
+     * direction, each pair's shear along the sliding direction on its
+     * tangent plane (the shear resultant projected on it), summed: the 2D
+     * sum in plane strain, the resultant's magnitude where every shear is
+     * along it (a plane, a wedge at its limit).
      */
     template <int dim>
     ReducedStrengthSolution
