@@ -525,7 +525,7 @@ TEST(SafetyFactorIteration, FoldOfAllSlippingStatesIsReachedInFewSteps)
   const double                       L = 0.7266, end = L * (1 - 1.3e-6);
   const auto                         result = analyses::iterate(
     [&](const double K) {
-      const double d = L - K;
+      const double                      d = L - K;
       analyses::ReducedStrengthSolution s =
         synthetic_step(K, K + 6 * d * d / (1 + 44 * d), end);
       s.all_slipping = s.converged;

@@ -10,6 +10,20 @@ namespace fdem
   {
     namespace
     {
+      /** The force of passive bar @p p (a link of the mixed system) in
+       * global coordinates. */
+      template <int dim>
+      dealii::Tensor<1, dim>
+      bar_force(const contact::MixedSystem<dim>    &system,
+                const contact::ContactOutcome<dim> &outcome,
+                const unsigned int                  p)
+      {
+        dealii::Tensor<1, dim> local;
+        for (unsigned int i = 0; i < dim; ++i)
+          local[i] = outcome.solution.forces[dim * p + i];
+        return dealii::transpose(system.bar(p).link.frame) * local;
+      }
+
       /** @p direction less its part along @p normal, of unit length (zero
        * if nothing is left). */
       template <int dim>
@@ -57,13 +71,8 @@ namespace fdem
         for (unsigned int p = system.n_contact_pairs(); p < system.n_pairs();
              ++p)
           {
-            const contact::BarLink<dim> &bar = system.bar(p);
-            dealii::Tensor<1, dim>       local;
-            for (unsigned int i = 0; i < dim; ++i)
-              local[i] = outcome.solution.forces[dim * p + i];
-            const dealii::Tensor<1, dim> force =
-              dealii::transpose(bar.link.frame) * local;
-            const dealii::Tensor<1, dim> n = bar.surface_frame[0];
+            const dealii::Tensor<1, dim> force = bar_force(system, outcome, p);
+            const dealii::Tensor<1, dim> n     = system.bar(p).surface_frame[0];
             sum += (force - (force * n) * n) * along_plane(resultant, n);
           }
         return std::abs(sum);
@@ -115,13 +124,9 @@ namespace fdem
           {
             an_elastic_bar |=
               outcome.states[p].status == contact::PairStatus::stick;
-            const contact::BarLink<dim> &bar = system.bar(p);
-            dealii::Tensor<1, dim>       local;
-            for (unsigned int i = 0; i < dim; ++i)
-              local[i] = outcome.solution.forces[dim * p + i];
-            const dealii::Tensor<1, dim> force =
-              dealii::transpose(bar.link.frame) * local;
-            const dealii::Tensor<1, dim> n = bar.surface_frame[0];
+            const contact::BarLink<dim> &bar   = system.bar(p);
+            const dealii::Tensor<1, dim> force = bar_force(system, outcome, p);
+            const dealii::Tensor<1, dim> n     = bar.surface_frame[0];
             sum_f_t += bar.surface_frame[1] * force;
             sum_tangential += force - (force * n) * n;
             for (unsigned int i = 0; i < dim; ++i)
