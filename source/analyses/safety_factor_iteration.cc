@@ -77,9 +77,10 @@ namespace fdem
        * of the cube of the distances (1.3e-5 from 1e-3 below L, 5e-8 from
        * 1.4e-4); with two steps, the secant on sqrt(h). Further away the
        * exponent is below 2 and both overshoot (by 0.8 % from 1.6e-2 below
-       * L). The aim: the lower of that and the power law c (L - K)^p through
-       * the three, which undershoots there by 1 to 3 % of the distance; with
-       * two steps, the secant on h.
+       * L). The aim: the lowest of that, the power law c (L - K)^p through
+       * the three (which undershoots there by 1 to 8 % of the distance) and
+       * K plus a quarter of the three steps' span; with two steps, the
+       * secant on h.
        */
       Fold
       fold_limit(const History &history)
@@ -117,8 +118,8 @@ namespace fdem
         const double limit = K[0] + 2 * g[0] / (-beta + std::sqrt(disc));
         const double power =
           power_law_limit({{K[2], K[1], K[0]}}, {{h[2], h[1], h[0]}});
-        // Not further than the three steps span: beyond, neither model is
-        // known to hold.
+        // Not further than a quarter of the three steps' span: from afar
+        // neither model is known to hold.
         return {limit, std::min({limit, power, K[0] + 0.25 * (K[0] - K[2])})};
       }
 
