@@ -276,7 +276,9 @@ namespace fdem
           *blocks[sides[0]],
           sides[1],
           *blocks[sides[1]],
-          parameters.interfaces.at(name).search_distance));
+          parameters.interfaces.at(name).search_distance,
+          mesh.surface_normals.count(name) ? mesh.surface_normals.at(name) :
+                                             nullptr));
         soil_strengths.push_back(
           parameters.interfaces.at(name).strength_from_material ?
             blocks::soil_strength_at_nodes(*blocks[sides[0]],

@@ -111,6 +111,30 @@ namespace fdem
         return eigen[dim - 1].second;
       }
 
+      /**
+       * The normal of a pair at @p position: the surface's exact normal
+       * where the mesh's generator knows it, in the sense of the facets'
+       * mean normal @p facets_normal; else that. The facets' normal stays
+       * where the exact one is more than 60 degrees from it (not a point of
+       * that surface).
+       */
+      template <int dim>
+      Tensor<1, dim>
+      pair_normal(
+        const Tensor<1, dim>                                    &facets_normal,
+        const Point<dim>                                        &position,
+        const std::function<Tensor<1, dim>(const Point<dim> &)> &surface_normal)
+      {
+        if (!surface_normal)
+          return facets_normal;
+        Tensor<1, dim> exact  = surface_normal(position);
+        const double   length = exact.norm();
+        if (!(length > 0) || !std::isfinite(length))
+          return facets_normal;
+        exact /= (exact * facets_normal < 0 ? -length : length);
+        return exact * facets_normal > 0.5 ? exact : facets_normal;
+      }
+
       /** Typical node spacing around a node of tributary area @p area. */
       template <int dim>
       double
@@ -122,13 +146,15 @@ namespace fdem
 
     template <int dim>
     Interface<dim>
-    make_interface(const std::string               &name,
-                   const types::boundary_id         face_group,
-                   const unsigned int               index_I,
-                   const blocks::ElasticBlock<dim> &block_I,
-                   const unsigned int               index_J,
-                   const blocks::ElasticBlock<dim> &block_J,
-                   const double                     search_distance)
+    make_interface(
+      const std::string                                       &name,
+      const types::boundary_id                                 face_group,
+      const unsigned int                                       index_I,
+      const blocks::ElasticBlock<dim>                         &block_I,
+      const unsigned int                                       index_J,
+      const blocks::ElasticBlock<dim>                         &block_J,
+      const double                                             search_distance,
+      const std::function<Tensor<1, dim>(const Point<dim> &)> &surface_normal)
     {
       Interface<dim> interface;
       interface.name       = name;
@@ -200,7 +226,8 @@ namespace fdem
           pair.position_J = b.position;
           pair.dofs_I     = a.dofs;
           pair.dofs_J     = b.dofs;
-          pair.frame = local_frame<dim>(b.area_normal / b.area_normal.norm());
+          pair.frame      = local_frame<dim>(pair_normal<dim>(
+            b.area_normal / b.area_normal.norm(), b.position, surface_normal));
           if constexpr (dim == 3)
             {
               // A direction held by rollers on both sides must be an axis
@@ -284,7 +311,8 @@ namespace fdem
                    const blocks::ElasticBlock<2> &,
                    const unsigned int,
                    const blocks::ElasticBlock<2> &,
-                   const double);
+                   const double,
+                   const std::function<Tensor<1, 2>(const Point<2> &)> &);
     template Interface<3>
     make_interface(const std::string &,
                    const types::boundary_id,
@@ -292,6 +320,7 @@ namespace fdem
                    const blocks::ElasticBlock<3> &,
                    const unsigned int,
                    const blocks::ElasticBlock<3> &,
-                   const double);
+                   const double,
+                   const std::function<Tensor<1, 3>(const Point<3> &)> &);
   } // namespace contact
 } // namespace fdem

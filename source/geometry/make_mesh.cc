@@ -32,26 +32,42 @@ namespace fdem
   {
     using Source = parameters::GeometryParameters::Source;
 
+    namespace
+    {
+      /** The rotation R of x -> R (s x) + t. */
+      template <int dim>
+      Tensor<2, dim>
+      rotation_of(const parameters::GeometryParameters &geometry)
+      {
+        const double angle = geometry.rotation_angle * numbers::PI / 180;
+        if constexpr (dim == 2)
+          return Physics::Transformations::Rotations::rotation_matrix_2d(angle);
+        else
+          return Physics::Transformations::Rotations::rotation_matrix_3d(
+            geometry.rotation_axis / geometry.rotation_axis.norm(), angle);
+      }
+
+      /** The translation t of x -> R (s x) + t. */
+      template <int dim>
+      Tensor<1, dim>
+      translation_of(const parameters::GeometryParameters &geometry)
+      {
+        const std::vector<double> &t = geometry.translation;
+        Tensor<1, dim>             translation;
+        for (unsigned int d = 0; d < std::min<std::size_t>(dim, t.size()); ++d)
+          translation[d] = t[d];
+        return translation;
+      }
+    } // namespace
+
     template <int dim>
     Point<dim>
     transformed_point(const parameters::GeometryParameters &geometry,
                       const Point<dim>                     &x)
     {
-      const std::vector<double> &t = geometry.translation;
-      Tensor<1, dim>             translation;
-      for (unsigned int d = 0; d < std::min<std::size_t>(dim, t.size()); ++d)
-        translation[d] = t[d];
-
-      const double   angle = geometry.rotation_angle * numbers::PI / 180;
-      Tensor<2, dim> rotation;
-      if constexpr (dim == 2)
-        rotation =
-          Physics::Transformations::Rotations::rotation_matrix_2d(angle);
-      else
-        rotation = Physics::Transformations::Rotations::rotation_matrix_3d(
-          geometry.rotation_axis / geometry.rotation_axis.norm(), angle);
-
-      return Point<dim>(rotation * (geometry.scale_factor * x) + translation);
+      return Point<dim>(rotation_of<dim>(geometry) *
+                          (geometry.scale_factor * x) +
+                        translation_of<dim>(geometry));
     }
 
     template <int dim>
@@ -68,6 +84,15 @@ namespace fdem
         vertex = transformed_point(geometry, vertex);
       for (auto &[name, point] : mesh.standing_water)
         point = transformed_point(geometry, point);
+      // A normal at x' = R (s x) + t is R times the normal at x (s > 0 keeps
+      // its sense).
+      const Tensor<2, dim> R           = rotation_of<dim>(geometry);
+      const Tensor<1, dim> translation = translation_of<dim>(geometry);
+      const double         s           = geometry.scale_factor;
+      for (auto &[name, normal] : mesh.surface_normals)
+        normal = [R, translation, s, original = normal](const Point<dim> &x) {
+          return R * original(Point<dim>(transpose(R) * (x - translation) / s));
+        };
     }
 
 

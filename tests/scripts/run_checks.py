@@ -67,6 +67,13 @@
                                          Geometry/Slope/Mesh size H: every run
                                          certified, and the largest K over the
                                          smallest within TOL relative
+  run_checks.py reference-factor EXE CASE.prm REF.prm TOL
+                                         both certified, not stiffness-
+                                         dependent, their K within TOL
+  run_checks.py undrained-sphere EXE CASE.prm XC,YC,ZC R C GAMMA TOL
+                                         certified, and within TOL of the
+                                         exact phi = 0 K of the sphere
+                                         (undrained_sphere.py)
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -381,6 +388,42 @@ def check_plane_strain(exe, prm, prm_2d, reference=None, tolerance=None):
         assert abs(K3 / K_ref - 1) <= float(tolerance), (K3, K_ref)
 
 
+def certified_run(exe, prm):
+    """The run of @p prm, whose K must be certified (a fixed point or a
+    bracket) and not stiffness-dependent; its summary."""
+    summary = completed_run(exe, prm).summary
+    c = summary["certificate"]
+    assert summary["converged"] and c["holds"], c
+    print(f"{os.path.basename(prm)}: {summary['n_dofs']} dofs, "
+          f"{summary['interfaces'][0]['n_pairs']} pairs, K = {summary['safety_factor']!r} "
+          f"({c['kind']}, {len(summary['iterations'])} steps), stiffness change "
+          f"{summary['stiffness_sensitivity']['relative_change']!r}")
+    assert not any("stiffness" in w for w in summary["warnings"]), summary["warnings"]
+    return summary
+
+
+def check_reference_factor(exe, prm, reference_prm, tolerance):
+    """@p prm and @p reference_prm (another model of the same slope: the 2D
+    section of a plane-strain case) both certified, their K within
+    @p tolerance relative."""
+    K = certified_run(exe, prm)["safety_factor"]
+    K_ref = certified_run(exe, reference_prm)["safety_factor"]
+    print(f"relative difference {K / K_ref - 1:.2e} (tolerance {tolerance})")
+    assert abs(K / K_ref - 1) <= float(tolerance), (K, K_ref)
+
+
+def check_undrained_sphere(exe, prm, centre, radius, cohesion, unit_weight, tolerance):
+    """@p prm, a slope on a sphere with phi = 0, certified and within
+    @p tolerance of the exact K of the rigid mass turning about the
+    sphere's axis (undrained_sphere.py)."""
+    import undrained_sphere  # noqa: E402  needs numpy: /usr/bin/python3
+    K = certified_run(exe, prm)["safety_factor"]
+    exact = undrained_sphere.undrained_sphere_factor(
+        tuple(map(float, centre.split(","))), float(radius), float(cohesion), float(unit_weight))
+    print(f"exact {exact!r}; relative difference {K / exact - 1:.2e} (tolerance {tolerance})")
+    assert abs(K / exact - 1) <= float(tolerance), (K, exact)
+
+
 def check_plane_strain_contact(exe, prm, prm_2d, width, tolerance):
     """One contact solve at full strength (Safety factor/Compute = false)
     of @p prm, a 3D model of @p width (m) along the axis of a cylindrical
@@ -544,6 +587,8 @@ if __name__ == "__main__":
          "wedge": check_wedge, "mpi": check_mpi,
          "plane-strain": check_plane_strain,
          "plane-strain-contact": check_plane_strain_contact,
+         "reference-factor": check_reference_factor,
+         "undrained-sphere": check_undrained_sphere,
          "certified": check_certified, "fe-stress": check_fe_stress,
          "mesh-convergence": check_mesh_convergence,
          "stiffness-consistency": check_stiffness_consistency,

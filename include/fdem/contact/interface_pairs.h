@@ -8,6 +8,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -69,7 +70,10 @@ namespace fdem
      * Pairs the nodes of face group @p face_group on @p block_I with those on
      * @p block_J: coincident nodes, or, within @p search_distance, the node
      * of J found along J's normal. Normals and areas are the consistent
-     * nodal ones of side J (design/formulation.md Sec. 1).
+     * nodal ones of side J (doc/theory.md), except that a pair takes
+     * @p surface_normal at its node, when given (the exact normal of a
+     * generator's surface, MeshDescription::surface_normals), as its frame's
+     * normal.
      */
     template <int dim>
     Interface<dim>
@@ -79,7 +83,9 @@ namespace fdem
                    const blocks::ElasticBlock<dim> &block_I,
                    const unsigned int               index_J,
                    const blocks::ElasticBlock<dim> &block_J,
-                   const double                     search_distance);
+                   const double                     search_distance,
+                   const std::function<Tensor<1, dim>(const Point<dim> &)>
+                     &surface_normal = {});
 
     /**
      * Removes from the last of @p interfaces the pairs of the same two nodes

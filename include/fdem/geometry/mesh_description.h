@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -121,6 +122,21 @@ namespace fdem
        * water-filled tension crack). Empty for Gmsh files.
        */
       std::map<std::string, Point<dim>> standing_water;
+
+      /**
+       * Face groups that lie on a surface the generator knows exactly, by
+       * name: a vector normal to that surface at a point of it (any length,
+       * either sense), moved with the mesh by Geometry/Scale factor,
+       * Rotation and Translation. The node pairs of such a group take it as
+       * their normal instead of the mean normal of the mesh's facets: on a
+       * sphere, a cylinder or a spheroid the body's rotation about the
+       * surface's axis then opens no pair, as on the surface itself, where
+       * the facets' normals tilt by the mesh's irregularity and turn the
+       * mechanism into one the blocks can only follow by deforming
+       * (doc/theory.md, "The 3D slope"). Empty for Gmsh files.
+       */
+      std::map<std::string, std::function<Tensor<1, dim>(const Point<dim> &)>>
+        surface_normals;
 
       /** Where the description came from (file name or generator), for
        * messages. */

@@ -179,6 +179,19 @@ namespace fdem
 
 
 
+    Tensor<1, 3>
+    Slope3D::quadric_gradient(const Point<3> &p) const
+    {
+      const double r2 = radius * radius, b2 = half_length * half_length;
+      Tensor<1, 3> gradient;
+      gradient[0] = (p[0] - centre[0]) / r2;
+      gradient[1] = surface == Surface::cylinder ? 0 : (p[1] - centre[1]) / b2;
+      gradient[2] = (p[2] - centre[2]) / r2;
+      return 2 * gradient;
+    }
+
+
+
     void
     Slope3D::validate() const
     {
@@ -392,7 +405,11 @@ namespace fdem
         gmsh_3d::mesh_near_surfaces(
           sliding_surface, near, 3 * near, r / 4, hexahedra);
       });
-      return extract_current_gmsh_model<3>(name);
+      MeshDescription<3> mesh = extract_current_gmsh_model<3>(name);
+      mesh.surface_normals["sliding surface"] = [slope](const Point<3> &p) {
+        return slope.quadric_gradient(p);
+      };
+      return mesh;
     }
   } // namespace geometry
 } // namespace fdem

@@ -79,6 +79,11 @@ namespace fdem
       double
       quadric(const Point<3> &p) const;
 
+      /** The gradient of quadric() at @p p: normal to the sliding surface
+       * there, pointing out of the sliding mass. */
+      Tensor<1, 3>
+      quadric_gradient(const Point<3> &p) const;
+
       /** Declare the subsection "Slope 3D" (inside "Geometry"). */
       static void
       declare_parameters(ParameterHandler &prm);
@@ -107,7 +112,8 @@ namespace fdem
      * cylinder the ends of the sliding mass too). Gmsh's Delaunay
      * tetrahedra of size 2 h near the sliding surface (within R/4),
      * growing to 6 h, each split into four hexahedra, or tetrahedra of
-     * size h. Opens its own GmshSession.
+     * size h. The face group "sliding surface" carries the surface's exact
+     * normal (MeshDescription::surface_normals). Opens its own GmshSession.
      */
     MeshDescription<3>
     make_slope_3d_mesh(const Slope3D &slope);
