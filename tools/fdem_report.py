@@ -682,6 +682,14 @@ def surface_search_section(folder, summary):
                          f"{p['snapped']} ({number(polylines['snap_distance'], 3)})"))
         rows.append(("polylines evaluated by the contact method (certified)",
                      f"{p['contact_evaluations']} ({p['contact_certified']})"))
+        refinement = polylines.get("contact_refinement", {})
+        if refinement.get("performed"):
+            r = refinement["counts"]
+            rows.append(("best polyline refined by its contact K (moves kept of "
+                         "evaluations)",
+                         f"{number(refinement['from']['contact_K'], 4)} to "
+                         f"{number(refinement['best']['contact_K'], 4)} "
+                         f"({r['moves']} of {r['contact_evaluations']})"))
     out = ["<h2>Surface search</h2>", table(rows)]
     if search.get("minimum_on_grid_edge"):
         out.append('<p class="warning">The screening minimum lies on the edge of the search '

@@ -29,18 +29,75 @@ namespace fdem
     using namespace dealii;
     namespace le = limit_equilibrium;
 
+    std::string
+    polyline_words(const std::vector<Point<2>> &line)
+    {
+      std::ostringstream text;
+      text << std::setprecision(6) << "polyline of " << line.size()
+           << " vertices from (" << line.front()[0] << ", " << line.front()[1]
+           << ") to (" << line.back()[0] << ", " << line.back()[1] << ")";
+      return text.str();
+    }
+
+    void
+    evaluate_contact(const parameters::Parameters  &base,
+                     const SurfaceSearchParameters &settings,
+                     const std::string             &scratch,
+                     SearchedSurface               &s)
+    {
+      parameters::Parameters p     = base;
+      auto                  &slope = p.geometry.slope;
+      if (s.polyline.empty())
+        {
+          slope.circle_centre = s.centre;
+          slope.circle_radius = s.radius;
+        }
+      else
+        use_polyline(p, s.polyline);
+      if (settings.screening_mesh_size > 0)
+        {
+          const double ratio = settings.screening_mesh_size / slope.mesh_size;
+          slope.mesh_size    = settings.screening_mesh_size;
+          slope.mesh_size_on_sliding_surface *= ratio;
+        }
+      // What the search does not need: files, pictures, the stiffness
+      // check's two more iterations, limit equilibrium (screened already).
+      p.output.directory              = scratch;
+      p.output.write_vtu              = false;
+      p.output.write_steps            = false;
+      p.output.report                 = false;
+      p.safety_factor.compute         = true;
+      p.safety_factor.stiffness_check = false;
+      p.limit_equilibrium.enabled     = false;
+      p.surface_search.enabled        = false;
+      Timer              timer;
+      std::ostringstream sink;
+      try
+        {
+          Model<2> model(p, sink, &sink);
+          model.make_geometry();
+          model.setup_blocks();
+          model.assemble_and_factorize();
+          model.build_interfaces();
+          model.compute_flexibility();
+          const Result r = SafetyFactorAnalysis<2>(model).run();
+          s.contact_K    = r.safety_factor;
+          s.certified = r.certificate.holds && std::isfinite(r.safety_factor);
+          s.status    = s.certified      ? "certified" :
+                        r.no_equilibrium ? "no equilibrium" :
+                                           "not certified: " + r.reason;
+          if (!s.certified)
+            s.contact_K = std::numeric_limits<double>::quiet_NaN();
+        }
+      catch (const std::exception &error)
+        {
+          s.status = "failed: " + postprocess::one_line(error);
+        }
+      s.contact_seconds = timer.wall_time();
+    }
+
     namespace
     {
-      std::string
-      polyline_words(const std::vector<Point<2>> &line)
-      {
-        std::ostringstream text;
-        text << std::setprecision(6) << "polyline of " << line.size()
-             << " vertices from (" << line.front()[0] << ", " << line.front()[1]
-             << ") to (" << line.back()[0] << ", " << line.back()[1] << ")";
-        return text.str();
-      }
-
       std::string
       circle_words(const Point<2> &centre, const double radius)
       {
@@ -50,67 +107,6 @@ namespace fdem
         return text.str();
       }
 
-      /**
-       * K of the surface of @p s (its circle or polyline) by the contact
-       * method on a model of its own: @p base with that surface and the
-       * screening mesh size, its mesh written into @p scratch only.
-       */
-      void
-      evaluate_contact(const parameters::Parameters  &base,
-                       const SurfaceSearchParameters &settings,
-                       const std::string             &scratch,
-                       SearchedSurface               &s)
-      {
-        parameters::Parameters p     = base;
-        auto                  &slope = p.geometry.slope;
-        if (s.polyline.empty())
-          {
-            slope.circle_centre = s.centre;
-            slope.circle_radius = s.radius;
-          }
-        else
-          use_polyline(p, s.polyline);
-        if (settings.screening_mesh_size > 0)
-          {
-            const double ratio = settings.screening_mesh_size / slope.mesh_size;
-            slope.mesh_size    = settings.screening_mesh_size;
-            slope.mesh_size_on_sliding_surface *= ratio;
-          }
-        // What the search does not need: files, pictures, the stiffness
-        // check's two more iterations, limit equilibrium (screened already).
-        p.output.directory              = scratch;
-        p.output.write_vtu              = false;
-        p.output.write_steps            = false;
-        p.output.report                 = false;
-        p.safety_factor.compute         = true;
-        p.safety_factor.stiffness_check = false;
-        p.limit_equilibrium.enabled     = false;
-        p.surface_search.enabled        = false;
-        Timer              timer;
-        std::ostringstream sink;
-        try
-          {
-            Model<2> model(p, sink, &sink);
-            model.make_geometry();
-            model.setup_blocks();
-            model.assemble_and_factorize();
-            model.build_interfaces();
-            model.compute_flexibility();
-            const Result r = SafetyFactorAnalysis<2>(model).run();
-            s.contact_K    = r.safety_factor;
-            s.certified = r.certificate.holds && std::isfinite(r.safety_factor);
-            s.status    = s.certified      ? "certified" :
-                          r.no_equilibrium ? "no equilibrium" :
-                                             "not certified: " + r.reason;
-            if (!s.certified)
-              s.contact_K = std::numeric_limits<double>::quiet_NaN();
-          }
-        catch (const std::exception &error)
-          {
-            s.status = "failed: " + postprocess::one_line(error);
-          }
-        s.contact_seconds = timer.wall_time();
-      }
 
       /**
        * The non-circular stage: the polylines' screening, then the optima
@@ -179,9 +175,11 @@ namespace fdem
                   [&](const unsigned a, const unsigned b) {
                     return result.surfaces[a].le_K < result.surfaces[b].le_K;
                   });
-        Timer timer;
-        for (unsigned int c = 0; c < candidates.size() && budget > 0;
-             ++c, --budget)
+        Timer              timer;
+        const unsigned int n_candidates =
+          std::min<unsigned int>(candidates.size(),
+                                 settings.n_polyline_contact_candidates);
+        for (unsigned int c = 0; c < n_candidates && budget > 0; ++c, --budget)
           {
             SearchedSurface s = result.surfaces[candidates[c]];
             s.stage           = "polyline contact";
@@ -204,6 +202,20 @@ namespace fdem
             result.surfaces.push_back(s);
           }
         result.seconds_polyline_contact = timer.wall_time();
+
+        // The best polyline's vertices moved by its contact K: steps from
+        // half the element size on the sliding surface down to the snap
+        // distance, below which a move near a layer line is snapped back
+        // and one elsewhere changes K by less than the mesh does.
+        refine_polyline_by_contact(
+          parameters,
+          section,
+          on_surface / 2,
+          result.snap_distance,
+          std::min(budget, settings.n_polyline_contact_refinements),
+          scratch,
+          result,
+          brief);
 
         // The critical surface: the lowest certified contact K of all; with
         // none, the lower screening factor of the circles' and the
@@ -291,12 +303,14 @@ namespace fdem
             << std::endl;
       }
 
-      // Of the contact evaluations, Non-circular contact candidates are kept
-      // for the polylines.
+      // Of the contact evaluations, Non-circular contact candidates and
+      // refinements are kept for the polylines (the candidates first).
       const unsigned int polyline_budget =
-        settings.non_circular ? std::min(settings.n_polyline_contact_candidates,
-                                         settings.max_contact_evaluations) :
-                                0;
+        settings.non_circular ?
+          std::min(settings.n_polyline_contact_candidates +
+                     settings.n_polyline_contact_refinements,
+                   settings.max_contact_evaluations) :
+          0;
       const unsigned int circle_budget =
         settings.max_contact_evaluations - polyline_budget;
       if (settings.max_contact_evaluations > 0)

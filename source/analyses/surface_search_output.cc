@@ -74,6 +74,28 @@ namespace fdem
         unsigned int n_certified = 0;
         for (const auto &surface : result.surfaces)
           n_certified += !surface.polyline.empty() && surface.certified;
+        const auto    &r                = result.polyline_refinement;
+        nlohmann::json refinement_skips = nlohmann::json::object();
+        for (const auto &[why, n] : r.n_skipped)
+          refinement_skips[why] = n;
+        const nlohmann::json refinement = {
+          {"performed", r.performed},
+          {"why_not", r.why_not},
+          {"contact_refinements", s.n_polyline_contact_refinements},
+          {"from",
+           r.from >= 0 ? circle_json(result.surfaces[r.from]) :
+                         nlohmann::json(nullptr)},
+          {"best",
+           r.best >= 0 ? circle_json(result.surfaces[r.best]) :
+                         nlohmann::json(nullptr)},
+          {"first_step", r.first_step},
+          {"last_step", r.last_step},
+          {"counts",
+           {{"contact_evaluations", r.n_evaluations},
+            {"moves", r.n_moves},
+            {"not_certified", r.n_uncertified},
+            {"skipped", refinement_skips}}},
+          {"seconds", r.seconds}};
         return {{"method", result.polyline_method_key},
                 {"n_vertices", s.n_polyline_vertices},
                 {"concave_upward", s.concave},
@@ -103,9 +125,11 @@ namespace fdem
                   {"contact_evaluations", result.n_polyline_contact},
                   {"contact_certified", n_certified},
                   {"contact_candidates", s.n_polyline_contact_candidates}}},
+                {"contact_refinement", refinement},
                 {"timings",
                  {{"screening", result.seconds_polyline},
-                  {"contact_evaluations", result.seconds_polyline_contact}}}};
+                  {"contact_evaluations", result.seconds_polyline_contact},
+                  {"contact_refinement", r.seconds}}}};
       }
     } // namespace
 

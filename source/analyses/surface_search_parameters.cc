@@ -155,7 +155,8 @@ namespace fdem
         "and safety-factor iteration), the best screened circles first, then a "
         "local pattern search on the contact K (dimensionless count); 0: the "
         "search is by limit equilibrium alone. With Non-circular, Non-circular "
-        "contact candidates of them are kept for the polylines.");
+        "contact candidates and Non-circular contact refinements of them are "
+        "kept for the polylines.");
       prm.declare_entry(
         "Contact candidates",
         "3",
@@ -209,6 +210,19 @@ namespace fdem
         "(dimensionless count); 0: the polylines are not evaluated by the contact "
         "method.");
       prm.declare_entry(
+        "Non-circular contact refinements",
+        "0",
+        Patterns::Integer(0, 1000),
+        "How many of the Maximum contact evaluations are kept for the local "
+        "refinement of the best polyline by its contact K, after the "
+        "Non-circular contact candidates (dimensionless count): from the "
+        "polyline of lowest certified contact K, each interior vertex moved in "
+        "turn along the normal of the chord between its neighbours, by steps "
+        "from half the element size on the sliding surface down to a tenth of "
+        "it; a move is kept when the polyline stays admissible and its contact "
+        "K is certified and lower. 0: the polylines' vertices are placed by "
+        "limit equilibrium alone.");
+      prm.declare_entry(
         "Non-circular interslices",
         "none",
         Patterns::Selection("none|vertical|bisector"),
@@ -256,6 +270,8 @@ namespace fdem
       concave         = prm.get_bool("Concave upward");
       n_polyline_contact_candidates =
         prm.get_integer("Non-circular contact candidates");
+      n_polyline_contact_refinements =
+        prm.get_integer("Non-circular contact refinements");
       const std::string interslices = prm.get("Non-circular interslices");
       polyline_interslices = interslices == "vertical" ? Interslices::vertical :
                              interslices == "bisector" ? Interslices::bisector :

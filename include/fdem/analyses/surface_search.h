@@ -30,7 +30,8 @@ namespace fdem
     {
       /**
        * "grid", "refinement", "contact", "contact refinement" (circles),
-       * "polyline start", "polyline" or "polyline contact" (polylines).
+       * "polyline start", "polyline", "polyline snapped", "polyline
+       * contact" or "polyline contact refined" (polylines).
        */
       std::string      stage;
       dealii::Point<2> centre;
@@ -104,6 +105,28 @@ namespace fdem
       unsigned int n_polyline_snapped = 0;
       double       seconds_polyline = 0, seconds_polyline_contact = 0;
       std::string  polyline_method_key;
+
+      /**
+       * The local refinement of the best polyline by its contact K
+       * (Surface search/Non-circular contact refinements,
+       * refine_polyline_by_contact()).
+       */
+      struct PolylineRefinement
+      {
+        /** Whether it ran (a budget and a certified polyline to start from). */
+        bool performed = false;
+        /** Why it did not run ("" if it did). */
+        std::string why_not;
+        /** Index of the polyline it started from and of the best it found. */
+        int from = -1, best = -1;
+        /** Contact evaluations, moves kept, candidates not certified. */
+        unsigned int n_evaluations = 0, n_moves = 0, n_uncertified = 0;
+        /** Candidates not admissible, by reason (not evaluated). */
+        std::map<std::string, unsigned int> n_skipped;
+        /** The first and the last step along the normals (length). */
+        double first_step = 0, last_step = 0;
+        double seconds = 0;
+      } polyline_refinement;
     };
 
     /**
@@ -175,6 +198,47 @@ namespace fdem
                                 const limit_equilibrium::Method   method,
                                 const unsigned int                n_slices,
                                 SearchedSurface                  &s);
+
+    /**
+     * The contact-K refinement of the non-circular stage
+     * (surface_search_refinement.cc): from the polyline of lowest certified
+     * contact K in @p result, each interior vertex moved in turn by -/+ a
+     * step along the normal of the chord between its neighbours, the move
+     * snapped onto the layer lines within @p snap_distance, screened for
+     * admissibility as every polyline (screen_polyline()) and evaluated by
+     * the contact method; a move is kept when its contact K is certified
+     * and lower. The step starts at @p first_step and is halved after a
+     * sweep of the vertices without a kept move, down to @p snap_distance;
+     * at most @p budget contact evaluations. Appends every candidate to
+     * @p result (stage "polyline contact refined") with one line each on
+     * @p brief, and sets result.polyline_refinement.
+     */
+    void
+    refine_polyline_by_contact(const parameters::Parameters     &parameters,
+                               const limit_equilibrium::Section &section,
+                               const double                      first_step,
+                               const double                      snap_distance,
+                               const unsigned int                budget,
+                               const std::string                &scratch,
+                               SurfaceSearchResult              &result,
+                               std::ostream                     &brief);
+
+    /**
+     * K of the surface of @p s (its circle or polyline) by the contact
+     * method on a model of its own: @p base with that surface and the
+     * screening mesh size of @p settings, its mesh written into @p scratch
+     * only, no output files. Sets contact_K (NaN unless certified),
+     * certified, status and contact_seconds of @p s; never throws.
+     */
+    void
+    evaluate_contact(const parameters::Parameters  &base,
+                     const SurfaceSearchParameters &settings,
+                     const std::string             &scratch,
+                     SearchedSurface               &s);
+
+    /** "polyline of n vertices from (x, y) to (x, y)": the screen's words. */
+    std::string
+    polyline_words(const std::vector<dealii::Point<2>> &line);
 
     /**
      * @p parameters with the sliding surface @p polyline (Geometry/Slope),

@@ -90,6 +90,11 @@ namespace fdem
       bool concave = true;
       /** Of Maximum contact evaluations, those kept for the polylines. */
       unsigned int n_polyline_contact_candidates = 2;
+      /**
+       * Of Maximum contact evaluations, those kept for the refinement of
+       * the best polyline by its contact K (after the candidates).
+       */
+      unsigned int n_polyline_contact_refinements = 0;
       /** How the polyline candidates' sliding masses are cut into blocks. */
       Interslices polyline_interslices = Interslices::none;
     };
