@@ -37,9 +37,11 @@ namespace fdem
       }
 
       /**
-       * The tangential part of the pairs' relative rigid motion (the free
-       * rigid modes' displacements, W gamma, in each pair's frame), per pair
-       * in global coordinates; empty when no block moves rigidly.
+       * The direction of the tangential part of each pair's relative rigid
+       * motion (W gamma: the free rigid modes' displacements at the pair),
+       * in global coordinates and of unit length; zero for a pair that
+       * moves (to 1e-12 of the largest) along its normal only or not at
+       * all, and empty when no block moves rigidly.
        */
       template <int dim>
       std::vector<dealii::Tensor<1, dim>>

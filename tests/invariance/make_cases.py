@@ -142,6 +142,17 @@ CASES = {
         "extra": lambda F, L: [
             "subsection Water", f"  set Unit weight of water = {num(9.81 * F / L**3)}", "end"],
     },
+    # The 3D slope generator's sphere: its pairs take the sphere's exact
+    # normal, moved with the mesh by Geometry/Scale factor.
+    "slope_3d": {
+        "prm": "slope_3d.prm",
+        "blocks": {"sliding mass": (1.0e4, 20), "foundation": (1.0e4, 20)},
+        "quick": ["subsection Geometry", "  subsection Slope 3D",
+                  "    set Mesh size = 3", "  end", "end",
+                  "subsection Safety factor", "  set Stiffness check = false", "end"],
+        "interfaces": lambda F, L: [("sliding surface", "Cohesion", 3.0 * F / L**2)],
+        "extra": lambda F, L: [],
+    },
 }
 # The layered slope with a perched water table in the fill
 # (Materials/fill/Piezometric line, in the input's coordinates like the
