@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/analyses/fe_stress_factor.h>
 #include <fdem/analyses/safety_factor_analysis.h>
 #include <fdem/postprocess/run_log.h>
 
@@ -70,13 +71,32 @@ namespace fdem
     }
 
     template <int dim>
+    double
+    SafetyFactorAnalysis<dim>::estimate()
+    {
+      // One more solve on the same factorisations; the model's contact
+      // state (the warm start) does not change.
+      const FeStressFactor fe = fe_stress_factor(model);
+      model.log << "  the first K failed: next K the FE-stress factor ";
+      if (fe.computed)
+        model.log << std::setprecision(8) << fe.factor
+                  << " (every pair stuck), if it is below the first"
+                  << std::endl;
+      else
+        model.log << "(not computed: " << fe.not_computed << "): half the first"
+                  << std::endl;
+      return fe.computed ? fe.factor : std::numeric_limits<double>::quiet_NaN();
+    }
+
+    template <int dim>
     Result
     SafetyFactorAnalysis<dim>::run()
     {
       model.brief << "Safety factor iteration (eqs. 10-13):" << std::endl;
       Result result = iterate([this](const double K) { return solve(K); },
                               model.get_parameters().safety_factor,
-                              model.brief);
+                              model.brief,
+                              [this]() { return estimate(); });
       model.restore_last_static_state();
       model.log << "Safety factor: ";
       if (result.converged)
@@ -164,7 +184,8 @@ namespace fdem
           model.forget_warm_start();
           const Result r = iterate([this](const double K) { return solve(K); },
                                    parameters,
-                                   model.log);
+                                   model.log,
+                                   [this]() { return estimate(); });
           (stiffer ? check.K_stiffer : check.K_softer) = r.safety_factor;
           model.brief << "Stiffness check, moving blocks " << check.factor
                       << " times " << (stiffer ? "stiffer: " : "softer:  ");

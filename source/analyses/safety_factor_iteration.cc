@@ -30,6 +30,14 @@ namespace fdem
         double limit = nan;
         /** A K below it that a step can aim at without overshooting. */
         double aim = nan;
+        /**
+         * Three steps, and the limit agrees with the secant on sqrt(h)
+         * through the latest two to 3 tolerances: the parabola's error is
+         * then far below the tolerance (its error is of the cube of the
+         * distances, the secant's of their square), and the iteration can
+         * go for the end of the solves below it (next_factor()).
+         */
+        bool known = false;
       };
 
       /**
@@ -80,10 +88,13 @@ namespace fdem
        * L). The aim: the lowest of that, the power law c (L - K)^p through
        * the three (which undershoots there by 1 to 8 % of the distance) and
        * K plus a quarter of the three steps' span; with two steps, the
-       * secant on h.
+       * secant on h. The limit is known (Fold::known) once the secant on
+       * sqrt(h) through the latest two agrees with the parabola to 3
+       * @p tolerance (relative): on the wedge from 2e-5 below L, where the
+       * parabola is 2e-8 from it.
        */
       Fold
-      fold_limit(const History &history)
+      fold_limit(const History &history, const double tolerance)
       {
         std::array<double, 3> K{}, h{};
         unsigned int          n = 0;
@@ -113,14 +124,22 @@ namespace fdem
         const double disc  = beta * beta - 4 * d2 * g[0];
         const double t_two = -g[0] / d1;
         if (n < 3 || disc < 0)
-          return {K[0] + t_two, K[0] + h[0] * (K[0] - K[1]) / (h[1] - h[0])};
+          return {K[0] + t_two,
+                  K[0] + h[0] * (K[0] - K[1]) / (h[1] - h[0]),
+                  false};
         // The smaller positive root, in the form without cancellation.
         const double limit = K[0] + 2 * g[0] / (-beta + std::sqrt(disc));
         const double power =
           power_law_limit({{K[2], K[1], K[0]}}, {{h[2], h[1], h[0]}});
         // Not further than a quarter of the three steps' span: from afar
         // neither model is known to hold.
-        return {limit, std::min({limit, power, K[0] + 0.25 * (K[0] - K[2])})};
+        // The secant on sqrt(h) through the latest two: where it agrees with
+        // the parabola to a few tolerances, the parabola is far closer.
+        const bool known =
+          std::abs(limit - (K[0] + t_two)) <= 3 * tolerance * K[0];
+        return {limit,
+                std::min({limit, power, K[0] + 0.25 * (K[0] - K[2])}),
+                known};
       }
 
       /**
@@ -159,6 +178,22 @@ namespace fdem
           }
         if (fold.aim > next)
           next = fold.aim;
+        // The fold known to far below the tolerance: the solves end just
+        // below it (on the wedge 1.2e-6 to 1.4e-6 below, relative), so go
+        // for that end: 1.5 tolerances below the limit, and from a static
+        // solve there just under a tolerance above it, so that a failure
+        // closes the bracket and a static solve leaves K within the
+        // tolerance of the limit (a fixed point).
+        if (fold.known)
+          {
+            double target = fold.limit * (1 - 1.5 * tolerance);
+            if (target < K * (1 + 0.5 * tolerance))
+              target = K * (1 + 0.95 * tolerance);
+            if (target >= K_high)
+              target =
+                K_high - std::min(0.5 * tolerance * K, 0.5 * (K_high - K));
+            return target;
+          }
         // A fold beyond a K that failed: the solves end before K* - K
         // reaches zero (on the wedge 1.3e-6 below it, where the slip
         // directions are nearly parallel). The limit is then that end; try
@@ -198,13 +233,13 @@ namespace fdem
        * K_high.
        */
       void
-      advance(Step          &step,
-              const History &solved,
-              const bool     after_failure,
-              const double   previous_step,
-              const double   tolerance,
-              double        &K_low,
-              double        &K_high)
+      advance(Step              &step,
+              const History     &solved,
+              const unsigned int failures_in_row,
+              const double       previous_step,
+              const double       tolerance,
+              double            &K_low,
+              double            &K_high)
       {
         const ReducedStrengthSolution &s        = step.solution;
         const double                   K        = step.K;
@@ -222,13 +257,17 @@ namespace fdem
           }
         else if (s.has_factor())
           {
-            K_low           = std::isnan(K_low) ? K : std::max(K_low, K);
-            const Fold fold = fold_limit({{&step, solved[0], solved[1]}});
+            K_low = std::isnan(K_low) ? K : std::max(K_low, K);
+            const Fold fold =
+              fold_limit({{&step, solved[0], solved[1]}}, tolerance);
             step.K_next =
               next_factor(step, previous, fold, K_low, K_high, tolerance);
             step.distance_left = distance_left(step, previous_step);
-            // The fixed point is where the fold lies, wherever the step goes.
-            if (fold.limit > K)
+            // The fixed point is where the fold lies, wherever the step goes;
+            // once it is known, the step (a probe) says nothing more.
+            if (fold.known)
+              step.distance_left = std::abs(fold.limit - K);
+            else if (fold.limit > K)
               step.distance_left = std::max(step.distance_left, fold.limit - K);
           }
         else if (!s.converged)
@@ -237,10 +276,19 @@ namespace fdem
             // Right after a solved step that aimed at a fold, the failure is
             // most likely the end of the solves just below it: try just below
             // the failure first (as next_factor()); bisect after two failures.
-            const bool fold = !after_failure && !std::isnan(K_low) &&
-                              !std::isnan(fold_limit(solved).limit);
+            const Fold last = fold_limit(solved, tolerance);
+            const bool fold = failures_in_row == 0 && !std::isnan(K_low) &&
+                              !std::isnan(last.limit);
+            // Below a known fold, the failure is the end of the solves (the
+            // next_factor() above aimed 1.5 tolerances below the limit): go
+            // half a tolerance lower, so that a static solve closes the
+            // bracket; after four such failures, bisect.
+            const bool known =
+              !std::isnan(K_low) && last.known && failures_in_row < 4;
             step.K_next =
               std::isnan(K_low) ? 0.5 * K :
+              known             ? std::max(0.5 * (K_low + K_high),
+                               K_high * (1 - 0.5 * tolerance)) :
               fold              ? std::max(0.5 * (K_low + K_high),
                               K_high - std::max(0.5 * tolerance * K_low,
                                                 (K_high - K_low) / 8)) :
@@ -303,16 +351,17 @@ namespace fdem
     Result
     iterate(const std::function<ReducedStrengthSolution(double K)> &solve,
             const parameters::SafetyFactorParameters               &parameters,
-            std::ostream                                           &log)
+            std::ostream                                           &log,
+            const std::function<double()>                          &estimate)
     {
       Result       result;
       const double tolerance = parameters.tolerance;
       double      &K_low = result.bracket_low, &K_high = result.bracket_high;
       double       K = parameters.initial_factor, previous_step = nan;
       History      solved{}; // the last solved steps, latest first
-      const Step *&previous      = solved[0];
-      bool         after_failure = false;
-      result.reason              = "iteration limit reached";
+      const Step *&previous        = solved[0];
+      unsigned int failures_in_row = 0;
+      result.reason                = "iteration limit reached";
       result.steps.reserve(parameters.max_iterations); // keeps `solved` valid
       for (unsigned int i = 0; i < parameters.max_iterations; ++i)
         {
@@ -322,12 +371,21 @@ namespace fdem
             step.K_star = K * s.resisting_force / s.sliding_force; // eq. (12)
           advance(step,
                   solved,
-                  after_failure,
+                  failures_in_row,
                   previous_step,
                   tolerance,
                   K_low,
                   K_high);
-          after_failure = !s.converged;
+          // The first K failed: the estimate (the FE-stress factor) is
+          // likelier close to the limit than half of K (on the rock wedge 4 %
+          // below it, where halving went to 0.5 and took two more steps).
+          if (i == 0 && !s.converged && estimate)
+            {
+              const double K_estimate = estimate();
+              if (K_estimate >= parameters.minimum_factor && K_estimate < K)
+                step.K_next = K_estimate;
+            }
+          failures_in_row = s.converged ? 0 : failures_in_row + 1;
           result.steps.push_back(step);
           log_step(step, result.steps.size(), log);
 

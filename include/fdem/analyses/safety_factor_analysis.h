@@ -47,6 +47,13 @@ namespace fdem
       ReducedStrengthSolution
       solve(const double K);
 
+      /**
+       * The iteration's estimate of K after a failed first K: the FE-stress
+       * factor (fe_stress_factor(), every pair stuck), NaN if it has none.
+       */
+      double
+      estimate();
+
     private:
       Model<dim>                                  &model;
       std::function<void(double K, double K_star)> on_solved_step;

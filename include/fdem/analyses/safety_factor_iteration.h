@@ -190,11 +190,17 @@ namespace fdem
      * has yet, else bisects between the largest K that solved and the
      * smallest that did not. The answer is then certified (certify()); a
      * result is converged only if its certificate holds.
+     *
+     * @p estimate, if given, is called once if the first K fails before any
+     * has solved: an estimate of K (the FE-stress factor) to try next instead
+     * of half the first K, if it lies below that K and above Safety
+     * factor/Minimum factor.
      */
     Result
     iterate(const std::function<ReducedStrengthSolution(double K)> &solve,
             const parameters::SafetyFactorParameters               &parameters,
-            std::ostream                                           &log);
+            std::ostream                                           &log,
+            const std::function<double()> &estimate = {});
 
     /**
      * The certificate of the iteration's answer, from its steps alone: which
