@@ -39,6 +39,22 @@ namespace fdem
       return text.str();
     }
 
+    std::string
+    contact_outcome_words(const SearchedSurface &s,
+                          const std::string     &method_key)
+    {
+      std::ostringstream text;
+      if (std::isfinite(s.contact_K))
+        text << "K = " << std::fixed << std::setprecision(4) << s.contact_K
+             << std::defaultfloat;
+      else
+        text << s.status;
+      text << " (" << method_key << " " << std::fixed << std::setprecision(4)
+           << s.le_K << ", " << std::setprecision(1) << s.contact_seconds
+           << " s)";
+      return text.str();
+    }
+
     void
     evaluate_contact(const parameters::Parameters  &base,
                      const SurfaceSearchParameters &settings,
@@ -189,15 +205,8 @@ namespace fdem
             std::ostringstream line;
             line << "  contact " << result.n_contact << "/"
                  << settings.max_contact_evaluations
-                 << " (polyline): " << polyline_words(s.polyline) << ": ";
-            if (std::isfinite(s.contact_K))
-              line << "K = " << std::fixed << std::setprecision(4)
-                   << s.contact_K << std::defaultfloat;
-            else
-              line << s.status;
-            line << " (" << result.polyline_method_key << " " << std::fixed
-                 << std::setprecision(4) << s.le_K << ", "
-                 << std::setprecision(1) << s.contact_seconds << " s)";
+                 << " (polyline): " << polyline_words(s.polyline) << ": "
+                 << contact_outcome_words(s, result.polyline_method_key);
             brief << line.str() << std::endl;
             result.surfaces.push_back(s);
           }
@@ -336,15 +345,8 @@ namespace fdem
               std::ostringstream line;
               line << "  contact " << result.n_contact << "/"
                    << settings.max_contact_evaluations << " (" << stage
-                   << "): " << circle_words(c, R) << ": ";
-              if (std::isfinite(s.contact_K))
-                line << "K = " << std::fixed << std::setprecision(4)
-                     << s.contact_K << std::defaultfloat;
-              else
-                line << s.status;
-              line << " (" << result.method_key << " " << std::fixed
-                   << std::setprecision(4) << s.le_K << ", "
-                   << std::setprecision(1) << s.contact_seconds << " s)";
+                   << "): " << circle_words(c, R) << ": "
+                   << contact_outcome_words(s, result.method_key);
               brief << line.str() << std::endl;
               result.surfaces.push_back(s);
               done[key] = result.surfaces.size() - 1;

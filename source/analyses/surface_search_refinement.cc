@@ -161,15 +161,8 @@ namespace fdem
                      << settings.max_contact_evaluations
                      << " (polyline refinement): vertex " << i << " by "
                      << std::setprecision(3) << sign * step << " along its "
-                     << "normal: ";
-                if (s.certified)
-                  text << "K = " << std::fixed << std::setprecision(4)
-                       << s.contact_K << std::defaultfloat;
-                else
-                  text << s.status;
-                text << " (" << result.polyline_method_key << " " << std::fixed
-                     << std::setprecision(4) << s.le_K << ", "
-                     << std::setprecision(1) << s.contact_seconds << " s)";
+                     << "normal: "
+                     << contact_outcome_words(s, result.polyline_method_key);
                 brief << text.str() << std::endl;
                 result.surfaces.push_back(s);
                 if (s.certified &&

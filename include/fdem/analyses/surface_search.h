@@ -241,6 +241,15 @@ namespace fdem
     polyline_words(const std::vector<dealii::Point<2>> &line);
 
     /**
+     * The screen's words for the contact evaluation of @p s: "K = 1.2345"
+     * (or its status where K is not certified), then the limit equilibrium
+     * factor by @p method_key and the evaluation's time in parentheses.
+     */
+    std::string
+    contact_outcome_words(const SearchedSurface &s,
+                          const std::string     &method_key);
+
+    /**
      * @p parameters with the sliding surface @p polyline (Geometry/Slope),
      * its mass cut into blocks as Surface search/Non-circular interslices
      * asks: the blocks 'sliding mass i' and interfaces 'sliding surface i'
