@@ -2,6 +2,9 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/safety_factor_iteration.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <algorithm>
 #include <cmath>
 
 namespace fdem
@@ -37,22 +40,95 @@ namespace fdem
       }
 
       /**
+       * The pairs' relative rigid motion: the relative displacements g of
+       * the contact pairs projected, by least squares weighted by the pairs'
+       * areas, on the motions that the free rigid modes make at the pairs
+       * (the range of W); the projection W gamma' at every pair and passive
+       * bar, in the pairs' frames. Empty when no block moves rigidly or
+       * nothing moves relative to the blocks' neighbours (every pair sticks:
+       * the projection is round-off).
+       *
+       * Why not W gamma, the solve's own rigid unknowns: gamma is the rigid
+       * part of a block's displacement under its support convention (the
+       * elastic part is zero at a few dofs chosen by pivoting,
+       * blocks/supports.cc), so W gamma carries the elastic displacement of
+       * those dofs, and which dofs are chosen depends on the frame and the
+       * numbering. The undrained sphere turned by 30 degrees had K* = 1.0306
+       * instead of 1.0198 at K = 1 with the same forces and statuses. The
+       * projection of g depends only on the relative displacements and on
+       * range(W), neither of which depends on the gauge.
+       */
+      template <int dim>
+      dealii::Vector<double>
+      relative_rigid_motion(const contact::MixedSystem<dim>    &system,
+                            const contact::ContactOutcome<dim> &outcome)
+      {
+        const dealii::FullMatrix<double> &W = system.rigid_coupling;
+        const dealii::Vector<double>     &g =
+          outcome.solution.relative_displacements;
+        const unsigned int n_rigid = W.n();
+        if (n_rigid == 0 || g.size() != W.m())
+          return {};
+        dealii::LAPACKFullMatrix<double> normal(n_rigid, n_rigid);
+        dealii::Vector<double>           rhs(n_rigid);
+        double                           g_scale = 0;
+        std::vector<unsigned int>        columns;
+        for (unsigned int p = 0; p < system.n_contact_pairs(); ++p)
+          {
+            const double area = system.pair(p).area;
+            for (unsigned int i = 0; i < dim; ++i)
+              {
+                const unsigned int row = dim * p + i;
+                g_scale                = std::max(g_scale, std::abs(g[row]));
+                // A row moves with the modes of the pair's two blocks only.
+                columns.clear();
+                for (unsigned int a = 0; a < n_rigid; ++a)
+                  if (W(row, a) != 0)
+                    columns.push_back(a);
+                for (const unsigned int a : columns)
+                  {
+                    rhs[a] += area * W(row, a) * g[row];
+                    for (const unsigned int b : columns)
+                      normal(a, b) += area * W(row, a) * W(row, b);
+                  }
+              }
+          }
+        if (!(g_scale > 0))
+          return {};
+        // Singular values of W^T A W below 1e-12 of the largest are null
+        // directions of W on the pairs (modes that move no pair).
+        normal.compute_inverse_svd(1e-12);
+        dealii::Vector<double> gamma(n_rigid), motion(W.m());
+        normal.vmult(gamma, rhs);
+        W.vmult(motion, gamma);
+        // Every pair sticking leaves g at the solve's round-off of the
+        // displacements that cancel in it (g_bar, C f, W gamma); a motion
+        // that small is no motion.
+        const double scale =
+          std::max({outcome.solution.elastic_displacements.linfty_norm(),
+                    outcome.solution.relative_displacements.linfty_norm(),
+                    system.external_gap.linfty_norm()});
+        if (!(motion.linfty_norm() > 1e-9 * scale))
+          return {};
+        return motion;
+      }
+
+      /**
        * The direction of the tangential part of each pair's relative rigid
-       * motion (W gamma: the free rigid modes' displacements at the pair),
-       * in global coordinates and of unit length; zero for a pair that
-       * moves (to 1e-12 of the largest) along its normal only or not at
-       * all, and empty when no block moves rigidly.
+       * motion (relative_rigid_motion()), in global coordinates and of unit
+       * length; zero for a pair that moves (to 1e-12 of the largest) along
+       * its normal only or not at all, and empty when there is no relative
+       * rigid motion.
        */
       template <int dim>
       std::vector<dealii::Tensor<1, dim>>
       rigid_sliding_directions(const contact::MixedSystem<dim>    &system,
                                const contact::ContactOutcome<dim> &outcome)
       {
-        const dealii::Vector<double> &gamma = outcome.solution.rigid_motions;
-        if (gamma.size() == 0 || gamma.linfty_norm() == 0)
+        const dealii::Vector<double> motion =
+          relative_rigid_motion(system, outcome);
+        if (motion.size() == 0)
           return {};
-        dealii::Vector<double> motion(system.rigid_coupling.m());
-        system.rigid_coupling.vmult(motion, gamma);
         std::vector<dealii::Tensor<1, dim>> directions(system.n_pairs());
         double                              largest = 0;
         for (unsigned int p = 0; p < system.n_pairs(); ++p)
