@@ -76,7 +76,8 @@ namespace fdem
     {
       // One more solve on the same factorisations; the model's contact
       // state (the warm start) does not change.
-      const FeStressFactor fe = fe_stress_factor(model);
+      latest_fe_stress         = fe_stress_factor(model);
+      const FeStressFactor &fe = *latest_fe_stress;
       model.log << "  the first K failed: next K the FE-stress factor ";
       if (fe.computed)
         model.log << std::setprecision(8) << fe.factor
@@ -97,6 +98,7 @@ namespace fdem
                               model.get_parameters().safety_factor,
                               model.brief,
                               [this]() { return estimate(); });
+      fe_stress     = std::move(latest_fe_stress);
       model.restore_last_static_state();
       model.log << "Safety factor: ";
       if (result.converged)

@@ -86,13 +86,16 @@ namespace fdem
           step_output = [this](const double K, const double K_star) {
             write_step(K, K_star);
           };
-        analysis_results.safety_factor =
-          analyses::SafetyFactorAnalysis<dim>(model, step_output).run();
+        analyses::SafetyFactorAnalysis<dim> analysis(model, step_output);
+        analysis_results.safety_factor     = analysis.run();
         analysis_results.has_safety_factor = true;
         // Beside K, the factor that stress-based programs report: one more
         // solve on the same factorisations (after K, so as not to change
-        // the factors the iteration starts from).
-        analysis_results.fe_stress = analyses::fe_stress_factor(model);
+        // the factors the iteration starts from), unless the iteration
+        // solved it already (its estimate after a failed first K).
+        analysis_results.fe_stress = analysis.fe_stress_factor_computed() ?
+                                       *analysis.fe_stress_factor_computed() :
+                                       analyses::fe_stress_factor(model);
         if (analysis_results.fe_stress.computed)
           model.log << "FE-stress factor (every pair stuck, full strength): "
                     << std::setprecision(8) << analysis_results.fe_stress.factor

@@ -2,10 +2,12 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <fdem/analyses/fe_stress_factor.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 #include <fdem/model.h>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace fdem
@@ -54,11 +56,24 @@ namespace fdem
       double
       estimate();
 
+      /**
+       * The FE-stress factor if run()'s iteration computed it (estimate()
+       * after a failed first K), so that it is not solved again for the
+       * run's report; not the stiffness check's, on other compliances.
+       */
+      const std::optional<FeStressFactor> &
+      fe_stress_factor_computed() const
+      {
+        return fe_stress;
+      }
+
     private:
       Model<dim>                                  &model;
       std::function<void(double K, double K_star)> on_solved_step;
       /** Per pair of all interfaces: on a sliding surface? */
       std::vector<bool> on_sliding_surface;
+      /** The latest estimate()'s, and the main iteration's (run()). */
+      std::optional<FeStressFactor> latest_fe_stress, fe_stress;
 
       /**
        * K again with the moving blocks' compliance scaled by 1/factor and
