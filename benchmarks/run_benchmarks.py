@@ -65,7 +65,7 @@ def number(parameters, path):
 
 def inclined_block_exact(run):
     """K = tan(phi)/tan(alpha) + c L / (W sin(alpha)), W = gamma L H: the
-    planar limit of design/formulation.md Sec. 5, as in
+    planar limit of doc/theory.md, as in
     tests/test_safety_factor.cc."""
     p = run.parameters
     alpha = math.radians(number(p, "Geometry/Inclined block/Inclination"))

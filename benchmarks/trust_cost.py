@@ -74,8 +74,14 @@ def main():
             "is two more safety-factor iterations, started from the K found, on the same",
             "factorisation.", ""] + common.markdown_table(header, rows, "lrrlrrrrrrr") + [""]
     if not args.quick:
+        # The reading of the numbers (written by hand, after the table) stays.
+        reading = ""
+        if os.path.exists(args.output):
+            old = open(args.output).read()
+            if "## Reading" in old:
+                reading = old[old.index("## Reading"):]
         with open(args.output, "w") as f:
-            f.write("\n".join(text))
+            f.write("\n".join(text) + ("\n" + reading if reading else ""))
         print(f"wrote {args.output}")
 
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 //
-// The contact module with statuses (design/formulation.md Sec. 3, 5): Hertz
+// The contact module with statuses (doc/theory.md): Hertz
 // contact against the exact solution, the block on an inclined plane above
 // and below its limit, and the ends of the status iteration.
 #include "test_helpers.h"

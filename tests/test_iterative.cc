@@ -158,7 +158,7 @@ TEST(IterativeMixedSystem, BlockOnPlaneThreeDExactLimit)
 
 TEST(IterativeMixedSystem, InclinedBlockExactLimitForAnyStrength)
 {
-  // The planar oracle (design/formulation.md Sec. 5) with and without
+  // The planar oracle (doc/theory.md) with and without
   // cohesion; a tensile strength keeps the heel closed (with c = 0 an open
   // pair costs nothing), as in PlanarSlidingSurface.*. Round-off: 1e-8.
   for (const auto &[c, phi, tension] :

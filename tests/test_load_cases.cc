@@ -81,7 +81,7 @@ TEST(LoadCases, UnitWeightFactorOnTheInclinedBlock)
 {
   // A factor lambda on the unit weight: K = (c L + lambda W cos(theta)
   // tan(phi)) / (lambda W sin(theta)) (the planar limit of
-  // design/formulation.md Sec. 5 with the weight lambda W), to round-off:
+  // doc/theory.md with the weight lambda W), to round-off:
   // 1e-10. A tensile strength keeps the heel closed (as in
   // PlanarSlidingSurface.ExactForAnyMeshAndMaterial).
   auto parameters = test_support::case_parameters("inclined_block.prm");

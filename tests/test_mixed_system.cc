@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 //
-// The mixed system in its all-stick form (design/formulation.md Sec. 2, 5):
+// The mixed system in its all-stick form (doc/theory.md):
 // free rigid modes, the flexibility C, the reactions of the minimal
 // supports, and the oracle "everything sticks = one FE solve of the merged
 // mesh".

@@ -9,7 +9,7 @@
 // safety factor is exact once the set of closed pairs is known:
 //   K = (c A_closed + W cos(theta) tan(phi)) / (W sin(theta)),
 // since equilibrium fixes sum f_n = -W cos(theta) and sum f_t = W sin(theta),
-// and open pairs carry nothing (design/formulation.md Sec. 5).
+// and open pairs carry nothing (doc/theory.md).
 #include "test_helpers.h"
 
 #include <gtest/gtest.h>

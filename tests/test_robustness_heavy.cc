@@ -7,8 +7,8 @@
 // Each checks K against the exact planar value
 //   K = (c A + W cos(theta) tan(phi)) / (W sin(theta)),
 // to round-off (1e-8 relative): equilibrium fixes sum f_n and sum f_t, so no
-// discretisation error enters while no pair opens (design/formulation.md
-// Sec. 5; a tensile strength keeps the heel closed).
+// discretisation error enters while no pair opens (doc/theory.md
+//; a tensile strength keeps the heel closed).
 #include "test_helpers.h"
 
 #include <gtest/gtest.h>

@@ -40,7 +40,7 @@ namespace fdem
      * One linear elastic body meshed with finite elements: its stiffness K
      * (factorised once), its load vector F (gravity and pressures), its
      * Dirichlet conditions, and the rigid motions those conditions leave free
-     * (design/formulation.md Sec. 2). A block with free modes is held for the
+     * (doc/theory.md). A block with free modes is held for the
      * FE solves by a minimal, statically determinate support that removes
      * exactly those modes; the mixed system then adds them back as unknowns.
      *

@@ -55,7 +55,7 @@ namespace fdem
      * The state of a pair in the status iteration: its status, the
      * direction in which it slips (a unit vector in the tangent plane; +1 or
      * -1 in 2D), and whether it is held at the tension cut-off (the corner of
-     * the admissible set, design/formulation.md Sec. 3 and 6.2): a closed
+     * the admissible set, doc/theory.md): a closed
      * pair whose normal force is fixed at sigma_t A while its tangential
      * status still applies.
      *

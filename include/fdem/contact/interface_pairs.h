@@ -19,7 +19,7 @@ namespace fdem
     using namespace dealii;
 
     /**
-     * A node pair of an interface (design/formulation.md Sec. 1): node a on
+     * A node pair of an interface (doc/theory.md): node a on
      * block I, node b on block J. Its local frame has the unit normal n,
      * pointing from J into I, as row 0 and the tangents as the other rows,
      * so that local = frame * global. Contact forces f are the forces that

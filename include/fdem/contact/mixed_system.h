@@ -115,7 +115,7 @@ namespace fdem
 
     /**
      * The mixed system of the paper's eq. (9) in the form of
-     * design/formulation.md Sec. 2-3:
+     * doc/theory.md:
      *
      *   [  C  -W ] [ f     ]   [  g_bar       ]
      *   [ -W^T 0 ] [ gamma ] = [ -omega^T F   ]
@@ -261,7 +261,7 @@ namespace fdem
 
       /**
        * Solves the system with the rows of every pair set by its state
-       * (design/formulation.md Sec. 3): stick g = 0; slip g_n = 0 and the
+       * (doc/theory.md): stick g = 0; slip g_n = 0 and the
        * tangential force at the Mohr-Coulomb limit along the slip direction;
        * open f = 0; at the tension cut-off f_n = sigma_t A instead of g_n = 0.
        * Whether the free modes can be held is tested first (RigidModeTest);

@@ -14,7 +14,7 @@ namespace fdem
 
     /**
      * The dim rows of one pair in the mixed system (eq. 9 with the
-     * conditions of Table 1, design/formulation.md Sec. 3), set by the
+     * conditions of Table 1, doc/theory.md), set by the
      * pair's state. With d = C f - W gamma the elastic-minus-rigid part of
      * the pair's relative displacement (g = g_bar - d), row i reads
      *

@@ -66,7 +66,7 @@ namespace fdem
       std::vector<PairState<dim>>        states;
       ContactSolution                    solution;
       std::vector<StatusIterationRecord> iterations;
-      /** Cycles of statuses met and broken (design/formulation.md Sec. 6.3). */
+      /** Cycles of statuses met and broken (doc/theory.md). */
       unsigned int n_cycles_broken = 0;
       /**
        * Largest angle (degrees) between a slipping pair's force direction and
@@ -124,7 +124,7 @@ namespace fdem
      * each iteration:
      * - solve (MixedSystem::solve); if it fails, close_all_open_pairs() when
      *   every pair is open and nothing holds the blocks, or end;
-     * - runs_away(): the runaway test (design/formulation.md Sec. 6.4);
+     * - runs_away(): the runaway test (doc/theory.md);
      * - update_statuses(), by the rules (doc/theory.md):
      *   - stick: tension beyond sigma_t A opens the pair; a tangential force
      *     beyond c A - mu f_n makes it slip along that force (in 3D it keeps

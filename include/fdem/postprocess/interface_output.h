@@ -62,8 +62,8 @@ namespace fdem
                  const std::vector<contact::PairStrength>   &full_strengths);
 
     /**
-     * Extent of the contact zone: its length in 2D (design/formulation.md
-     * Sec. 5 asks for an estimate from the whole pressure profile, not the
+     * Extent of the contact zone: its length in 2D (doc/theory.md
+     * asks for an estimate from the whole pressure profile, not the
      * last closed pair, which jumps by a pair spacing). Pairs are ordered
      * along the chord of the interface; each run of closed pairs counts from
      * edge to edge. An edge at the end of the interface is that end; an edge

@@ -1,0 +1,329 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+//
+// The safety-factor iteration, eqs. (10)-(13), on synthetic steps (K* given
+// as a function of K, test_support::synthetic_step): planar limits, brackets
+// and their certificates, K-dependent factors, folds of all-slipping states
+// (the 3D sliding mass) and the estimate after a failed first K.
+#include "synthetic_step.h"
+
+#include <fdem/analyses/safety_factor_iteration.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+using namespace fdem;
+
+namespace
+{
+  using test_support::synthetic_step;
+
+  /** The certificate's numbers hold: a step at its K with its K*, within the
+   * tolerance. */
+  void
+  expect_certificate_holds(const analyses::Result &result,
+                           const double            tolerance)
+  {
+    const auto &c = result.certificate;
+    ASSERT_TRUE(c.holds) << c.reason;
+    EXPECT_LE(std::abs(c.K_star - c.K), tolerance * c.K);
+    EXPECT_TRUE(std::any_of(result.steps.begin(),
+                            result.steps.end(),
+                            [&](const auto &step) {
+                              return step.K == c.K && step.K_star == c.K_star;
+                            }));
+  }
+} // namespace
+
+TEST(SafetyFactorIteration,
+     PlanarLimitFromTwoAgreeingFactorsCertifiedJustBelowIt)
+{
+  // A planar surface: K* does not depend on K, and the limit itself has no
+  // static solution (singular system). K = 1, fail at 1.5, K = 1.25: K* is
+  // independent of K, so one solve just below it, at 1.5 (1 - tol/4),
+  // certifies it as a fixed point: four solves.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto                         result = analyses::iterate(
+    [](const double K) { return synthetic_step(K, 1.5, 1.5); }, control, log);
+  ASSERT_TRUE(result.converged) << log.str();
+  EXPECT_EQ(result.safety_factor, 1.5);
+  EXPECT_EQ(result.certificate.kind, analyses::Certificate::Kind::fixed_point);
+  expect_certificate_holds(result, control.tolerance);
+  EXPECT_EQ(result.steps.size(), 4u) << log.str();
+}
+
+TEST(SafetyFactorIteration, AgreeingFactorsAboveAFailedSolveAreNotCertified)
+{
+  // K* = 1.5 from every K, but solves already fail from 1.2: the bracket
+  // below 1.2 is no limit, since K* at its solved end points far beyond it
+  // (what an undeclared contact looks like). The run says so.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto                         result = analyses::iterate(
+    [](const double K) { return synthetic_step(K, 1.5, 1.2); }, control, log);
+  EXPECT_FALSE(result.converged) << log.str();
+  EXPECT_TRUE(std::isnan(result.safety_factor));
+  EXPECT_EQ(result.certificate.kind, analyses::Certificate::Kind::bracket);
+  EXPECT_FALSE(result.certificate.holds);
+  EXPECT_NEAR(result.certificate.K, 1.2, 2 * control.tolerance * 1.2);
+  EXPECT_EQ(result.certificate.K_star, 1.5);
+  EXPECT_NE(result.certificate.reason.find("did not close"), std::string::npos)
+    << result.certificate.reason;
+}
+
+TEST(SafetyFactorIteration, BracketAtTheLimitWithAMechanismAboveIsCertified)
+{
+  // K* = 1.2 + (1.2 - K)^2 below 1.2, a mechanism from 1.2 up: K* reaches K
+  // only at the limit, where the solve fails. The bracket is certified.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto                         result = analyses::iterate(
+    [](const double K) {
+      return synthetic_step(K, 1.2 + std::pow(1.2 - K, 2) / 1.2, 1.2);
+    },
+    control,
+    log);
+  ASSERT_TRUE(result.converged) << log.str() << result.certificate.reason;
+  expect_certificate_holds(result, control.tolerance);
+  EXPECT_NEAR(result.safety_factor, 1.2, control.tolerance * 1.2);
+}
+
+TEST(SafetyFactorCertificate, BracketNeedsAMechanismAbove)
+{
+  // A bracket as the iteration leaves it: a solved K_lo whose K* agrees
+  // with it, its fixed point not yet shown (distance left larger than the
+  // tolerance), and a failed K_hi within the tolerance above. Certified only
+  // if the failure above is a mechanism, not a numerical breakdown.
+  const double     tolerance = 1e-6;
+  analyses::Result result;
+  analyses::Step   solved;
+  solved.K                    = 1.2 * (1 - 0.5 * tolerance);
+  solved.K_star               = solved.K * (1 + 0.1 * tolerance);
+  solved.K_next               = 1.2;
+  solved.distance_left        = 10 * tolerance;
+  solved.solution             = synthetic_step(solved.K, solved.K_star, 1.2);
+  const analyses::Step failed = {1.2,
+                                 std::nan(""),
+                                 solved.K,
+                                 std::nan(""),
+                                 synthetic_step(1.2, 0, 1.2, true)};
+  result.steps                = {solved, failed};
+  result.bracket_low          = solved.K;
+  result.bracket_high         = failed.K;
+  const analyses::Certificate breakdown = analyses::certify(result, tolerance);
+  EXPECT_EQ(breakdown.kind, analyses::Certificate::Kind::bracket);
+  EXPECT_FALSE(breakdown.holds);
+  EXPECT_NE(breakdown.reason.find("failed numerically"), std::string::npos)
+    << breakdown.reason;
+
+  result.steps[1].solution              = synthetic_step(1.2, 0, 1.2, false);
+  const analyses::Certificate mechanism = analyses::certify(result, tolerance);
+  EXPECT_TRUE(mechanism.holds) << mechanism.reason;
+  EXPECT_EQ(mechanism.K, solved.K);
+  EXPECT_EQ(mechanism.K_failed, 1.2);
+
+  // The last step solved but its fixed point not shown, and no bracket: none
+  // holds.
+  result.steps.pop_back();
+  result.bracket_high                = std::numeric_limits<double>::infinity();
+  const analyses::Certificate moving = analyses::certify(result, tolerance);
+  EXPECT_EQ(moving.kind, analyses::Certificate::Kind::fixed_point);
+  EXPECT_FALSE(moving.holds);
+  EXPECT_NE(moving.reason.find("still moving"), std::string::npos)
+    << moving.reason;
+}
+
+TEST(SafetyFactorIteration, NoEquilibriumOnlyWhenEveryFailureIsAMechanism)
+{
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto                         mechanism =
+    analyses::iterate([](const double K) { return synthetic_step(K, 1, 0); },
+                      control,
+                      log);
+  EXPECT_FALSE(mechanism.converged);
+  EXPECT_TRUE(mechanism.no_equilibrium);
+  const auto breakdown = analyses::iterate(
+    [](const double K) { return synthetic_step(K, 1, 0, true); }, control, log);
+  EXPECT_FALSE(breakdown.converged);
+  EXPECT_FALSE(breakdown.no_equilibrium);
+}
+
+TEST(SafetyFactorIteration, FactorThatDependsOnKConvergesToItsFixedPoint)
+{
+  // K* = K + (2 - K)/2: a fixed point at 2 that is solvable, K* changes
+  // with K, so only eq. (13) itself can stop the iteration.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto                         result = analyses::iterate(
+    [](const double K) { return synthetic_step(K, K + 0.5 * (2 - K), 10); },
+    control,
+    log);
+  ASSERT_TRUE(result.converged) << log.str();
+  expect_certificate_holds(result, control.tolerance);
+  EXPECT_NEAR(result.safety_factor, 2.0, control.tolerance * 2.0);
+}
+
+TEST(SafetyFactorIteration,
+     SlowlyCreepingFactorStopsWithinTheToleranceOfItsFixedPoint)
+{
+  // h = K* - K = (K_lim - K)^1.75, roughly as on a 3D wedge (there with
+  // every pair slipping, FoldOfAllSlippingStates... below), the limit a
+  // mechanism: the reported K must be within the tolerance of K_lim (the
+  // stop used to fire 2e-6 short on such a sequence).
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const double                       K_lim  = 0.7266;
+  const auto                         result = analyses::iterate(
+    [&](const double K) {
+      return synthetic_step(K,
+                            K + std::pow(std::max(K_lim - K, 0.0), 1.75),
+                            K_lim);
+    },
+    control,
+    log);
+  ASSERT_TRUE(result.converged) << log.str();
+  expect_certificate_holds(result, control.tolerance);
+  EXPECT_LE(std::abs(result.safety_factor - K_lim), control.tolerance * K_lim)
+    << log.str();
+}
+
+TEST(SafetyFactorIteration, FoldOfAllSlippingStatesIsReachedInFewSteps)
+{
+  // A 3D sliding mass with every pair slipping: h = K* - K = a d^2 /
+  // (1 + c d), d = L - K, the local exponent 1.8 at d = 5e-3 and 2 at the
+  // limit, as measured on prm/rock_wedge.prm (a = 6, L = 0.7266); the
+  // solves end 1.3e-6 (relative) below L, as there. The answer must be a
+  // static K within the tolerance below where the solves end, certified;
+  // the secant on h alone took 26 steps on the wedge. From K = 1, halved to
+  // 0.5 (no estimate): measured 11 steps (13 before the known fold went for
+  // the end of the solves).
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const double                       L = 0.7266, end = L * (1 - 1.3e-6);
+  const auto                         result = analyses::iterate(
+    [&](const double K) {
+      const double                      d = L - K;
+      analyses::ReducedStrengthSolution s =
+        synthetic_step(K, K + 6 * d * d / (1 + 44 * d), end);
+      s.all_slipping = s.converged;
+      s.n_slip       = 10;
+      return s;
+    },
+    control,
+    log);
+  ASSERT_TRUE(result.converged) << log.str();
+  expect_certificate_holds(result, control.tolerance);
+  EXPECT_LT(result.safety_factor, end);
+  EXPECT_GE(result.safety_factor, end * (1 - control.tolerance)) << log.str();
+  EXPECT_LE(result.steps.size(), 11u) << log.str();
+}
+
+namespace
+{
+  /**
+   * The fold of FoldOfAllSlippingStatesIsReachedInFewSteps: every pair
+   * slipping, h = a d^2 / (1 + c d), the solves ending 1.3e-6 (relative)
+   * below L = 0.7266, as on prm/rock_wedge.prm.
+   */
+  analyses::ReducedStrengthSolution
+  wedge_like_fold(const double K)
+  {
+    const double L = 0.7266, end = L * (1 - 1.3e-6), d = L - K;
+    analyses::ReducedStrengthSolution s =
+      synthetic_step(K, K + 6 * d * d / (1 + 44 * d), end);
+    s.all_slipping = s.converged;
+    s.n_slip       = 10;
+    return s;
+  }
+} // namespace
+
+TEST(SafetyFactorIteration, FailedFirstFactorGoesToTheEstimateThenToTheFold)
+{
+  // The wedge-like fold from K = 1, which fails: the next K is the
+  // estimate (the FE-stress factor, 4.4 % below L on the wedge), asked for
+  // once, not 0.5; from there the fold is reached and the end of the
+  // solves bracketed. Measured: 10 steps (13 from 0.5, the old start).
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const double                       L = 0.7266, end = L * (1 - 1.3e-6);
+  unsigned int                       n_estimates = 0;
+  const auto result = analyses::iterate(wedge_like_fold, control, log, [&]() {
+    ++n_estimates;
+    return 0.956 * L;
+  });
+  ASSERT_TRUE(result.converged) << log.str();
+  expect_certificate_holds(result, control.tolerance);
+  EXPECT_EQ(n_estimates, 1u);
+  ASSERT_GE(result.steps.size(), 2u);
+  EXPECT_FALSE(result.steps[0].solution.converged);
+  EXPECT_EQ(result.steps[1].K, 0.956 * L);
+  EXPECT_LT(result.safety_factor, end);
+  EXPECT_GE(result.safety_factor, end * (1 - control.tolerance)) << log.str();
+  EXPECT_LE(result.steps.size(), 10u) << log.str();
+}
+
+TEST(SafetyFactorIteration, EstimateAboveTheFailedFirstFactorIsNotTried)
+{
+  // An estimate at or above the K that failed cannot be closer to the
+  // limit: K is halved as without one, and the answer is the same.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const auto                         with =
+    analyses::iterate(wedge_like_fold, control, log, []() { return 1.2; });
+  const auto without = analyses::iterate(wedge_like_fold, control, log);
+  ASSERT_TRUE(with.converged) << log.str();
+  ASSERT_GE(with.steps.size(), 2u);
+  EXPECT_EQ(with.steps[1].K, 0.5);
+  EXPECT_EQ(with.safety_factor, without.safety_factor);
+  EXPECT_EQ(with.steps.size(), without.steps.size());
+}
+
+TEST(SafetyFactorIteration, AllSlipStatesBoundFromAboveAndNeverCertify)
+{
+  // Below K_s = 0.9 a state with a sticking pair, K* = K + (0.9 - K)/2;
+  // from 0.9 up a static state with every pair slipping, so K* = K at any
+  // K (what the paper's slope under kh = 0.15 gave at K = 1, after a rigid
+  // slide of 540 m). The first step, at K = 1, is such a state: it must
+  // not certify K = 1; the answer is the limit of the informative steps.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  const double                       K_s    = 0.9;
+  const auto                         result = analyses::iterate(
+    [&](const double K) {
+      if (K < K_s)
+        return synthetic_step(K, K + 0.5 * (K_s - K), 10);
+      analyses::ReducedStrengthSolution s = synthetic_step(K, K, 10);
+      s.n_slip                            = 10;
+      s.degenerate                        = true;
+      return s;
+    },
+    control,
+    log);
+  ASSERT_TRUE(result.converged) << log.str() << result.certificate.reason;
+  EXPECT_TRUE(result.steps.front().solution.degenerate);
+  EXPECT_LE(std::abs(result.safety_factor - K_s), control.tolerance * K_s)
+    << log.str();
+  // What the certificate rests on is an informative step.
+  for (const auto &step : result.steps)
+    {
+      if (step.K == result.certificate.K &&
+          step.K_star == result.certificate.K_star)
+        {
+          EXPECT_FALSE(step.solution.degenerate) << log.str();
+        }
+    }
+
+  // An all-slip step alone, its K* = K to the last digit, certifies nothing.
+  analyses::Result alone;
+  alone.steps                   = {result.steps.front()};
+  alone.steps[0].distance_left  = 0;
+  const analyses::Certificate c = analyses::certify(alone, control.tolerance);
+  EXPECT_FALSE(c.holds);
+  EXPECT_NE(c.reason.find("every pair in contact slips"), std::string::npos)
+    << c.reason;
+}
