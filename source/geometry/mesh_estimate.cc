@@ -15,6 +15,8 @@
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace fdem
 {
@@ -262,12 +264,69 @@ namespace fdem
         return e;
       }
 
+      /**
+       * The area of the part of the sliding surface below the ground and
+       * the length of its rim, on an n x n grid of the surface's two
+       * parameters (the ellipsoid's angles, or the cylinder's angle and y
+       * across the width): the cells whose centre is below the ground, and
+       * the edges between such a cell and one above it or the model's side.
+       * The rim is a staircase along the grid, longer than the true curve
+       * (up to 4/pi for a curve at 45 degrees to the grid): a margin.
+       */
+      std::pair<double, double>
+      sliding_surface_area_and_rim(const Slope3D &slope)
+      {
+        const bool     cylinder = slope.surface == Slope3D::Surface::cylinder;
+        const Point<3> c        = slope.centre;
+        const double   r = slope.radius, b = slope.half_length;
+        const unsigned int n     = 200;
+        const auto         point = [&](const double s, const double t) {
+          const double phi = 2 * numbers::PI * t / n;
+          if (cylinder)
+            return Point<3>(c[0] + r * std::cos(phi),
+                            slope.width * s / n,
+                            c[2] + r * std::sin(phi));
+          const double theta = numbers::PI * s / n;
+          return Point<3>(c[0] + r * std::sin(theta) * std::cos(phi),
+                          c[1] + b * std::cos(theta),
+                          c[2] + r * std::sin(theta) * std::sin(phi));
+        };
+        std::vector<bool> below(n * n);
+        double            area = 0, rim = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const Point<3> centre = point(i + 0.5, j + 0.5);
+              below[i * n + j]      = centre[2] < slope.ground(centre[0]);
+              if (below[i * n + j])
+                area +=
+                  0.5 * cross_product_3d(point(i + 1, j + 1) - point(i, j),
+                                         point(i, j + 1) - point(i + 1, j))
+                          .norm();
+            }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            if (below[i * n + j])
+              {
+                // Across s: the grid's end is the model's side (cylinder)
+                // or a pole (an edge of length 0); around t: periodic.
+                if (i == 0 || !below[(i - 1) * n + j])
+                  rim += point(i, j).distance(point(i, j + 1));
+                if (i == n - 1 || !below[(i + 1) * n + j])
+                  rim += point(i + 1, j).distance(point(i + 1, j + 1));
+                if (!below[i * n + (j + n - 1) % n])
+                  rim += point(i, j).distance(point(i + 1, j));
+                if (!below[i * n + (j + 1) % n])
+                  rim += point(i, j + 1).distance(point(i + 1, j + 1));
+              }
+        return {area, rim};
+      }
+
       MeshEstimate
       estimate_slope_3d(const Slope3D &slope)
       {
         // An upper bound: the whole model at the size near the sliding
-        // surface. Its area is at most that of the half ellipsoid (or half
-        // cylinder across the width), 2 pi R max(R, b) (pi R W).
+        // surface.
         const bool   hexahedra = slope.element_shape == ElementShape::hypercube;
         const double near      = (hexahedra ? 2 : 1) * slope.mesh_size;
         const double volume =
@@ -277,15 +336,21 @@ namespace fdem
              (slope.length() - 0.5 * (slope.crest_x() + slope.toe_length)) /
              slope.length());
         const double tetrahedra = 8.5 * volume / (near * near * near);
-        const double area       = slope.surface == Slope3D::Surface::cylinder ?
-                                    numbers::PI * slope.radius * slope.width :
-                                    2 * numbers::PI * slope.radius *
-                                std::max(slope.radius, slope.half_length);
+        // The pairs: Gmsh's triangles of edge s on the sliding surface have
+        // 2 / (sqrt(3) s^2) = 1.155 vertices per s^2 inside, and about one
+        // per s along the rim. Split into three quadrilaterals each (a
+        // vertex more per edge and per triangle, Euler's formula): six times
+        // the inner vertices, four times the rim's. The test
+        // MeshEstimate.PairsOfTheSlope3DAnUpperBoundWithin30Percent: 7 to 8 %
+        // above the count (261 to 441 pairs); 1.2 and the staircase rim
+        // (longer than the true one) keep it an upper bound.
+        const auto [area, rim] = sliding_surface_area_and_rim(slope);
         MeshEstimate e;
         e.entry      = "Geometry/Slope 3D/Mesh size";
         e.n_cells    = tetrahedra * (hexahedra ? 4 : 1);
         e.n_vertices = tetrahedra / 5.5 * (hexahedra ? 24 : 1);
-        e.n_pairs    = 1.15 * area / std::pow(0.65 * slope.mesh_size, 2);
+        e.n_pairs    = (hexahedra ? 6 : 1) * 1.2 * area / (near * near) +
+                    (hexahedra ? 4 : 1) * rim / near;
         return e;
       }
     } // namespace
@@ -298,7 +363,10 @@ namespace fdem
     {
       const double n_dofs =
         dim * n_vertices * std::pow(double(fe_degree), int(dim));
-      return (2950 * n_dofs + 122.0 * dim * dim * n_pairs * n_pairs) /
+      // 110 bytes per (dim n_pairs)^2: 82 measured on prm/slope_3d.prm at
+      // 261 to 624 pairs (doc/scaling.md, "3D: a slope on a sphere"), with
+      // a third more as a margin.
+      return (2950 * n_dofs + 110.0 * dim * dim * n_pairs * n_pairs) /
              (1 << 20);
     }
 
@@ -410,9 +478,14 @@ namespace fdem
       const double       limit = memory_limit_MiB(geometry);
       std::ostringstream message;
       message.precision(3);
-      message << e.entry << ": about " << e.n_cells << " elements and "
-              << e.n_vertices << " nodes, which would need about " << mib
-              << " MiB, more than the " << limit
+      message << e.entry << ": about " << e.n_cells << " elements";
+      if (e.n_pairs > 0)
+        message << ", " << e.n_vertices << " nodes and " << e.n_pairs
+                << " node pairs";
+      else
+        message << " and " << e.n_vertices << " nodes";
+      message << ", which would need about " << mib << " MiB, more than the "
+              << limit
               << " MiB allowed (Geometry/Memory limit; 0 is this machine's "
                  "memory or ulimit -v); use a coarser mesh or raise the limit.";
       AssertThrow(std::isfinite(mib) && mib <= limit,

@@ -9,6 +9,8 @@
 
 #include <fdem/geometry/mesh_estimate.h>
 
+#include <set>
+
 using namespace geometry_test;
 
 namespace
@@ -16,6 +18,23 @@ namespace
   // The estimate only has to tell a mesh that fits from one that is orders
   // of magnitude too large: within a factor of 3 of the real counts.
   constexpr double factor = 3;
+
+  /** prm/slope_3d.prm's model with another element shape, mesh size or
+   * surface. */
+  std::string
+  slope_3d_entries(const std::string &shape,
+                   const double       mesh_size,
+                   const std::string &surface = "sphere",
+                   const std::string &centre  = "19.61, 20, 46.32",
+                   const double       width   = 40)
+  {
+    return "set Source = slope 3d\nsubsection Slope 3D\nset Sliding surface "
+           "= " +
+           surface + "\nset Surface centre = " + centre +
+           "\nset Surface radius = 21.32\nset Width = " +
+           std::to_string(width) + "\nset Element shape = " + shape +
+           "\nset Mesh size = " + std::to_string(mesh_size) + "\nend";
+  }
 
   template <int dim>
   void
@@ -62,6 +81,35 @@ TEST(MeshEstimate, WithinAFactorOfTheMeshIn3D)
   expect_close_estimate<3>(
     "set Source = wedge\nsubsection Wedge\nset Element shape = "
     "tetrahedron\nend");
+  expect_close_estimate<3>(slope_3d_entries("tetrahedron", 2));
+  expect_close_estimate<3>(slope_3d_entries("hexahedron", 2));
+}
+
+
+
+TEST(MeshEstimate, PairsOfTheSlope3DAnUpperBoundWithin30Percent)
+{
+  // The pairs enter the memory estimate squared (the dense interface
+  // parts): an upper bound, but not by so much that a model that fits is
+  // refused. A pair per vertex of the sliding surface.
+  const auto check = [](const std::string &entries) {
+    SCOPED_TRACE(entries);
+    const Parameters       geometry = parse(entries);
+    const auto             estimate = geometry::estimate_mesh(geometry);
+    const auto             mesh     = geometry::make_mesh<3>(geometry, "", "");
+    std::set<unsigned int> vertices;
+    for (const auto &face : faces_of(mesh, "sliding surface"))
+      vertices.insert(face.vertices.begin(), face.vertices.end());
+    const double pairs = vertices.size();
+    std::cout << entries << ": " << pairs << " pairs (estimate "
+              << estimate.n_pairs << ")" << std::endl;
+    EXPECT_GT(estimate.n_pairs, pairs);
+    EXPECT_LT(estimate.n_pairs, 1.3 * pairs);
+  };
+  check(slope_3d_entries("tetrahedron", 2));
+  check(slope_3d_entries("tetrahedron", 1.5));
+  check(slope_3d_entries("hexahedron", 2));
+  check(slope_3d_entries("tetrahedron", 2, "cylinder", "19.61, 0, 46.32", 6));
 }
 
 
