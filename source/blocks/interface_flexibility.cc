@@ -76,11 +76,9 @@ namespace fdem
                 return false;
         }
       // C = P (K^{-1})_SS P^T; a fixed dof has an empty row, so zero.
-      // MUMPS_Schur hands its inverse over (and then has no Schur dofs):
-      // it is not kept beside C (doc/scaling.md, memory).
-      const std::size_t         n_s = schur.size();
       const std::vector<double> inverse =
         factorization->inverse_on_schur_dofs();
+      const std::size_t n_s = schur.size();
       for (unsigned int r = 0; r < dofs.size(); ++r)
         for (unsigned int c = 0; c < dofs.size(); ++c)
           {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/blocks/crs_rows.h>
 #include <fdem/blocks/mumps_schur_solver.h>
 
 #include <deal.II/base/exceptions.h>
@@ -68,6 +69,38 @@ namespace fdem
 
     namespace
     {
+      /**
+       * The concatenation over the ranks of @p comm of each rank's @p local
+       * (rank 0's first), on every rank.
+       */
+      template <typename T>
+      std::vector<T>
+      all_gather_concatenated(const MPI_Comm comm, const std::vector<T> &local)
+      {
+        const int        n_ranks = Utilities::MPI::n_mpi_processes(comm);
+        const int        size    = local.size();
+        std::vector<int> sizes(n_ranks), offsets(n_ranks, 0);
+        int              ierr =
+          MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm);
+        AssertThrowMPI(ierr);
+        for (int r = 1; r < n_ranks; ++r)
+          offsets[r] = offsets[r - 1] + sizes[r - 1];
+        std::vector<T>     all(offsets.back() + sizes.back());
+        const MPI_Datatype type =
+          Utilities::MPI::internal::MPIDataTypes::mpi_type_id(
+            static_cast<const T *>(nullptr));
+        ierr = MPI_Allgatherv(local.data(),
+                              size,
+                              type,
+                              all.data(),
+                              sizes.data(),
+                              offsets.data(),
+                              type,
+                              comm);
+        AssertThrowMPI(ierr);
+        return all;
+      }
+
       /** Broadcasts @p data (same size on every rank) from rank 0. */
       void
       broadcast_from_host(const MPI_Comm    comm,
@@ -85,13 +118,8 @@ namespace fdem
     {
       Assert(keep_schur_complement || schur_dofs.empty(),
              ExcMessage("MUMPS without Schur complement got Schur dofs."));
-      matrix = &A;
-      schur  = schur_dofs;
-      if (!schur.empty())
-        {
-          inverse_dofs.clear();
-          schur_inverse.clear();
-        }
+      matrix          = &A;
+      schur           = schur_dofs;
       communicator    = A.get_mpi_communicator();
       n_ranks         = Utilities::MPI::n_mpi_processes(communicator);
       const bool host = Utilities::MPI::this_mpi_process(communicator) == 0;
@@ -129,6 +157,45 @@ namespace fdem
                 }
             }
         }
+
+      // The rows of the Schur dofs, on every rank: the solves need K_SI.
+      {
+        std::vector<int>    local_rows, local_columns;
+        std::vector<double> local_values;
+        for (unsigned int k = 0; k < schur.size(); ++k)
+          if (crs.MyGRID(static_cast<int>(schur[k])))
+            for_each_entry_in_row(crs,
+                                  crs.LRID(static_cast<int>(schur[k])),
+                                  [&](const int column, const double value) {
+                                    local_rows.push_back(k);
+                                    local_columns.push_back(column);
+                                    local_values.push_back(value);
+                                  });
+        std::vector<int> all_rows = local_rows;
+        if (n_ranks > 1)
+          {
+            all_rows = all_gather_concatenated(communicator, local_rows);
+            local_columns =
+              all_gather_concatenated(communicator, local_columns);
+            local_values = all_gather_concatenated(communicator, local_values);
+          }
+        // Counting sort by row, keeping each row's entries in their order.
+        schur_row_start.assign(schur.size() + 1, 0);
+        for (const int k : all_rows)
+          ++schur_row_start[k + 1];
+        for (unsigned int k = 0; k < schur.size(); ++k)
+          schur_row_start[k + 1] += schur_row_start[k];
+        std::vector<std::size_t> next(schur_row_start.begin(),
+                                      schur_row_start.end() - 1);
+        schur_row_columns.resize(all_rows.size());
+        schur_row_values.resize(all_rows.size());
+        for (std::size_t e = 0; e < all_rows.size(); ++e)
+          {
+            const std::size_t position  = next[all_rows[e]]++;
+            schur_row_columns[position] = local_columns[e];
+            schur_row_values[position]  = local_values[e];
+          }
+      }
 
       DMUMPS_STRUC_C &id = data->id;
       if (data->initialized)
@@ -218,26 +285,6 @@ namespace fdem
                         "The Schur complement of a block stiffness matrix "
                         "on its interface dofs is not positive definite: "
                         "the block is not held (check its constraints)."));
-
-          // (K^{-1})_SS = S^{-1} in place of the factor, on every rank.
-          const types::blas_int n_s = n_schur;
-          potri("L", &n_s, schur_factor.data(), &n_s, &info);
-          AssertThrow(info == 0,
-                      ExcMessage("Inverting the Schur complement of a "
-                                 "block stiffness matrix failed."));
-          for (types::blas_int j = 0; j < n_s; ++j)
-            for (types::blas_int i = 0; i < j; ++i)
-              schur_factor[i + std::size_t(j) * n_s] =
-                schur_factor[j + std::size_t(i) * n_s];
-          // K again without Schur dofs, for the solves: the first call's
-          // MUMPS instance, with its fronts of the Schur dofs, is freed
-          // (JOB = -2) before the second factorises.
-          std::vector<types::global_dof_index> dofs = std::move(schur);
-          std::vector<double>                  inverse;
-          inverse.swap(schur_factor);
-          factorize(A, {});
-          inverse_dofs  = std::move(dofs);
-          schur_inverse = std::move(inverse);
         }
     }
 
@@ -268,17 +315,71 @@ namespace fdem
                             const unsigned int   n_rhs) const
     {
       Assert(matrix != nullptr, ExcMessage("factorize() first."));
-      // factorize() ends with a factorisation without Schur dofs.
-      Assert(schur.empty(), ExcInternalError());
+      const std::size_t  n       = data->id.n;
+      const unsigned int n_schur = schur.size();
+      if (n_schur == 0)
+        {
+          solve_interior(b, n_rhs);
+          return;
+        }
+      // r_S = b_S, then y_I = K_II^{-1} b_I.
+      std::vector<double> r(std::size_t(n_schur) * n_rhs);
+      for (unsigned int c = 0; c < n_rhs; ++c)
+        for (unsigned int k = 0; k < n_schur; ++k)
+          r[k + c * n_schur] = b[schur[k] + c * n];
       solve_interior(b, n_rhs);
+
+      // r_S -= K_SI y_I: the rows of the Schur dofs, interior columns.
+      for (unsigned int k = 0; k < n_schur; ++k)
+        for_each_entry_in_schur_row(k,
+                                    [&](const int column, const double value) {
+                                      if (schur_index[column] < 0)
+                                        for (unsigned int c = 0; c < n_rhs; ++c)
+                                          r[k + c * n_schur] -=
+                                            value * b[column + c * n];
+                                    });
+      // x_S = S^{-1} r_S with the Cholesky factor.
+      const types::blas_int n_s = n_schur, n_r = n_rhs;
+      types::blas_int       info = 0;
+      potrs("L", &n_s, &n_r, schur_factor.data(), &n_s, r.data(), &n_s, &info);
+      Assert(info == 0, ExcInternalError());
+
+      // x_I = y_I - K_II^{-1} K_IS x_S: solve with rhs -K_IS x_S, using
+      // the symmetry K_IS = K_SI^T (the rows of the Schur dofs again).
+      std::vector<double> correction(n * n_rhs, 0.0);
+      for (unsigned int k = 0; k < n_schur; ++k)
+        for_each_entry_in_schur_row(k,
+                                    [&](const int column, const double value) {
+                                      if (schur_index[column] < 0)
+                                        for (unsigned int c = 0; c < n_rhs; ++c)
+                                          correction[column + c * n] -=
+                                            value * r[k + c * n_schur];
+                                    });
+      solve_interior(correction, n_rhs);
+      for (std::size_t i = 0; i < n * n_rhs; ++i)
+        b[i] += correction[i];
+      for (unsigned int c = 0; c < n_rhs; ++c)
+        for (unsigned int k = 0; k < n_schur; ++k)
+          b[schur[k] + c * n] = r[k + c * n_schur];
     }
 
     std::vector<double>
     MumpsSchurSolver::inverse_on_schur_dofs() const
     {
-      std::vector<double> inverse;
-      inverse.swap(schur_inverse);
-      inverse_dofs.clear();
+      std::vector<double> inverse = schur_factor;
+      if (!schur.empty())
+        {
+          const types::blas_int n_s  = schur.size();
+          types::blas_int       info = 0;
+          potri("L", &n_s, inverse.data(), &n_s, &info);
+          AssertThrow(info == 0,
+                      ExcMessage("Inverting the Schur complement of a "
+                                 "block stiffness matrix failed."));
+          for (types::blas_int j = 0; j < n_s; ++j)
+            for (types::blas_int i = 0; i < j; ++i)
+              inverse[i + std::size_t(j) * n_s] =
+                inverse[j + std::size_t(i) * n_s];
+        }
       return inverse;
     }
 

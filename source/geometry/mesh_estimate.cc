@@ -363,10 +363,10 @@ namespace fdem
     {
       const double n_dofs =
         dim * n_vertices * std::pow(double(fe_degree), int(dim));
-      // 110 bytes per (dim n_pairs)^2: 82 measured on prm/slope_3d.prm at
-      // 261 to 624 pairs (doc/scaling.md, "3D: a slope on a sphere"), with
-      // a third more as a margin.
-      return (2950 * n_dofs + 110.0 * dim * dim * n_pairs * n_pairs) /
+      // 150 bytes per (dim n_pairs)^2: 115 to 137 measured on
+      // prm/slope_3d.prm at 261 to 624 pairs (doc/scaling.md, "3D: a slope
+      // on a sphere"), with a tenth more as a margin.
+      return (2950 * n_dofs + 150.0 * dim * dim * n_pairs * n_pairs) /
              (1 << 20);
     }
 

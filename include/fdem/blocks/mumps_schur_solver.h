@@ -16,26 +16,23 @@ namespace fdem
 
     /**
      * MUMPS (through its C interface) for a symmetric positive definite
-     * block stiffness K, factorised as L D L^T with a list of "Schur" dofs
-     * eliminated last: MUMPS factorises the rest, K_II, and returns the
+     * block stiffness K, factorised once as L D L^T with a list of "Schur"
+     * dofs eliminated last: MUMPS factorises the rest, K_II, and returns the
      * dense Schur complement S = K_SS - K_SI K_II^{-1} K_IS, which is then
-     * Cholesky-factorised and inverted here: (K^{-1})_SS = S^{-1} follows
-     * from the dense factor alone, and the interface flexibility needs no
-     * sparse solves (MUMPS user's guide, ICNTL(19)).
+     * Cholesky-factorised here. Together that is a full factorisation of K
+     * for the cost of one, and (K^{-1})_SS = S^{-1} follows from the dense
+     * factor alone: the interface flexibility needs no sparse solves
+     * (MUMPS user's guide, ICNTL(19)).
      *
-     * Then K is factorised again without Schur dofs, for the solves: MUMPS's
-     * fronts of the Schur dofs (in 3D several times n_S^2 numbers, kept
-     * until MUMPS is freed) and S's factor would otherwise stay for the
-     * whole run, the largest part of its peak memory (doc/scaling.md). A
-     * plain factorisation of the sparse K costs little beside them. The
-     * inverse is kept until inverse_on_schur_dofs() hands it over.
+     * A solve K x = b is y_I = K_II^{-1} b_I, x_S = S^{-1} (b_S - K_SI y_I),
+     * x_I = K_II^{-1} (b_I - K_IS x_S): two MUMPS solves of the interior.
      *
      * MPI: MUMPS runs on the matrix's communicator. With one rank it gets
      * the matrix centralised, as always; with more, each rank gives the
      * rows it owns (ICNTL(18) = 3) and MUMPS factorises in parallel. The
      * Schur complement comes back on rank 0 (ICNTL(19) = 1), which
-     * Cholesky-factorises it and broadcasts the factor, which every rank
-     * inverts. Right-hand sides and solutions
+     * Cholesky-factorises it and broadcasts the factor; the rows of K of the
+     * Schur dofs are gathered on every rank. Right-hand sides and solutions
      * are global-size arrays, the same on every rank: MUMPS reads rank 0's
      * (ICNTL(20) = 0), and its solution, on rank 0 (ICNTL(21) = 0), is
      * broadcast. Every call is collective.
@@ -75,22 +72,17 @@ namespace fdem
       void
       solve(std::vector<double> &b, const unsigned int n_rhs) const override;
 
-      /**
-       * The Schur dofs, in the order given to factorize(); none after
-       * inverse_on_schur_dofs().
-       */
+      /** The Schur dofs, in the order given to factorize(). */
       const std::vector<types::global_dof_index> &
       schur_dofs() const override
       {
-        return inverse_dofs;
+        return schur;
       }
 
       /**
        * (K^{-1})_SS = S^{-1} on the Schur dofs, n_S x n_S column-major,
-       * from the dense factor (LAPACK potri), computed in factorize() and
-       * handed over here, once: the factorisation keeps no copy (in 3D n_S^2
-       * numbers are as many as in the mixed system's C), and has no Schur
-       * dofs after it.
+       * from the dense factor (LAPACK potri). Not kept: the flexibility is
+       * built once, and in 3D n_S^2 numbers are many.
        */
       std::vector<double>
       inverse_on_schur_dofs() const override;
@@ -130,18 +122,26 @@ namespace fdem
       std::vector<types::global_dof_index> schur;
       /** Per dof: its index in the Schur list, or -1. */
       std::vector<int> schur_index;
-      /**
-       * Cholesky factor of S (lower triangle, column-major), during
-       * factorize() only: it is inverted in place into schur_inverse.
-       */
+      /** Cholesky factor of S (lower triangle, column-major). */
       std::vector<double> schur_factor;
-
       /**
-       * The Schur dofs of (K^{-1})_SS, and (K^{-1})_SS (n_S x n_S), until
-       * inverse_on_schur_dofs() hands them over.
+       * The rows of K of the Schur dofs (all columns), in compressed rows:
+       * row k holds entries schur_row_start[k] to schur_row_start[k+1].
        */
-      mutable std::vector<types::global_dof_index> inverse_dofs;
-      mutable std::vector<double>                  schur_inverse;
+      std::vector<std::size_t> schur_row_start;
+      std::vector<int>         schur_row_columns;
+      std::vector<double>      schur_row_values;
+
+      /** Calls f(column, value) for each entry of the row of Schur dof k. */
+      template <typename Function>
+      void
+      for_each_entry_in_schur_row(const unsigned int k, const Function &f) const
+      {
+        for (std::size_t e = schur_row_start[k]; e < schur_row_start[k + 1];
+             ++e)
+          f(schur_row_columns[e], schur_row_values[e]);
+      }
+
       /** MUMPS solve of the interior: x_I = K_II^{-1} b_I, x_S = 0. */
       void
       solve_interior(std::vector<double> &b, const unsigned int n_rhs) const;

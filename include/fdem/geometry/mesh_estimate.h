@@ -31,9 +31,9 @@ namespace fdem
       /**
        * The peak memory of a run on this mesh (MiB), with elements of
        * degree @p fe_degree: about 2950 bytes per degree of freedom (the
-       * FE part, measured on the paper's slope) plus 110 bytes per entry of
+       * FE part, measured on the paper's slope) plus 150 bytes per entry of
        * a dense (dim pairs)^2 matrix (the dense interface parts with the
-       * dense mixed system: about ten such matrices alive at the peak,
+       * dense mixed system: about 15 such matrices alive at the peak,
        * measured on prm/slope_3d.prm, and a margin), doc/scaling.md.
        */
       double
