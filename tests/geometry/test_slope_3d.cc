@@ -3,9 +3,9 @@
 //
 // Tests of the case "slope 3d": the sliding mass's volume and the sliding
 // surface's area against integrals of the exact shapes, every vertex of the
-// sliding surface on the quadric, the blocks and face groups, and surfaces
-// that do not cut the ground, leave the model or do not daylight on the
-// slope.
+// sliding surface on the quadric (but the few whose move onto it would
+// twist a cell), the blocks and face groups, and surfaces that do not cut
+// the ground, leave the model or do not daylight on the slope.
 
 #include "geometry_test_helpers.h"
 
