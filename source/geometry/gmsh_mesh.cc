@@ -180,38 +180,6 @@ namespace fdem
       }
 
       /**
-       * Smallest and largest sine of the corner angles of a cell, signed:
-       * all positive for a valid cell in deal.II's orientation, all negative
-       * for a valid cell of the opposite orientation, mixed for a twisted or
-       * non-convex cell, and zero for a degenerate one. In 3D it is the
-       * triple product of the unit edges at each corner.
-       */
-      template <int dim>
-      std::pair<double, double>
-      corner_sine_range(const std::vector<Point<dim>> &vertices,
-                        const CellData<dim>           &cell)
-      {
-        std::pair<double, double> range(1, -1);
-        for (unsigned int v = 0; v < cell.vertices.size(); ++v)
-          {
-            Tensor<2, dim> edges; // rows: unit edges along x, y (, z)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const unsigned int neighbor = v ^ (1u << d);
-                Tensor<1, dim>     edge = vertices[cell.vertices[neighbor]] -
-                                      vertices[cell.vertices[v]];
-                if ((v >> d) & 1u)
-                  edge *= -1;
-                edges[d] = (edge.norm() > 0) ? edge / edge.norm() : edge;
-              }
-            const double sine = determinant(edges);
-            range.first       = std::min(range.first, sine);
-            range.second      = std::max(range.second, sine);
-          }
-        return range;
-      }
-
-      /**
        * Signed measure of a simplex relative to the product of its edges
        * from corner 0: positive in deal.II's orientation, negative in the
        * opposite one, about zero for a degenerate simplex.
@@ -232,6 +200,40 @@ namespace fdem
         return (scale > 0) ? determinant(edges) / scale : 0.;
       }
     } // namespace
+
+
+
+    template <int dim>
+    std::pair<double, double>
+    corner_sine_range(const std::vector<Point<dim>> &vertices,
+                      const CellData<dim>           &cell)
+    {
+      std::pair<double, double> range(1, -1);
+      for (unsigned int v = 0; v < cell.vertices.size(); ++v)
+        {
+          Tensor<2, dim> edges; // rows: unit edges along x, y (, z)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const unsigned int neighbor = v ^ (1u << d);
+              Tensor<1, dim>     edge =
+                vertices[cell.vertices[neighbor]] - vertices[cell.vertices[v]];
+              if ((v >> d) & 1u)
+                edge *= -1;
+              edges[d] = (edge.norm() > 0) ? edge / edge.norm() : edge;
+            }
+          const double sine = determinant(edges);
+          range.first       = std::min(range.first, sine);
+          range.second      = std::max(range.second, sine);
+        }
+      return range;
+    }
+
+
+
+    template std::pair<double, double>
+    corner_sine_range<2>(const std::vector<Point<2>> &, const CellData<2> &);
+    template std::pair<double, double>
+    corner_sine_range<3>(const std::vector<Point<3>> &, const CellData<3> &);
 
 
 

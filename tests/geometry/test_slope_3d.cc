@@ -3,13 +3,15 @@
 //
 // Tests of the case "slope 3d": the sliding mass's volume and the sliding
 // surface's area against integrals of the exact shapes, every vertex of the
-// sliding surface on the quadric, the blocks and face groups, and surfaces
-// that do not cut the ground, leave the model or do not daylight on the
-// slope.
+// sliding surface on the quadric (but the few whose move onto it would
+// twist a cell), the blocks and face groups, and surfaces that do not cut
+// the ground, leave the model or do not daylight on the slope.
 
 #include "geometry_test_helpers.h"
 
 #include <fdem/geometry/cases/slope_3d.h>
+
+#include <set>
 
 using namespace geometry_test;
 
@@ -87,7 +89,9 @@ namespace
   }
 
   void
-  check_slope(const Parameters &geometry, const double volume_tolerance)
+  check_slope(const Parameters  &geometry,
+              const double       volume_tolerance,
+              const unsigned int max_off_surface)
   {
     const geometry::Slope3D &s    = geometry.slope_3d;
     const MeshDescription<3> mesh = geometry::make_slope_3d_mesh(s);
@@ -97,16 +101,40 @@ namespace
          {"sliding surface", "ground", "base", "sides"})
       EXPECT_FALSE(faces_of(mesh, group).empty()) << group;
 
-    // Every vertex of the sliding surface on the quadric (Gmsh places the
-    // vertices of the split elements on the surface too).
-    double area = 0, worst = 0;
+    // Every vertex of the sliding surface on the quadric (the generator
+    // moves the split elements' new vertices onto it), but for those a
+    // move would twist a cell: they stay on the tetrahedra's flat faces
+    // and edges, inside the surface, no deeper than the middle of a chord
+    // or a triangle of chords: with Q(d) = (d_x/R)^2 + (d_y/b)^2 +
+    // (d_z/R)^2 <= (|d| / min(R, b))^2 the quadric is -Q(d)/4 at the
+    // middle of a chord d and -(Q(d_1) + Q(d_2) + Q(d_3))/9 at the
+    // centroid of a triangle of chords: -0.053 for edges up to 6 m (the
+    // tetrahedra are of 2 h = 4 m) against b = 15 m. Measured -0.027.
+    double                 area = 0, worst = 0, deepest = 0;
+    unsigned int           n_off = 0;
+    std::set<unsigned int> vertices;
     for (const auto &face : faces_of(mesh, "sliding surface"))
       {
         area += face_area(mesh, face);
-        for (const unsigned int v : face.vertices)
-          worst = std::max(worst, std::abs(s.quadric(mesh.vertices[v])));
+        vertices.insert(face.vertices.begin(), face.vertices.end());
       }
-    EXPECT_LT(worst, 1e-6);
+    for (const unsigned int v : vertices)
+      {
+        const double q = s.quadric(mesh.vertices[v]);
+        if (std::abs(q) < 1e-6)
+          worst = std::max(worst, std::abs(q));
+        else
+          {
+            ++n_off;
+            deepest = std::min(deepest, q);
+            EXPECT_LT(q, 0) << mesh.vertices[v];
+          }
+      }
+    std::cout << vertices.size() << " vertices on the sliding surface, "
+              << n_off << " left on the facets (quadric down to " << deepest
+              << "), the others on it to " << worst << "\n";
+    EXPECT_LE(n_off, max_off_surface);
+    EXPECT_GT(deepest, -0.053);
 
     const auto [exact_volume, exact_area] = exact_volume_and_area(s, 2000);
     const double volume =
@@ -122,30 +150,35 @@ namespace
 
 
 
-// Disabled: the hexahedra split from the tetrahedra next to the dilated
-// sphere are twisted (make_slope_3d_mesh() stops at "a cell of block
-// 'foundation' ... is degenerate or twisted"); open, doc/theory.md (3D).
-TEST(Slope3D, DISABLED_EllipsoidMassAndSurfaceMatchTheExactShape)
+// The default ellipsoid (its hexahedra were twisted before the split's
+// vertices were moved onto the surface by the generator, keeping those
+// whose move twists a cell: 7 of 313 measured; at most 5 %).
+TEST(Slope3D, EllipsoidMassAndSurfaceMatchTheExactShape)
 {
   check_slope(
     parse(slope_entries("ellipsoid", "19.61, 20, 46.32", 21.32, 15, 40, 2)),
-    0.02);
+    0.02,
+    16);
 }
 
 
 
 TEST(Slope3D, SphereMassAndSurfaceMatchTheExactShape)
 {
-  check_slope(
-    parse(slope_entries("sphere", "19.61, 20, 46.32", 21.32, 0, 50, 2)), 0.02);
+  check_slope(parse(
+                slope_entries("sphere", "19.61, 20, 46.32", 21.32, 0, 50, 2)),
+              0.02,
+              0);
 }
 
 
 
 TEST(Slope3D, CylinderMassAndSurfaceMatchTheExactShape)
 {
-  check_slope(
-    parse(slope_entries("cylinder", "19.61, 0, 46.32", 21.32, 15, 6, 2)), 0.02);
+  check_slope(parse(
+                slope_entries("cylinder", "19.61, 0, 46.32", 21.32, 15, 6, 2)),
+              0.02,
+              0);
 }
 
 

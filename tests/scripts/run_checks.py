@@ -74,6 +74,10 @@
                                          certified, and within TOL of the
                                          exact phi = 0 K of the sphere
                                          (undrained_sphere.py)
+  run_checks.py undrained-ellipsoid EXE CASE.prm XC,YC,ZC R B C GAMMA TOL
+                                         certified, and within TOL of the
+                                         exact phi = 0 K of the spheroid
+                                         (undrained_sphere.py, 320 points)
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -481,6 +485,22 @@ def check_turned(exe, prm, *assignments):
     compare_turned(exe, prm, summary, settings)
 
 
+def check_undrained_ellipsoid(exe, prm, centre, radius, half_length, cohesion, unit_weight, tolerance):
+    """@p prm, a slope on a spheroid (semi-axes @p radius in x and z,
+    @p half_length along y, its axis of revolution) with phi = 0,
+    certified and within @p tolerance of the exact K of the rigid mass
+    turning about that axis, the spheroid's only rigid mechanism
+    (undrained_sphere.py with 320 points in y; 160, 320 and 640 points
+    agree within 8.3e-7)."""
+    import undrained_sphere  # noqa: E402
+    K = certified_run(exe, prm)["safety_factor"]
+    exact = undrained_sphere.undrained_sphere_factor(
+        tuple(map(float, centre.split(","))), float(radius), float(cohesion), float(unit_weight),
+        n=320, b=float(half_length))
+    print(f"exact {exact!r}; relative difference {K / exact - 1:.2e} (tolerance {tolerance})")
+    assert abs(K / exact - 1) <= float(tolerance), (K, exact)
+
+
 def check_plane_strain_contact(exe, prm, prm_2d, width, tolerance):
     """One contact solve at full strength (Safety factor/Compute = false)
     of @p prm, a 3D model of @p width (m) along the axis of a cylindrical
@@ -646,6 +666,7 @@ if __name__ == "__main__":
          "plane-strain-contact": check_plane_strain_contact,
          "reference-factor": check_reference_factor,
          "undrained-sphere": check_undrained_sphere, "turned": check_turned,
+         "undrained-ellipsoid": check_undrained_ellipsoid,
          "certified": check_certified, "fe-stress": check_fe_stress,
          "mesh-convergence": check_mesh_convergence,
          "stiffness-consistency": check_stiffness_consistency,

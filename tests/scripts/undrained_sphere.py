@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""The safety factor of a rigid mass on a spherical sliding surface in
-undrained (phi = 0) soil, by quadrature, independent of the program.
+"""The safety factor of a rigid mass on a spherical, or spheroidal,
+sliding surface in undrained (phi = 0) soil, by quadrature, independent of
+the program.
 
 With phi = 0 the strength c does not depend on the normal stress, and the
 normal stresses on a sphere pass through its centre: they have no moment
@@ -16,20 +17,31 @@ M_w the moment of the mass's weight about the centre, and K = min over e
 (Baligh & Azzouz 1975, J. Geotech. Eng. Div. 101(GT11), for cylinders with
 ends; the same moment balance on a sphere). For a mass symmetric about the
 plane y = y_c, M_w lies along y and the axis e = y is the minimum (checked
-by tilting e by 5 degrees in eight directions: K rises in each). On the
-sphere, with psi the angle about the y axis, dA = R dpsi dy and
-|y x r| = rho(y) = sqrt(R^2 - (y - y_c)^2), so
+by tilting e by 5 degrees in eight directions: K rises in each).
 
-    K = c * integral rho(y) R psi_below(y) dy / (gamma * integral (x - x_c) dV).
+A spheroid with semi-axes R in x and z and b along y is a surface of
+revolution about the axis along y through its centre: its normal
+((x - x_c)/R^2, (y - y_c)/b^2, (z - z_c)/R^2) has no moment about that axis
+((z - z_c) n_x - (x - x_c) n_z = 0), and turning about it is its only
+rigid motion, so K = K(y) there. With psi the angle about the y axis and
+rho(y) = R sqrt(1 - ((y - y_c)/b)^2) the radius of the section circle,
+dA = J dpsi dy with J = rho sqrt(1 + rho'^2) = sqrt(rho^2 + R^4 s^2 / b^2),
+s = (y - y_c)/b (J = R on the sphere), and |y x r| = rho, so
+
+    K = c * integral rho(y) J(y) psi_below(y) dy / (gamma * integral (x - x_c) dV).
 
 The slope is the section of tests/three_d/slope_3d.prm (the paper's:
 ground z = 25 for x <= 10, rising to 35 at x = 30, flat beyond) extruded
 along y. Gauss-Legendre quadrature on the pieces between the ground's kinks
 and its crossings of each section circle, and in y with the substitution
-y = y_c -/+ (y_c - y_0) cos t that softens the ends: 80 and 160 points in
-y agree to 3e-7 (40 points: 1.1e-5 lower).
+y = y_c -/+ (y_c - y_0) cos t that softens the ends. The sphere (R = 21.32
+m): 1.0315274 with 80 points in y, 1.0315297, 1.0315304 with 160, 320
+(40 points: 8.6e-6 lower). The spheroid of tests/three_d/slope_3d.prm
+(b = 15 m, c = 20 kPa): 1.0956209, 1.0956218, 1.0956214 with 160, 320, 640
+points, within 8.3e-7 (a crude independent sum, 4000 x 8000 facets of the
+spheroid and 3000 x 3000 columns of the mass, gives 1.0956047, -1.5e-5).
 
-    /usr/bin/python3 tests/scripts/undrained_sphere.py XC YC ZC R C GAMMA
+    /usr/bin/python3 tests/scripts/undrained_sphere.py XC YC ZC R C GAMMA [B [N]]
 """
 import sys
 
@@ -69,14 +81,18 @@ def piecewise_gauss(f, a, b, breaks, n=40):
     return total
 
 
-def section(centre, R, y):
-    """The surface integral of rho R over psi below the ground and the
+def section(centre, R, b, y):
+    """The surface integral of rho J over psi below the ground and the
     first moment (x - x_c) of the mass's section, at y."""
     xc, yc, zc = centre
-    rho = np.sqrt(R * R - (y - yc) ** 2)
+    s = (y - yc) / b
+    rho = R * np.sqrt(1 - s * s)
+    # dA = J dpsi dy with J = rho sqrt(1 + rho'(y)^2) = sqrt(rho^2 + R^4 s^2 / b^2)
+    # (R on a sphere).
+    J = np.sqrt(rho * rho + (R * R * s / b) ** 2)
     below = lambda psi: ground(xc + rho * np.sin(psi)) - (zc - rho * np.cos(psi))
     kinks = [np.arcsin((x - xc) / rho) for x in (X_TOE, X_CREST) if abs(x - xc) < rho]
-    area = piecewise_gauss(lambda psi: np.where(below(psi) > 0, rho * R, 0.0), -np.pi, np.pi,
+    area = piecewise_gauss(lambda psi: np.where(below(psi) > 0, rho * J, 0.0), -np.pi, np.pi,
                            sign_changes(below, -np.pi, np.pi) + kinks)
 
     def height(x):
@@ -91,16 +107,19 @@ def section(centre, R, y):
     return np.array([area, moment])
 
 
-def undrained_sphere_factor(centre, R, c, gamma, n=80):
+def undrained_sphere_factor(centre, R, c, gamma, n=80, b=None):
+    """K of the sphere of radius R, or of the spheroid with semi-axes R in
+    x and z and b along y (its axis of revolution)."""
     xc, yc, zc = centre
+    b = R if b is None else b
 
     def depth(y):
-        rho = np.sqrt(max(R * R - (y - yc) ** 2, 0.0))
+        rho = R * np.sqrt(max(1 - ((y - yc) / b) ** 2, 0.0))
         xs = np.linspace(xc - rho, xc + rho, 2001)
         return np.max(ground(xs) - (zc - np.sqrt(np.maximum(rho ** 2 - (xs - xc) ** 2, 0))))
 
     # y_0: where the section circles first dip below the ground.
-    ys = np.linspace(yc - R, yc, 4001)
+    ys = np.linspace(yc - b, yc, 4001)
     i = int(np.argmax([depth(y) > 0 for y in ys]))
     lo, hi = ys[i - 1], ys[i]
     for _ in range(80):
@@ -112,10 +131,12 @@ def undrained_sphere_factor(centre, R, c, gamma, n=80):
     for sense in (-1, 1):
         for gi, wi in zip(g, w):
             t = 0.25 * np.pi * (gi + 1)
-            total += 0.25 * np.pi * wi * (yc - y0) * np.sin(t) * section(centre, R, yc + sense * (yc - y0) * np.cos(t))
+            total += 0.25 * np.pi * wi * (yc - y0) * np.sin(t) * section(centre, R, b, yc + sense * (yc - y0) * np.cos(t))
     return c * total[0] / (gamma * total[1])
 
 
 if __name__ == "__main__":
     xc, yc, zc, R, c, gamma = map(float, sys.argv[1:7])
-    print(repr(undrained_sphere_factor((xc, yc, zc), R, c, gamma)))
+    b = float(sys.argv[7]) if len(sys.argv) > 7 else None
+    n = int(sys.argv[8]) if len(sys.argv) > 8 else 80
+    print(repr(undrained_sphere_factor((xc, yc, zc), R, c, gamma, n, b)))

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fdem
@@ -105,6 +106,19 @@ namespace fdem
     extract_current_gmsh_model(
       const std::string              &source,
       const std::vector<std::string> &material_names = {});
+
+    /**
+     * Smallest and largest sine of the corner angles of a hypercube cell
+     * @p cell of @p vertices, signed: all positive for a valid cell in
+     * deal.II's orientation, all negative for a valid cell of the opposite
+     * orientation, mixed for a twisted or non-convex cell, and zero for a
+     * degenerate one. In 3D it is the triple product of the unit edges at
+     * each corner.
+     */
+    template <int dim>
+    std::pair<double, double>
+    corner_sine_range(const std::vector<Point<dim>> &vertices,
+                      const CellData<dim>           &cell);
 
     /**
      * The physical groups of dimension @p dim of the current Gmsh model,

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 
 #include <fdem/geometry/cases/gmsh_3d.h>
+#include <fdem/geometry/gmsh_mesh.h>
 
 #include <gmsh.h>
 
@@ -45,7 +46,53 @@ namespace fdem
         gmsh::option::setNumber("Mesh.Algorithm3D", 1);
         gmsh::option::setNumber("Mesh.RecombineAll", 0);
         gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", hexahedra ? 2 : 0);
+        // Gmsh would move the split's new vertices on a curved surface onto
+        // it by itself, with no way back for the cells this twists.
+        gmsh::option::setNumber("Mesh.SecondOrderLinear", 1);
         gmsh::model::mesh::generate(3);
+      }
+
+
+
+      unsigned int
+      move_vertices_keeping_cells_valid(
+        MeshDescription<3>                                   &mesh,
+        const std::vector<std::pair<unsigned int, Point<3>>> &targets,
+        const double                                          min_sine)
+      {
+        std::vector<Point<3>>      &vertices = mesh.vertices;
+        const std::vector<Point<3>> before   = vertices;
+        std::vector<bool>           moved(vertices.size(), false);
+        for (const auto &[v, p] : targets)
+          {
+            vertices[v] = p;
+            moved[v]    = true;
+          }
+        std::vector<unsigned int> cells;
+        for (unsigned int c = 0; c < mesh.cells.size(); ++c)
+          for (const unsigned int v : mesh.cells[c].vertices)
+            if (moved[v])
+              {
+                cells.push_back(c);
+                break;
+              }
+        // Taking a move back can twist a neighbour that kept its moves, so
+        // until nothing changes (at worst every vertex back in place).
+        unsigned int kept = 0;
+        for (bool changed = true; changed;)
+          {
+            changed = false;
+            for (const unsigned int c : cells)
+              if (corner_sine_range(vertices, mesh.cells[c]).first < min_sine)
+                for (const unsigned int v : mesh.cells[c].vertices)
+                  if (vertices[v] != before[v])
+                    {
+                      vertices[v] = before[v];
+                      ++kept;
+                      changed = true;
+                    }
+          }
+        return kept;
       }
     } // namespace gmsh_3d
   }   // namespace geometry

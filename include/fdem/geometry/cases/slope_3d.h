@@ -111,9 +111,11 @@ namespace fdem
      * (z = z_t - D) and "sides" (x = 0, x = L, y = 0, y = W; with a
      * cylinder the ends of the sliding mass too). Gmsh's Delaunay
      * tetrahedra of size 2 h near the sliding surface (within R/4),
-     * growing to 6 h, each split into four hexahedra, or tetrahedra of
-     * size h. The face group "sliding surface" carries the surface's exact
-     * normal (MeshDescription::surface_normals). Opens its own GmshSession.
+     * growing to 6 h, each split into four hexahedra (the split's new
+     * vertices on the sliding surface moved onto it, but those whose move
+     * would twist a cell), or tetrahedra of size h. The face group "sliding
+     * surface" carries the surface's exact normal
+     * (MeshDescription::surface_normals). Opens its own GmshSession.
      */
     MeshDescription<3>
     make_slope_3d_mesh(const Slope3D &slope);
