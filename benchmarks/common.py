@@ -49,6 +49,25 @@ def fit_exponent(xs, ys):
     return sum((p[0] - mx) * (p[1] - my) for p in points) / sxx
 
 
+def number(x, significant=3):
+    """A table cell: text as it is, integers (and floats of 100 or more)
+    without decimals, '–' for None or a non-finite number, else
+    @p significant digits (exponent form below 0.01)."""
+    if isinstance(x, str):
+        return x
+    if isinstance(x, int):
+        return str(x)
+    if x is None or not math.isfinite(x):
+        return "–"
+    if x == 0:
+        return "0"
+    if abs(x) >= 100:
+        return f"{x:.0f}"
+    if abs(x) >= 0.01:
+        return f"{x:.{significant}g}"
+    return f"{x:.2e}"
+
+
 def markdown_table(header, rows, align=None):
     """A markdown table; @p align is a string of 'l'/'r' per column (default
     all right-aligned)."""

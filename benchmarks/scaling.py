@@ -99,19 +99,7 @@ def run_series(exe, prm, levels, budget):
 
 
 def fmt(x):
-    if isinstance(x, str):
-        return x
-    if isinstance(x, int):
-        return str(x)
-    if x is None or (isinstance(x, float) and not math.isfinite(x)):
-        return "–"
-    if x == 0:
-        return "0"
-    if abs(x) >= 100:
-        return f"{x:.0f}"
-    if abs(x) >= 0.01:
-        return f"{x:.3g}"
-    return f"{x:.2e}"
+    return common.number(x, 3)
 
 
 COLUMNS = ["level", "dofs", "pairs", "mesh and setup (s)", "assembly and factorisation (s)",

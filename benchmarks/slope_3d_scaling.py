@@ -78,17 +78,7 @@ COLUMNS = ["Mesh size (m)", "dofs", "pairs", "estimated pairs", "steps", "contac
 
 
 def fmt(x):
-    if isinstance(x, str):
-        return x
-    if isinstance(x, int) or (isinstance(x, float) and x.is_integer() and abs(x) >= 100):
-        return str(int(x))
-    if x is None or not math.isfinite(x):
-        return "–"
-    if abs(x) >= 100:
-        return f"{x:.0f}"
-    if abs(x) >= 0.01:
-        return f"{x:.4g}"
-    return f"{x:.2e}"
+    return common.number(x, 4)
 
 
 def fit(rows):
