@@ -551,7 +551,11 @@ def check_invariance(exe, reference, *others):
         assert result.returncode == 0, f"{prm}: exit {result.returncode}: {result.stderr}"
         summary = result.summary
         assert summary["status"] == "completed", f"{prm}: {summary['status']}"
-        steps = [(s["contact_result"], s["n_stick"], s["n_slip"], s["n_open"])
+        # Whether each solve converged, not why one failed: far beyond
+        # the limit (the wedge at K = 1) "runaway" and "no rigid-mode
+        # equilibrium" both say "a mechanism", and which test sees it
+        # first is round-off (measured on the wedge in lbf, ft, psf).
+        steps = [(s["contact_result"] == "converged", s["n_stick"], s["n_slip"], s["n_open"])
                  for s in summary["iterations"]]
         statuses = {i["name"]: (i["n_stick"], i["n_slip"], i["n_open"])
                     for i in summary["interfaces"]}
