@@ -71,7 +71,6 @@ namespace fdem
           return {};
         dealii::LAPACKFullMatrix<double> normal(n_rigid, n_rigid);
         dealii::Vector<double>           rhs(n_rigid);
-        double                           g_scale = 0;
         std::vector<unsigned int>        columns;
         for (unsigned int p = 0; p < system.n_contact_pairs(); ++p)
           {
@@ -79,7 +78,6 @@ namespace fdem
             for (unsigned int i = 0; i < dim; ++i)
               {
                 const unsigned int row = dim * p + i;
-                g_scale                = std::max(g_scale, std::abs(g[row]));
                 // A row moves with the modes of the pair's two blocks only.
                 columns.clear();
                 for (unsigned int a = 0; a < n_rigid; ++a)
@@ -93,8 +91,6 @@ namespace fdem
                   }
               }
           }
-        if (!(g_scale > 0))
-          return {};
         // Singular values of W^T A W below 1e-12 of the largest are null
         // directions of W on the pairs (modes that move no pair).
         normal.compute_inverse_svd(1e-12);
@@ -103,7 +99,7 @@ namespace fdem
         W.vmult(motion, gamma);
         // Every pair sticking leaves g at the solve's round-off of the
         // displacements that cancel in it (g_bar, C f, W gamma); a motion
-        // that small is no motion.
+        // that small is no motion (nor is none, g = 0).
         const double scale =
           std::max({outcome.solution.elastic_displacements.linfty_norm(),
                     outcome.solution.relative_displacements.linfty_norm(),
