@@ -183,3 +183,67 @@ TEST(CattaneoMindlin, StickZoneAndTangentialTractions)
       EXPECT_LT(worst, 0.08) << "Q/(mu P) = " << ratio;
     }
 }
+
+TEST(CondensedPair, ForceRowsEliminatedExactly)
+{
+  // condense_force_rows(): f = particular + N y satisfies the pair's force
+  // rows for every y, N is orthonormal and orthogonal to them, and as many
+  // rows are kept as N has columns. Each 3D state of pair_rows(): stick (no
+  // force row), slip with a turning weight (one: the limit along d), slip
+  // with weight 0 (two), slip at the cut-off (two), open (three).
+  // Round-off of a few operations on numbers of a few units: 1e-14 for the
+  // unit basis, 1e-13 for the rows (values up to 3.5).
+  contact::PairStrength strength;
+  strength.friction_coefficient = 0.7;
+  strength.cohesion_force       = 3.5;
+  strength.tensile_force        = 1.25;
+  dealii::Tensor<2, 3> self_flexibility;
+  for (unsigned int i = 0; i < 3; ++i)
+    self_flexibility[i][i] = 2.0 + i;
+  std::vector<std::pair<contact::PairState<3>, unsigned int>> cases;
+  contact::PairState<3>                                       state;
+  cases.emplace_back(state, 3u);
+  state.status           = contact::PairStatus::slip;
+  state.slip_direction   = {{0.6, -0.8}};
+  state.direction_weight = 0.4;
+  cases.emplace_back(state, 2u);
+  state.direction_weight = 0;
+  cases.emplace_back(state, 1u);
+  state.direction_weight = 0.4;
+  state.at_cutoff        = true;
+  cases.emplace_back(state, 1u);
+  state.status = contact::PairStatus::open;
+  cases.emplace_back(state, 0u);
+  for (const auto &[pair_state, n_free] : cases)
+    {
+      const contact::PairRows<3> rows =
+        contact::pair_rows(pair_state, strength, self_flexibility, 0.0);
+      const contact::CondensedPair<3> condensed =
+        contact::condense_force_rows(rows);
+      ASSERT_EQ(condensed.n_free, n_free);
+      for (unsigned int t = 0; t < n_free; ++t)
+        for (unsigned int s = 0; s < n_free; ++s)
+          {
+            double product = 0;
+            for (unsigned int k = 0; k < 3; ++k)
+              product += condensed.basis[k][t] * condensed.basis[k][s];
+            EXPECT_NEAR(product, t == s ? 1.0 : 0.0, 1e-14);
+          }
+      std::vector<bool> kept(3, false);
+      for (unsigned int m = 0; m < n_free; ++m)
+        {
+          kept[condensed.kept_rows[m]] = true;
+          EXPECT_GT(rows.gap[condensed.kept_rows[m]].norm(), 0);
+        }
+      for (unsigned int i = 0; i < 3; ++i)
+        if (!kept[i])
+          {
+            // f = particular + sum_t y_t N_t with y = (1, -2): the row holds.
+            dealii::Tensor<1, 3> f = condensed.particular;
+            for (unsigned int t = 0; t < n_free; ++t)
+              for (unsigned int k = 0; k < 3; ++k)
+                f[k] += (t == 0 ? 1.0 : -2.0) * condensed.basis[k][t];
+            EXPECT_NEAR(rows.force[i] * f, rows.value[i], 1e-13);
+          }
+    }
+}

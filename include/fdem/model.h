@@ -265,6 +265,17 @@ namespace fdem
       mixed_system->forget_factorization();
     }
 
+    /**
+     * Whether the dense mixed solver may solve a system condensed
+     * (contact::DenseMixedSolver; true by default). False: always the
+     * whole system, for comparisons.
+     */
+    void
+    set_condensed_solves(const bool condense)
+    {
+      mixed_system->condensed_solves = condense;
+    }
+
     /** Per pair of all interfaces: on a sliding surface? */
     std::vector<bool>
     pairs_on_sliding_surface() const;

@@ -86,6 +86,69 @@ namespace fdem
       return rows;
     }
 
+    template <int dim>
+    CondensedPair<dim>
+    condense_force_rows(const PairRows<dim> &rows)
+    {
+      CondensedPair<dim>              condensed;
+      std::array<Tensor<1, dim>, dim> q; // orthonormal, spanning the rows
+      unsigned int                    n_q    = 0;
+      unsigned int                    n_kept = 0;
+      // Twice orthogonalised against q (classical Gram-Schmidt twice keeps
+      // the basis orthonormal to round-off).
+      const auto orthogonalised = [&](Tensor<1, dim> a) {
+        for (unsigned int pass = 0; pass < 2; ++pass)
+          for (unsigned int j = 0; j < n_q; ++j)
+            a -= (a * q[j]) * q[j];
+        return a;
+      };
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          const Tensor<1, dim> gap = rows.gap[i];
+          if (gap.norm_square() != 0)
+            {
+              condensed.kept_rows[n_kept++] = i;
+              continue;
+            }
+          // a . f = v: the particular force moves along the new direction
+          // only, so that the earlier force rows (spanned by the earlier q,
+          // orthogonal to it) stay satisfied.
+          const Tensor<1, dim> a      = rows.force[i];
+          const Tensor<1, dim> normal = orthogonalised(a);
+          const double         length = normal.norm();
+          Assert(length > 1e-8 * a.norm(),
+                 ExcMessage("A pair's force rows are not independent."));
+          q[n_q] = normal / length;
+          condensed.particular +=
+            (rows.value[i] - a * condensed.particular) / length * q[n_q];
+          ++n_q;
+        }
+      // Complete the basis by the unit vectors farthest from its span.
+      condensed.n_free = dim - n_q;
+      for (unsigned int t = 0; t < condensed.n_free; ++t)
+        {
+          Tensor<1, dim> best;
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              Tensor<1, dim> e;
+              e[k]                   = 1;
+              const Tensor<1, dim> r = orthogonalised(e);
+              if (r.norm_square() > best.norm_square())
+                best = r;
+            }
+          q[n_q] = best / best.norm();
+          for (unsigned int k = 0; k < dim; ++k)
+            condensed.basis[k][t] = q[n_q][k];
+          ++n_q;
+        }
+      Assert(n_kept == condensed.n_free, ExcInternalError());
+      return condensed;
+    }
+
+    template CondensedPair<2>
+    condense_force_rows(const PairRows<2> &);
+    template CondensedPair<3>
+    condense_force_rows(const PairRows<3> &);
     template double
     tangential_stiffness(const Tensor<2, 2> &);
     template double

@@ -206,6 +206,23 @@ namespace fdem
       factorized_scale.clear();
     }
 
+    namespace
+    {
+      /** The LU factors of @p matrix scaled by rows and columns by @p scale. */
+      std::unique_ptr<DenseLU>
+      factorize(const dealii::FullMatrix<double> &matrix,
+                const std::vector<double>        &scale)
+      {
+        const unsigned int  n = matrix.m();
+        std::vector<double> column_major(static_cast<std::size_t>(n) * n);
+        for (unsigned int j = 0; j < n; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            column_major[static_cast<std::size_t>(j) * n + i] =
+              matrix(i, j) * scale[i] * scale[j];
+        return std::make_unique<DenseLU>(n, std::move(column_major));
+      }
+    } // namespace
+
     ReusableLU::Result
     ReusableLU::solve(const dealii::FullMatrix<double> &matrix,
                       dealii::Vector<double>           &rhs)
@@ -243,7 +260,8 @@ namespace fdem
           // the same operations as right after its factorisation.
           result.reciprocal_condition = factorized_condition;
           result.solved =
-            factorized_solved && solve_factorized(matrix, rhs, result);
+            factorized_solved &&
+            solve_factorized(matrix, factorized_scale, *lu, rhs, result);
           ++n_reused_solves;
           return result;
         }
@@ -275,13 +293,7 @@ namespace fdem
                                     std::vector<double>               scale,
                                     dealii::Vector<double>           &rhs)
     {
-      const unsigned int  n = matrix.m();
-      std::vector<double> column_major(static_cast<std::size_t>(n) * n);
-      for (unsigned int j = 0; j < n; ++j)
-        for (unsigned int i = 0; i < n; ++i)
-          column_major[static_cast<std::size_t>(j) * n + i] =
-            matrix(i, j) * scale[i] * scale[j];
-      lu = std::make_unique<DenseLU>(n, std::move(column_major));
+      lu = factorize(matrix, scale);
       ++n_factorizations;
       factorized_matrix    = matrix;
       factorized_scale     = std::move(scale);
@@ -292,26 +304,46 @@ namespace fdem
       Result result;
       result.reciprocal_condition = factorized_condition;
       result.solved =
-        factorized_solved && solve_factorized(matrix, rhs, result);
+        factorized_solved &&
+        solve_factorized(matrix, factorized_scale, *lu, rhs, result);
+      return result;
+    }
+
+    ReusableLU::Result
+    ReusableLU::solve_once(const dealii::FullMatrix<double> &matrix,
+                           dealii::Vector<double>           &rhs)
+    {
+      Assert(matrix.m() == matrix.n(), dealii::ExcInternalError());
+      Assert(rhs.size() == matrix.m(), dealii::ExcInternalError());
+      const std::vector<double>      scale   = row_and_column_scale(matrix);
+      const std::unique_ptr<DenseLU> factors = factorize(matrix, scale);
+      ++n_factorizations;
+      Result result;
+      result.reciprocal_condition = factors->reciprocal_condition_number();
+      result.solved               = factors->factorized() &&
+                      result.reciprocal_condition > singular_condition &&
+                      solve_factorized(matrix, scale, *factors, rhs, result);
       return result;
     }
 
     bool
     ReusableLU::solve_factorized(const dealii::FullMatrix<double> &matrix,
+                                 const std::vector<double>        &scale,
+                                 const DenseLU                    &factors,
                                  dealii::Vector<double>           &rhs,
                                  Result                           &result) const
     {
       // The factorised matrix itself: its factors, refined if need be (an
       // ill-conditioned system is refined, not declared singular).
       const unsigned int         n = matrix.m();
-      const std::vector<double> &s = factorized_scale;
+      const std::vector<double> &s = scale;
       std::vector<double>        y(n);
       for (unsigned int i = 0; i < n; ++i)
         y[i] = rhs[i] * s[i];
       const BackwardErrors errors = refined_solve(
         matrix,
         s,
-        [this](double *x) { lu->solve(x, 1); },
+        [&factors](double *x) { factors.solve(x, 1); },
         y,
         max_refinement_steps);
       result.backward_error = errors.normwise;

@@ -75,6 +75,11 @@ namespace fdem
       const char *why_factorized = "";
       /** How the factors were reused, if they were. */
       const char *reuse_method = "";
+      /**
+       * Unknowns of the condensed system if the dense solver solved one
+       * (DenseMixedSolver), 0 if it solved the whole system.
+       */
+      unsigned int n_condensed_unknowns = 0;
       /** Iterative solver: GMRES iterations of this solve (0 for the dense
        * one). */
       unsigned int n_krylov_iterations = 0;
@@ -349,6 +354,13 @@ namespace fdem
        * fraction of the largest.
        */
       double rigid_mode_tolerance = 1e-10;
+
+      /**
+       * Whether the dense solver may eliminate the pairs' force rows when
+       * many 3D slip rows change (DenseMixedSolver); false: it always solves
+       * the whole system.
+       */
+      bool condensed_solves = true;
 
       /** Products C f computed so far (the iterative solver's block solves). */
       unsigned long n_flexibility_products = 0;

@@ -6,6 +6,8 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <array>
+
 namespace fdem
 {
   namespace contact
@@ -52,6 +54,36 @@ namespace fdem
               const PairStrength   &strength,
               const Tensor<2, dim> &self_flexibility,
               const double          held_flexibility);
+
+    /**
+     * A pair's forces under its rows without gap coefficients ("force
+     * rows", which fix combinations of the pair's own forces: open pairs,
+     * held directions, the tension cut-off, the Mohr-Coulomb limit of a slip
+     * pair): f = particular + N y for any y, with N (the first n_free columns
+     * of @p basis) orthonormal and orthogonal to the force rows, and
+     * particular the least-norm force that satisfies them. The pair's
+     * remaining rows (row indices @p kept_rows, as many as N has columns)
+     * then decide y: DenseMixedSolver's condensed system.
+     */
+    template <int dim>
+    struct CondensedPair
+    {
+      unsigned int                  n_free = 0;
+      std::array<unsigned int, dim> kept_rows{};
+      Tensor<1, dim>                particular;
+      /** Column t (t < n_free) of N is basis[.][t]. */
+      Tensor<2, dim> basis;
+    };
+
+    /**
+     * The force rows of @p rows eliminated (Gram-Schmidt on them, then the
+     * unit vectors of the pair's frame that are farthest from their span
+     * complete the orthonormal basis). The force rows of pair_rows() are
+     * independent.
+     */
+    template <int dim>
+    CondensedPair<dim>
+    condense_force_rows(const PairRows<dim> &rows);
 
     /**
      * The augmentation r of z = f_t + r g_t (3D slip rows): the reciprocal

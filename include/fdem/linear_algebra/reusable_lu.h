@@ -126,6 +126,18 @@ namespace fdem
       solve(const dealii::FullMatrix<double> &matrix,
             dealii::Vector<double>           &rhs);
 
+      /**
+       * Solves @p matrix x = @p rhs from a factorisation of its own, with the
+       * same scaling, refinement and verdict as a fresh factorisation in
+       * solve(), but neither stores it nor drops the stored factors (of
+       * another matrix) that later solves may reuse. For a matrix that will
+       * not be seen again: DenseMixedSolver's condensed systems. Counted in
+       * n_factorizations.
+       */
+      Result
+      solve_once(const dealii::FullMatrix<double> &matrix,
+                 dealii::Vector<double>           &rhs);
+
       /** Drops the stored factors: the next solve factorises. */
       void
       clear();
@@ -145,11 +157,14 @@ namespace fdem
                           dealii::Vector<double>           &rhs);
 
       /**
-       * Solves the factorised matrix itself with its factors and iterative
-       * refinement; false if the backward error stays above its tolerance.
+       * Solves @p matrix (scaled by @p scale, factorised as @p factors) with
+       * those factors and iterative refinement; false if the backward error
+       * stays above its tolerance.
        */
       bool
       solve_factorized(const dealii::FullMatrix<double> &matrix,
+                       const std::vector<double>        &scale,
+                       const DenseLU                    &factors,
                        dealii::Vector<double>           &rhs,
                        Result                           &result) const;
 
