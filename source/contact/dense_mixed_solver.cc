@@ -47,8 +47,15 @@ namespace fdem
     void
     DenseMixedSolver<dim>::clear()
     {
-      lu.clear();
+      forget_factors();
       formed = false;
+    }
+
+    template <int dim>
+    void
+    DenseMixedSolver<dim>::forget_factors()
+    {
+      lu.clear();
       factorized_rows.clear();
     }
 

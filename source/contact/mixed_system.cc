@@ -391,7 +391,7 @@ namespace fdem
     MixedSystem<dim>::forget_factorization()
     {
       if (dense)
-        dense->lu.clear();
+        dense->forget_factors();
     }
 
     template <int dim>

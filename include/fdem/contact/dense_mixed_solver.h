@@ -59,6 +59,13 @@ namespace fdem
       void
       clear();
 
+      /**
+       * Forgets the factors (not the formed matrix): the next solve is
+       * factorised, condensed or whole as if it were the first.
+       */
+      void
+      forget_factors();
+
       /** The factors of the last factorised system and their counts. */
       linear_algebra::ReusableLU lu;
 
