@@ -66,7 +66,8 @@ namespace fdem
                                     parameters.prm_directory,
                                     msh,
                                     parameters.fe_degree,
-                                    parameters.material_names);
+                                    parameters.material_names,
+                                    parameters.solver.mixed_system == "dense");
 
     // Every block of the mesh needs a material, and every name a block.
     for (const std::string &name : mesh.block_names)

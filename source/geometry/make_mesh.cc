@@ -169,7 +169,8 @@ namespace fdem
               const std::string                    &prm_directory,
               const std::string                    &msh_output_file,
               const unsigned int                    fe_degree,
-              const std::vector<std::string>       &material_names)
+              const std::vector<std::string>       &material_names,
+              const bool                            dense_mixed_system)
     {
       // A mesh far too fine for this machine is refused before Gmsh or a
       // generator allocates it (Mesh size = 1e-6 grew without bound); a
@@ -178,7 +179,8 @@ namespace fdem
       const bool host = !Utilities::MPI::job_supports_mpi() ||
                         Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const auto refuse_or_announce = [&](const MeshEstimate &estimate) {
-        check_mesh_estimate(estimate, geometry, dim, fe_degree);
+        check_mesh_estimate(
+          estimate, geometry, dim, fe_degree, dense_mixed_system);
         if (host && estimate.n_cells > large_mesh)
           {
             std::ostringstream line;
@@ -251,13 +253,15 @@ namespace fdem
                  const std::string &,
                  const std::string &,
                  unsigned int,
-                 const std::vector<std::string> &);
+                 const std::vector<std::string> &,
+                 bool);
     template MeshDescription<3>
     make_mesh<3>(const parameters::GeometryParameters &,
                  const std::string &,
                  const std::string &,
                  unsigned int,
-                 const std::vector<std::string> &);
+                 const std::vector<std::string> &,
+                 bool);
     template void
     apply_transformation<2>(const parameters::GeometryParameters &,
                             MeshDescription<2> &);

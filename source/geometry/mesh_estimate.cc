@@ -359,15 +359,25 @@ namespace fdem
 
     double
     MeshEstimate::memory_MiB(const unsigned int dim,
-                             const unsigned int fe_degree) const
+                             const unsigned int fe_degree,
+                             const bool         dense_mixed_system) const
     {
       const double n_dofs =
         dim * n_vertices * std::pow(double(fe_degree), int(dim));
-      // 150 bytes per (dim n_pairs)^2: 115 to 137 measured on
+      // Dense: 150 bytes per (dim n_pairs)^2, 115 to 137 measured on
       // prm/slope_3d.prm at 261 to 624 pairs (doc/scaling.md, "3D: a slope
-      // on a sphere"), with a tenth more as a margin.
-      return (2950 * n_dofs + 150.0 * dim * dim * n_pairs * n_pairs) /
-             (1 << 20);
+      // on a sphere"), with a tenth more as a margin. Iterative: what the
+      // block on a plane needed beyond 2950 bytes per dof, per pair: 64 to
+      // 75 kB at 1681 to 4225 pairs, 184 kB at 10^4 (378000 dofs; the 3D
+      // factorisation's fill grows faster than the dofs, and the peak still
+      // rose by about 10 MiB per status iteration when the run was
+      // stopped, doc/scaling.md). 300 kB keeps the estimate (with the
+      // generator's node count, a third below the mesh's there) above
+      // those peaks.
+      const double interface = dense_mixed_system ?
+                                 150.0 * dim * dim * n_pairs * n_pairs :
+                                 300e3 * n_pairs;
+      return (2950 * n_dofs + interface) / (1 << 20);
     }
 
 
@@ -456,12 +466,11 @@ namespace fdem
     MeshEstimate
     check_mesh_estimate(const parameters::GeometryParameters &geometry,
                         const unsigned int                    dim,
-                        const unsigned int                    fe_degree)
+                        const unsigned int                    fe_degree,
+                        const bool dense_mixed_system)
     {
-      return check_mesh_estimate(estimate_mesh(geometry),
-                                 geometry,
-                                 dim,
-                                 fe_degree);
+      return check_mesh_estimate(
+        estimate_mesh(geometry), geometry, dim, fe_degree, dense_mixed_system);
     }
 
 
@@ -470,11 +479,12 @@ namespace fdem
     check_mesh_estimate(const MeshEstimate                   &e,
                         const parameters::GeometryParameters &geometry,
                         const unsigned int                    dim,
-                        const unsigned int                    fe_degree)
+                        const unsigned int                    fe_degree,
+                        const bool dense_mixed_system)
     {
       if (e.entry.empty())
         return e;
-      const double       mib   = e.memory_MiB(dim, fe_degree);
+      const double       mib = e.memory_MiB(dim, fe_degree, dense_mixed_system);
       const double       limit = memory_limit_MiB(geometry);
       std::ostringstream message;
       message.precision(3);
@@ -487,7 +497,15 @@ namespace fdem
       message << ", which would need about " << mib << " MiB, more than the "
               << limit
               << " MiB allowed (Geometry/Memory limit; 0 is this machine's "
-                 "memory or ulimit -v); use a coarser mesh or raise the limit.";
+                 "memory or ulimit -v); use a coarser mesh or raise the limit";
+      // The dense interface parts grow as pairs^2: say when the mixed
+      // system that never forms them would fit.
+      const double iterative_mib = e.memory_MiB(dim, fe_degree, false);
+      if (dense_mixed_system && e.n_pairs > 0 && std::isfinite(iterative_mib) &&
+          iterative_mib <= limit)
+        message << ", or set Solver/Mixed system = iterative (about "
+                << iterative_mib << " MiB)";
+      message << ".";
       AssertThrow(std::isfinite(mib) && mib <= limit,
                   ExcMessage(message.str()));
       return e;

@@ -67,8 +67,10 @@ namespace fdem
           Patterns::Double(0),
           "Largest memory the mesh of a built-in generator or a .geo file may "
           "need, estimated before it is made (MiB; about 3 kB "
-          "per degree of freedom and 1 kB per pair squared, as measured in "
-          "doc/scaling.md). A finer mesh is refused with the estimate. 0 "
+          "per degree of freedom and 1 kB per pair squared with the dense "
+          "mixed system, 300 kB per pair with the iterative one, as "
+          "measured in doc/scaling.md). A finer mesh is refused with the "
+          "estimate. 0 "
           "means the physical memory of this machine, or the address space "
           "limit (ulimit -v) if smaller; set a larger value to override. "
           "A .geo file is estimated from Gmsh's mesh of its boundaries; a "

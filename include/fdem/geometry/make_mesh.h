@@ -27,15 +27,18 @@ namespace fdem
      * announced on stdout ("meshing (...): about N elements").
      * @p material_names are the names of Materials/Names: the physical
      * groups of dimension dim of a mesh file that are material regions
-     * (the generators name their own).
+     * (the generators name their own). @p dense_mixed_system: whether the
+     * run forms the dense interface parts (Solver/Mixed system = dense),
+     * for the memory estimate.
      */
     template <int dim>
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
               const std::string                    &prm_directory,
               const std::string                    &msh_output_file,
-              unsigned int                          fe_degree      = 1,
-              const std::vector<std::string>       &material_names = {});
+              unsigned int                          fe_degree          = 1,
+              const std::vector<std::string>       &material_names     = {},
+              bool                                  dense_mixed_system = true);
 
     /**
      * Map every vertex x of @p mesh to R (s x) + t, with the scale factor s,

@@ -31,13 +31,18 @@ namespace fdem
       /**
        * The peak memory of a run on this mesh (MiB), with elements of
        * degree @p fe_degree: about 2950 bytes per degree of freedom (the
-       * FE part, measured on the paper's slope) plus 150 bytes per entry of
-       * a dense (dim pairs)^2 matrix (the dense interface parts with the
-       * dense mixed system: about 15 such matrices alive at the peak,
-       * measured on prm/slope_3d.prm, and a margin), doc/scaling.md.
+       * FE part, measured on the paper's slope) plus, with the dense mixed
+       * system (@p dense_mixed_system), 150 bytes per entry of a dense
+       * (dim pairs)^2 matrix (the dense interface parts: about 15 such
+       * matrices alive at the peak, measured on prm/slope_3d.prm, and a
+       * margin), or with the iterative one, which never forms them, a
+       * fixed amount per pair (measured on prm/block_on_plane_3d.prm up to
+       * 10^4 pairs), doc/scaling.md.
        */
       double
-      memory_MiB(unsigned int dim, unsigned int fe_degree) const;
+      memory_MiB(unsigned int dim,
+                 unsigned int fe_degree,
+                 bool         dense_mixed_system = true) const;
     };
 
     /**
@@ -74,14 +79,16 @@ namespace fdem
     MeshEstimate
     check_mesh_estimate(const parameters::GeometryParameters &geometry,
                         unsigned int                          dim,
-                        unsigned int                          fe_degree);
+                        unsigned int                          fe_degree,
+                        bool dense_mixed_system = true);
 
     /** The same for the estimate @p estimate. */
     MeshEstimate
     check_mesh_estimate(const MeshEstimate                   &estimate,
                         const parameters::GeometryParameters &geometry,
                         unsigned int                          dim,
-                        unsigned int                          fe_degree);
+                        unsigned int                          fe_degree,
+                        bool dense_mixed_system = true);
   } // namespace geometry
 } // namespace fdem
 
