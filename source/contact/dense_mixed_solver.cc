@@ -207,17 +207,9 @@ namespace fdem
       // The rigid modes can be held (MixedSystem::solve()): a system
       // ReusableLU could not solve to its backward error is a numerical
       // breakdown.
-      ContactSolution solution;
-      if (result.solved)
-        {
-          Vector<double> forces(n_forces), elastic(n_forces);
-          for (unsigned int i = 0; i < n_forces; ++i)
-            forces[i] = rhs[i];
-          flexibility.vmult(elastic, forces);
-          solution = system.solution_from(rhs, std::move(elastic));
-        }
-      else
-        solution = system.unsolved(SolveFailure::numerical);
+      ContactSolution solution      = result.solved ?
+                                        solution_of(rhs) :
+                                        system.unsolved(SolveFailure::numerical);
       solution.reciprocal_condition = result.reciprocal_condition;
       solution.factorized           = result.factorized;
       solution.n_changed_rows       = result.n_changed_rows;
@@ -335,7 +327,7 @@ namespace fdem
       ContactSolution solution;
       if (result.solved)
         {
-          Vector<double> unknowns(n_forces + n_rigid), elastic(n_forces);
+          Vector<double> unknowns(n_forces + n_rigid);
           for (unsigned int p = 0; p < n_pairs; ++p)
             for (unsigned int l = 0; l < dim; ++l)
               {
@@ -348,11 +340,7 @@ namespace fdem
           for (unsigned int r = 0; r < n_rigid; ++r)
             unknowns[n_forces + r] =
               x[n_free + r] * scales.displacement / scales.rigid[r];
-          Vector<double> forces(n_forces);
-          for (unsigned int i = 0; i < n_forces; ++i)
-            forces[i] = unknowns[i];
-          flexibility.vmult(elastic, forces);
-          solution = system.solution_from(unknowns, std::move(elastic));
+          solution = solution_of(unknowns);
         }
       else
         solution = system.unsolved(SolveFailure::numerical);
@@ -361,6 +349,18 @@ namespace fdem
       solution.n_condensed_unknowns = n;
       solution.why_factorized       = "condensed";
       return solution;
+    }
+
+    template <int dim>
+    ContactSolution
+    DenseMixedSolver<dim>::solution_of(const Vector<double> &unknowns) const
+    {
+      const unsigned int n_forces = system.flexibility.m();
+      Vector<double>     forces(n_forces), elastic(n_forces);
+      for (unsigned int i = 0; i < n_forces; ++i)
+        forces[i] = unknowns[i];
+      system.flexibility.vmult(elastic, forces);
+      return system.solution_from(unknowns, std::move(elastic));
     }
 
     template <int dim>

@@ -92,6 +92,10 @@ namespace fdem
       ContactSolution
       solve_condensed(const std::vector<PairRows<dim>> &rows);
 
+      /** The solution of the unknowns [f; gamma] (C f computed here). */
+      ContactSolution
+      solution_of(const Vector<double> &unknowns) const;
+
       /** The rows of the last fully factorised system (empty: none). */
       std::vector<PairRows<dim>> factorized_rows;
 
