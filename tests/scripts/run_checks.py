@@ -29,6 +29,13 @@
                                          (default 1e-5); where a plane lifts
                                          off, it must carry under SHARE
                                          (default 0.05) of the normal force
+  run_checks.py wedge-fold EXE CASE.prm [TOL]
+                                         a rock wedge sliding on both planes,
+                                         no cohesion: sqrt(K* - K) of three
+                                         solves 1e-4 to 1.6e-5 below the limit
+                                         equilibrium, extrapolated to zero,
+                                         must be that limit to TOL relative
+                                         (default 1e-8)
   run_checks.py plane-strain EXE CASE.prm CASE_2D.prm [REFERENCE.prm TOL]
                                          a 2D model extruded along z with
                                          rollers on its ends: both certified,
@@ -544,6 +551,57 @@ def check_wedge(exe, prm, tolerance="1e-5", max_share="0.05"):
         assert abs(share) <= float(max_share), "the plane that lifts off still carries the wedge"
 
 
+def check_wedge_fold(exe, prm, tolerance="1e-8"):
+    """Below the limit of a wedge sliding on both planes every pair slips and
+    K* - K falls off as the square of the distance to the limit: the slip
+    directions turn towards the line of intersection, and K* - K measures
+    how far the shears still cancel. sqrt(K* - K) is then linear in K near
+    the limit, and its zero, extrapolated from three solves just below it,
+    is the fold where the all-slipping states end. For a wedge without
+    cohesion that fold must be the limit equilibrium itself, whatever the
+    mesh: the resultant normal forces follow from the equilibrium across
+    the line of intersection alone. The iteration's answer stops short of
+    it where the solves end (1e-6 below, relative, on prm/rock_wedge.prm,
+    where the mixed system's reciprocal condition falls to 1e-11); the fold
+    shows the contact solution itself converging to the limit equilibrium
+    to TOL."""
+    from wedge_reference import safety_factor_of_run
+    one_solve = {"Safety factor/Maximum iterations": "1", "Safety factor/Stiffness check": "false"}
+    first = fdem_run.run_case(exe, prm, settings=one_solve)
+    assert first.summary is not None, first.failure()
+    exact, mode = safety_factor_of_run(first.parameters, first.summary)
+    assert mode == "both planes", f"the wedge slides on {mode}: no fold"
+    # 1e-4 to 1.6e-5 below the limit: close enough that sqrt(K* - K) is a
+    # parabola in K to far below TOL (measured on prm/rock_wedge.prm: its
+    # slope changes by 1.2e-3 of itself over these distances), far enough
+    # from where the solves end for K* - K (4e-10 at the nearest) to keep
+    # its digits.
+    points = []
+    for r in (1e-4, 4e-5, 1.6e-5):
+        K = exact * (1 - r)
+        run = fdem_run.run_case(exe, prm, settings={**one_solve,
+                                                    "Safety factor/Initial factor": repr(K)})
+        assert run.summary is not None, run.failure()
+        step = run.summary["iterations"][0]
+        assert step["contact_result"] == "converged", (K, step["contact_result"])
+        assert step["n_stick"] == 0 and step["n_slip"] > 0, (K, step)
+        h = step["K_star"] - step["K"]
+        assert h > 0, (K, step["K_star"])
+        points.append((step["K"], math.sqrt(h)))
+        print(f"K = {step['K']!r}: K* - K = {h:.6e}, sqrt {math.sqrt(h):.6e}, "
+              f"{step['n_slip']} slip, {step['n_open']} open")
+    # The parabola through the three (K, sqrt(h)), its zero nearest the points.
+    (K0, g0), (K1, g1), (K2, g2) = points
+    d01, d12 = (g1 - g0) / (K1 - K0), (g2 - g1) / (K2 - K1)
+    curvature = (d12 - d01) / (K2 - K0)
+    slope = d12 + curvature * (K2 - K1)  # the parabola's slope at K2
+    disc = slope * slope - 4 * curvature * g2
+    fold = K2 + 2 * g2 / (-slope + math.sqrt(disc))
+    print(f"fold {fold!r}, limit equilibrium {exact!r}, relative difference {fold / exact - 1:.3e} "
+          f"(tolerance {tolerance})")
+    assert abs(fold / exact - 1) <= float(tolerance), "the fold is not the limit equilibrium"
+
+
 def check_invariance(exe, reference, *others):
     """Runs REF and OTHERS; all must agree (see the usage above)."""
     def outcome(prm):
@@ -665,7 +723,7 @@ if __name__ == "__main__":
          "bad-layout": check_bad_layout, "triple-point": check_triple_point,
          "no-equilibrium": check_no_equilibrium,
          "deterministic": check_deterministic,
-         "wedge": check_wedge, "mpi": check_mpi,
+         "wedge": check_wedge, "wedge-fold": check_wedge_fold, "mpi": check_mpi,
          "plane-strain": check_plane_strain,
          "plane-strain-contact": check_plane_strain_contact,
          "reference-factor": check_reference_factor,
