@@ -22,6 +22,23 @@ namespace
 {
   using test_support::synthetic_step;
 
+  /**
+   * A step of a fold of all-slipping states (a 3D sliding mass):
+   * synthetic_step() with every one of @p n_slip pairs slipping wherever a
+   * static solution exists (below @p K_end).
+   */
+  analyses::ReducedStrengthSolution
+  all_slipping_step(const double       K,
+                    const double       K_star,
+                    const double       K_end,
+                    const unsigned int n_slip)
+  {
+    analyses::ReducedStrengthSolution s = synthetic_step(K, K_star, K_end);
+    s.all_slipping                      = s.converged;
+    s.n_slip                            = n_slip;
+    return s;
+  }
+
   /** The certificate's numbers hold: a step at its K with its K*, within the
    * tolerance. */
   void
@@ -208,12 +225,8 @@ TEST(SafetyFactorIteration, FoldOfAllSlippingStatesIsReachedInFewSteps)
   const double                       L = 0.7266, end = L * (1 - 1.3e-6);
   const auto                         result = analyses::iterate(
     [&](const double K) {
-      const double                      d = L - K;
-      analyses::ReducedStrengthSolution s =
-        synthetic_step(K, K + 6 * d * d / (1 + 44 * d), end);
-      s.all_slipping = s.converged;
-      s.n_slip       = 10;
-      return s;
+      const double d = L - K;
+      return all_slipping_step(K, K + 6 * d * d / (1 + 44 * d), end, 10);
     },
     control,
     log);
@@ -235,11 +248,7 @@ namespace
   wedge_like_fold(const double K)
   {
     const double L = 0.7266, end = L * (1 - 1.3e-6), d = L - K;
-    analyses::ReducedStrengthSolution s =
-      synthetic_step(K, K + 6 * d * d / (1 + 44 * d), end);
-    s.all_slipping = s.converged;
-    s.n_slip       = 10;
-    return s;
+    return all_slipping_step(K, K + 6 * d * d / (1 + 44 * d), end, 10);
   }
 } // namespace
 
@@ -388,12 +397,8 @@ namespace
           const double t = std::log(rs[i] / r) / std::log(rs[i] / rs[i + 1]);
           rho            = (1 - t) * rhos[i] + t * rhos[i + 1];
         }
-    const double                      g = rho * (L - K);
-    analyses::ReducedStrengthSolution s =
-      synthetic_step(K, K + g * g, L * (1 - 1.5e-6));
-    s.all_slipping = s.converged;
-    s.n_slip       = 92;
-    return s;
+    const double g = rho * (L - K);
+    return all_slipping_step(K, K + g * g, L * (1 - 1.5e-6), 92);
   }
 } // namespace
 
