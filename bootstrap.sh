@@ -14,8 +14,10 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-# libopenblas0-serial: an optimised BLAS/LAPACK for MUMPS and the dense
-# mixed system; Debian's alternatives put it in place of the reference one.
+# libopenblas0-pthread: an optimised BLAS/LAPACK for MUMPS and the dense
+# mixed system, with threads (every core unless OPENBLAS_NUM_THREADS says
+# otherwise; one per rank under mpirun); Debian's alternatives put it in
+# place of the reference one (and of libopenblas0-serial if that is there).
 # libsuitesparse-dev: CHOLMOD (Direct solver = CHOLMOD); deal.II depends on it.
 # clang-format (Debian 12: version 14): the ctest format.check.
 # chromium: the headless browser in which the ctest report.paper_slope loads
@@ -24,7 +26,7 @@ cd "$(dirname "$0")"
 # pulls in OpenMPI's libraries; named here so that mpirun is there for sure).
 packages=(cmake make g++ libdeal.ii-dev gmsh libgmsh-dev nlohmann-json3-dev
           libmumps-dev libsuitesparse-dev libgtest-dev numdiff python3-vtk9 python3-numpy python3-matplotlib
-          libopenblas0-serial openmpi-bin clang-format chromium)
+          libopenblas0-pthread openmpi-bin clang-format chromium)
 
 missing=()
 for p in "${packages[@]}"; do

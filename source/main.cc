@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/linear_algebra/blas_threads.h>
 #include <fdem/parameters/parameters.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>
@@ -44,6 +45,8 @@ main(int argc, char *argv[])
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       host = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      fdem::linear_algebra::choose_blas_threads(
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
       dealii::deallog.depth_console(0);
       bool        print = false, validate = false;
       auto        verbosity = fdem::postprocess::Verbosity::normal;

@@ -4,6 +4,7 @@
 #include <fdem/blocks/surface_loads.h>
 #include <fdem/checks/layout_checks.h>
 #include <fdem/geometry/make_mesh.h>
+#include <fdem/linear_algebra/blas_threads.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_cost.h>
@@ -325,6 +326,13 @@ namespace fdem
           << " dofs; " << interfaces.size()
           << (interfaces.size() == 1 ? " interface, " : " interfaces, ")
           << n_pairs() << " node pairs" << std::endl;
+    const unsigned int n_threads = linear_algebra::n_blas_threads();
+    log << "Dense linear algebra (the mixed system's LU, MUMPS's fronts): ";
+    if (n_threads > 0)
+      log << n_threads << (n_threads == 1 ? " BLAS thread" : " BLAS threads");
+    else
+      log << "a BLAS that does not say how many threads it uses";
+    log << " per rank" << std::endl;
   }
 
   template <int dim>

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/linear_algebra/blas_threads.h>
 #include <fdem/postprocess/summary.h>
 
 #include <algorithm>
@@ -80,8 +81,10 @@ namespace fdem
       summary["dimension"]   = dim;
       summary["fe_degree"]   = model.get_parameters().fe_degree;
       summary["n_mpi_ranks"] = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      unsigned int n_dofs    = 0;
-      summary["blocks"]      = nlohmann::json::array();
+      // 0: the BLAS does not say (not OpenBLAS).
+      summary["n_blas_threads"] = linear_algebra::n_blas_threads();
+      unsigned int n_dofs       = 0;
+      summary["blocks"]         = nlohmann::json::array();
       for (unsigned int b = 0; b < model.get_blocks().size(); ++b)
         {
           const auto &block = *model.get_blocks()[b];

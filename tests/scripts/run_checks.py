@@ -20,6 +20,15 @@
                                          two runs give the same summary.json,
                                          byte for byte, timings and
                                          peak memory aside
+  run_checks.py threads EXE CASE.prm [SETTING=VALUE ...]
+                                         the case with 2 BLAS threads twice and
+                                         with 1 (OPENBLAS_NUM_THREADS): the
+                                         two-thread runs alike byte for byte,
+                                         summary.json's n_blas_threads as set,
+                                         and the one-thread run the same steps
+                                         and statuses, K to 1e-10 relative;
+                                         under mpirun -np 2 without the
+                                         variable, one thread per rank
   run_checks.py wedge EXE CASE.prm [TOL] [SHARE]
                                          a rock wedge (Geometry/Source = wedge):
                                          K must match the vector limit
@@ -359,6 +368,48 @@ def check_deterministic(exe, prm):
     texts = [json.dumps(fdem_run.result_part(completed_run(exe, prm).summary), sort_keys=True)
              for _ in range(2)]
     assert texts[0] == texts[1], "two runs of the same input differ"
+
+
+def check_threads(exe, prm, *settings):
+    """The BLAS's threads (doc/theory.md, "Threads"): with OpenBLAS's
+    threads the dense solves split their products between the cores, which
+    reorders sums inside a product but not from run to run. So two runs
+    with 2 threads must agree byte for byte (as `deterministic`), and a run
+    with 1 thread must take the same steps to the same statuses and K to
+    1e-10 relative: round-off of the LU's sums, carried through about a
+    hundred status iterations (measured 2.3e-13 on prm/slope_3d.prm at
+    Mesh size 1.25 m)."""
+    settings = dict(s.split("=", 1) for s in settings)
+
+    def run(n_threads):
+        environment = dict(os.environ, OPENBLAS_NUM_THREADS=str(n_threads))
+        summary = completed_run(exe, prm, settings=settings, env=environment).summary
+        assert summary["n_blas_threads"] == n_threads, (
+            f"OPENBLAS_NUM_THREADS={n_threads}, but summary.json says "
+            f"{summary['n_blas_threads']} BLAS threads (0: not OpenBLAS; bootstrap.sh "
+            "installs libopenblas0-pthread)")
+        assert summary["converged"], summary["certificate"]
+        return summary
+
+    two = [run(2), run(2)]
+    one = run(1)
+    texts = [json.dumps(fdem_run.result_part(s), sort_keys=True) for s in two]
+    assert texts[0] == texts[1], "two runs with 2 BLAS threads differ"
+    K2, K1 = two[0]["safety_factor"], one["safety_factor"]
+    print(f"K with 2 threads {K2!r}, with 1 thread {K1!r}: relative difference "
+          f"{K2 / K1 - 1:.2e} (tolerance 1e-10)")
+    assert abs(K2 / K1 - 1) <= 1e-10, (K2, K1)
+    steps = [[(s["n_stick"], s["n_slip"], s["n_open"]) for s in summary["iterations"]]
+             for summary in (two[0], one)]
+    assert steps[0] == steps[1], steps
+    # Under mpirun, with neither variable set, one thread per rank.
+    environment = {k: v for k, v in os.environ.items()
+                   if k not in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")}
+    environment.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    ranks = completed_run(exe, prm, settings=settings, env=environment,
+                          launcher=["mpirun", "-np", "2", "--oversubscribe"]).summary
+    assert ranks["n_mpi_ranks"] == 2 and ranks["n_blas_threads"] == 1, (
+        ranks["n_mpi_ranks"], ranks["n_blas_threads"])
 
 
 def check_plane_strain(exe, prm, prm_2d, reference=None, tolerance=None):
@@ -722,7 +773,7 @@ if __name__ == "__main__":
         {"vtu": check_vtu, "bad-input": check_bad_input,
          "bad-layout": check_bad_layout, "triple-point": check_triple_point,
          "no-equilibrium": check_no_equilibrium,
-         "deterministic": check_deterministic,
+         "deterministic": check_deterministic, "threads": check_threads,
          "wedge": check_wedge, "wedge-fold": check_wedge_fold, "mpi": check_mpi,
          "plane-strain": check_plane_strain,
          "plane-strain-contact": check_plane_strain_contact,
