@@ -69,6 +69,7 @@ def row_of(h, run, guess):
         "peak (MiB)": s["peak_memory_MiB"],
         "estimate (MiB)": guess["estimate (MiB)"],
         "K": s.get("safety_factor"),
+        "BLAS threads": s.get("n_blas_threads"),
     }
 
 
@@ -111,18 +112,21 @@ def largest_pairs(rows, model):
 
 
 def section(rows, stop, model, load, command):
+    known = [r.get("BLAS threads") for r in rows if r.get("BLAS threads") is not None]
+    threads = f" ({known[0]} BLAS threads)" if known else ""
     lines = ["<!-- slope3d: written by benchmarks/slope_3d_scaling.py -->",
              "## 3D: a slope on a sphere", "",
              f"Written by `{command}` on {datetime.date.today()} "
-             f"({common.git_description()}), {platform.node()}, {os.cpu_count()} cores, load "
-             f"average {' '.join(load)} at the start.", "",
+             f"({common.git_description()}), {platform.node()}, {os.cpu_count()} cores"
+             f"{threads}, load average {' '.join(load)} at the start.", "",
              "prm/slope_3d.prm (the paper's section extruded 40 m, a sphere, P1 tetrahedra, the "
              "dense mixed system) with its Mesh size refined. The pairs lie on a cap of the "
              "sphere: they grow as h^-2, the dofs a little faster; the dense parts (3 pairs "
              "unknowns) soon outweigh the FE part. *estimated pairs* and *estimate* are the "
              "program's own, made before meshing (geometry/mesh_estimate.cc); *steps* are the "
-             "safety-factor steps of the whole run (the stiffness check's included), *contact "
-             "iterations* their status iterations.", "",
+             "safety-factor steps to K (the stiffness check then runs the iteration twice more, "
+             "not counted here, but in the times), *contact iterations* their status "
+             "iterations.", "",
              *common.markdown_table(COLUMNS, [[fmt(r[c]) for c in COLUMNS] for r in rows],
                                     "r" * len(COLUMNS)),
              "", f"The series stopped: {stop}.", ""]
