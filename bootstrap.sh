@@ -15,8 +15,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 # libopenblas0-pthread: an optimised BLAS/LAPACK for MUMPS and the dense
-# mixed system, with threads (every core unless OPENBLAS_NUM_THREADS says
-# otherwise; one per rank under mpirun); Debian's alternatives put it in
+# mixed system, which can use threads (one unless OPENBLAS_NUM_THREADS asks
+# for more: doc/theory.md, "Threads"); Debian's alternatives put it in
 # place of the reference one (and of libopenblas0-serial if that is there).
 # libsuitesparse-dev: CHOLMOD (Direct solver = CHOLMOD); deal.II depends on it.
 # clang-format (Debian 12: version 14): the ctest format.check.

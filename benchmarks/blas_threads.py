@@ -90,7 +90,9 @@ def main():
         f"average {load_start:.1f} at the start and {load_end:.1f} at the end. *FE* is "
         "assembly and factorisation (MUMPS), *contact* the status iterations' dense "
         "solves; the speed-ups are 1 thread's time over 2 threads'; *K difference* is "
-        "K(2)/K(1) − 1.",
+        "K(2)/K(1) − 1. Only on free cores: on cores busy with other work two threads are "
+        "slower than one (doc/theory.md, \"Threads\"), so a run uses one unless "
+        "`OPENBLAS_NUM_THREADS` asks for more.",
         "",
     ]
     lines += common.markdown_table(

@@ -45,8 +45,7 @@ main(int argc, char *argv[])
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       host = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-      fdem::linear_algebra::choose_blas_threads(
-        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+      fdem::linear_algebra::choose_blas_threads();
       dealii::deallog.depth_console(0);
       bool        print = false, validate = false;
       auto        verbosity = fdem::postprocess::Verbosity::normal;

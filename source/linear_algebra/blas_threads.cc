@@ -45,9 +45,9 @@ namespace fdem
     }
 
     void
-    choose_blas_threads(const unsigned int n_ranks)
+    choose_blas_threads()
     {
-      if (n_ranks > 1 && std::getenv("OPENBLAS_NUM_THREADS") == nullptr &&
+      if (std::getenv("OPENBLAS_NUM_THREADS") == nullptr &&
           std::getenv("OMP_NUM_THREADS") == nullptr)
         set_n_blas_threads(1);
     }

@@ -12,9 +12,8 @@ namespace fdem
      * iteration, the Cholesky factor of a block's Schur complement, MUMPS's
      * fronts) run on the BLAS, and in 3D they are most of a run. Debian's
      * OpenBLAS with threads (libopenblas0-pthread, which bootstrap.sh
-     * installs) uses every core unless OPENBLAS_NUM_THREADS (or
-     * OMP_NUM_THREADS) says otherwise; the serial OpenBLAS and the
-     * reference BLAS use one. The library is found at run time (the
+     * installs) can split them between the cores; the serial OpenBLAS and
+     * the reference BLAS use one. The library is found at run time (the
      * openblas_* functions looked up by name), so the program runs on any
      * BLAS that Debian's alternatives put in place.
      *
@@ -32,13 +31,17 @@ namespace fdem
     set_n_blas_threads(unsigned int n_threads);
 
     /**
-     * Under mpirun every rank makes the dense solves (doc/theory.md,
-     * "Running with MPI"): with @p n_ranks > 1 each rank gets one BLAS
-     * thread, so that the ranks do not share the cores between more threads
-     * than there are, unless the environment sets OPENBLAS_NUM_THREADS or
-     * OMP_NUM_THREADS, which then rules.
+     * One BLAS thread unless the environment sets OPENBLAS_NUM_THREADS (or
+     * OMP_NUM_THREADS), which then rules. OpenBLAS's threads wait for each
+     * other inside every LU by spinning: on a machine whose cores are busy
+     * with other work (another run, a build) a run with two threads on two
+     * cores took 1.75 times as long as with one, and 10 to 20 times with
+     * both cores busy, while on idle cores it was 1.14-1.49 times faster
+     * (doc/theory.md, "Threads"). So more threads are asked for by whoever
+     * knows the cores are free. Under mpirun every rank makes the same
+     * dense solves: one thread per rank is the setting that fits.
      */
     void
-    choose_blas_threads(unsigned int n_ranks);
+    choose_blas_threads();
   } // namespace linear_algebra
 } // namespace fdem
