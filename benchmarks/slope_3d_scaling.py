@@ -61,6 +61,7 @@ def row_of(h, run, guess):
         "estimated pairs": guess["estimated pairs"],
         "steps": len(steps),
         "contact iterations": sum(step.get("n_contact_iterations", 0) for step in steps),
+        "slope solves": sum(step.get("n_slope_solves", 0) for step in steps),
         "mesh and setup (s)": timing(s, "geometry", "setup", "interfaces"),
         "assembly and factorisation (s)": timing(s, "assembly", "factorisation", "one solve"),
         "flexibility (s)": timing(s, "flexibility"),
@@ -74,6 +75,7 @@ def row_of(h, run, guess):
 
 
 COLUMNS = ["Mesh size (m)", "dofs", "pairs", "estimated pairs", "steps", "contact iterations",
+           "slope solves",
            "mesh and setup (s)", "assembly and factorisation (s)", "flexibility (s)",
            "contact (s)", "total (s)", "peak (MiB)", "estimate (MiB)", "K"]
 
@@ -126,7 +128,8 @@ def section(rows, stop, model, load, command):
              "program's own, made before meshing (geometry/mesh_estimate.cc); *steps* are the "
              "safety-factor steps to K (the stiffness check then runs the iteration twice more, "
              "not counted here, but in the times), *contact iterations* their status "
-             "iterations.", "",
+             "iterations, *slope solves* the two solves of the mixed system by which each step "
+             "with every pair slipping computes the slope of K* (doc/theory.md).", "",
              *common.markdown_table(COLUMNS, [[fmt(r[c]) for c in COLUMNS] for r in rows],
                                     "r" * len(COLUMNS)),
              "", f"The series stopped: {stop}.", ""]

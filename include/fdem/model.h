@@ -245,6 +245,20 @@ namespace fdem
     }
 
     /**
+     * One solve of eq. (9) with the pairs' @p states held (no status
+     * iteration) and the strengths @p strengths, without changing the
+     * model's contact state or warm start: the linearised response of a
+     * converged state to a change of the strengths (the slope of K* at a
+     * fold, SafetyFactorAnalysis).
+     */
+    contact::ContactSolution
+    solve_with_states(const std::vector<contact::PairState<dim>> &states,
+                      const std::vector<contact::PairStrength>   &strengths)
+    {
+      return mixed_system->solve(states, strengths);
+    }
+
+    /**
      * Solves eq. (9) with every pair stuck at the model's load (the elastic
      * state of the FE-stress factor), without changing the contact state.
      */

@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -51,10 +52,22 @@ namespace fdem
                                                 strengths,
                                                 on_sliding_surface); // eq. (11)
       }
+      if (solution.all_slipping && !solution.degenerate &&
+          solution.has_factor())
+        {
+          TimerOutput::Scope scope(model.phase_timer(), "contact");
+          solution.K_star_slope   = K_star_slope(K, solution);
+          solution.n_slope_solves = 2;
+        }
       if (solution.has_factor())
         model.log << "  F_R = " << std::setprecision(9)
                   << solution.resisting_force
-                  << ", F_tau = " << solution.sliding_force << std::endl;
+                  << ", F_tau = " << solution.sliding_force;
+      if (!std::isnan(solution.K_star_slope))
+        model.log << ", dK*/dK = " << std::setprecision(12)
+                  << solution.K_star_slope;
+      if (solution.has_factor())
+        model.log << std::endl;
       if (solution.converged && on_solved_step)
         on_solved_step(K,
                        solution.has_factor() ?
@@ -68,6 +81,45 @@ namespace fdem
       if (solution.degenerate)
         model.set_warm_start(start);
       return solution;
+    }
+
+    template <int dim>
+    double
+    SafetyFactorAnalysis<dim>::K_star_slope(const double                   K,
+                                            const ReducedStrengthSolution &at_K)
+    {
+      // Near a fold h = K* - K = rho^2 (L - K)^2 with rho of order one
+      // (1.6 on the rock wedge): dK, a hundredth of sqrt(h), is about a
+      // hundredth of the distance to the limit, where the central
+      // difference's error (dK / (L - K))^2 is far below what a step
+      // needs, and h is still many times the solves' round-off.
+      const double h  = K * at_K.resisting_force / at_K.sliding_force - K;
+      const double dK = std::max(1e-2 * std::sqrt(std::max(h, 0.0)), 1e-9 * K);
+      const contact::ContactOutcome<dim> &solved = model.get_contact_outcome();
+      std::array<double, 2>               K_star{};
+      for (unsigned int side = 0; side < 2; ++side)
+        {
+          const double K_side = side == 0 ? K - dK : K + dK;
+          model.apply_strength_dependent_loads(K_side);
+          const std::vector<contact::PairStrength> strengths =
+            model.pair_strengths(K_side);
+          contact::ContactOutcome<dim> moved;
+          moved.states   = solved.states;
+          moved.solution = model.solve_with_states(solved.states, strengths);
+          moved.result   = moved.solution.solved ?
+                             contact::ContactResult::converged :
+                             contact::ContactResult::numerical_breakdown;
+          const ReducedStrengthSolution s = resisting_and_sliding_forces(
+            model.get_mixed_system(), moved, strengths, on_sliding_surface);
+          if (!s.has_factor())
+            {
+              model.apply_strength_dependent_loads(K);
+              return std::numeric_limits<double>::quiet_NaN();
+            }
+          K_star[side] = K_side * s.resisting_force / s.sliding_force;
+        }
+      model.apply_strength_dependent_loads(K);
+      return (K_star[1] - K_star[0]) / (2 * dK);
     }
 
     template <int dim>

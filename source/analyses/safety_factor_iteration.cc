@@ -38,7 +38,132 @@ namespace fdem
          * go for the end of the solves below it (next_factor()).
          */
         bool known = false;
+        /** Extrapolated with the steps' slopes of K* (fold_by_slope()). */
+        bool by_slope = false;
+        /** An estimate of the limit's error (fold_by_slope(); else 0). */
+        double error = 0;
       };
+
+      /** q = h/(-h') of a fold step with a slope (fold_by_slope()), else
+       * NaN. */
+      double
+      q_of(const Step *step)
+      {
+        if (step == nullptr || !std::isfinite(step->solution.K_star_slope))
+          return nan;
+        const double h     = step->K_star - step->K;
+        const double slope = step->solution.K_star_slope - 1; // h'(K)
+        return step->solution.all_slipping && h > 0 && slope < 0 &&
+                   slope >= -0.5 ?
+                 h / -slope :
+                 nan;
+      }
+
+      /**
+       * L of fold_by_slope() at @p step after @p previous (or nullptr); NaN
+       * if @p step is no fold step with a slope. @p two_slopes: whether
+       * both had one.
+       */
+      double
+      limit_by_slope(const Step *step,
+                     const Step *previous,
+                     bool       &two_slopes,
+                     bool       &fitted_to_h)
+      {
+        const double q = q_of(step);
+        two_slopes     = false;
+        fitted_to_h    = false;
+        if (std::isnan(q))
+          return nan;
+        const bool   earlier    = previous != nullptr && previous->K < step->K;
+        const double previous_q = earlier ? q_of(previous) : nan;
+        two_slopes              = !std::isnan(previous_q);
+        double p                = 2;
+        if (two_slopes && previous_q > q)
+          p = (step->K - previous->K) / (previous_q - q);
+        else if (!two_slopes && earlier &&
+                 previous->K_star - previous->K > step->K_star - step->K)
+          {
+            fitted_to_h = true;
+            // h_1/h_0 = (1 + (K_0 - K_1)/(p q))^p: its left side rises
+            // with p, towards exp((K_0 - K_1)/q).
+            const double ratio = std::log((previous->K_star - previous->K) /
+                                          (step->K_star - step->K));
+            const double dK    = step->K - previous->K;
+            const auto   f     = [&](const double p) {
+              return p * std::log1p(dK / (p * q)) - ratio;
+            };
+            double lo = 1, hi = 2;
+            if (f(lo) >= 0)
+              hi = lo;
+            else if (f(hi) <= 0)
+              lo = hi;
+            for (unsigned int i = 0; i < 60 && hi - lo > 1e-6; ++i)
+              (f(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+            p = 0.5 * (lo + hi);
+          }
+        return step->K + std::clamp(p, 1.0, 2.0) * q;
+      }
+
+      /**
+       * The fold from the steps' slopes of K* (K_star_slope), with the
+       * model h = K* - K = c (L - K)^p: at a step, L - K = p q with
+       * q = h/(-h'). Its exponent p is 2 near a fold (every pair slipping in
+       * 3D, fold_limit()) but can be far less further away (measured 2.04
+       * on prm/rock_wedge.prm 4.4 % below its limit, 1.1 on prm/slope_3d.prm
+       * 4 % below), so it is taken from the steps (limit_by_slope()), kept
+       * between 1 and 2:
+       * - two fold steps with slopes: p = (K_0 - K_1)/(q_1 - q_0), exact for
+       *   the model;
+       * - one, after a solved step with a larger h: the p for which the
+       *   model through this step's h and h' has that step's h too;
+       * - one alone: p = 2 (Newton's step on sqrt(h)).
+       * The aim: 95 % of the way to that L, 90 % where p came from the
+       * earlier step's h (its L lay 8.5 % of the distance beyond the limit
+       * on the slope).
+       *
+       * The limit is known from Newton's roots on sqrt(h) (p = 2, the
+       * fold's own exponent), which on the wedge lie 1 to 4 % of the
+       * distance off the limit from 4.4 % to 0.3 % below it, their error
+       * then falling as the distance to a power between 1.5 and 2: the
+       * error of this step's root is estimated as the previous root's (the
+       * two roots' difference, this one being far closer) times the ratio
+       * of the two steps' distances to their roots to the power 1.5. Within
+       * 2 @p tolerance (relative) the limit is known to be this root:
+       * next_factor() then aims below it by the error as well, and the
+       * distance still to go counts it. A step whose slope of h is not
+       * between -1/2 and 0 is no fold step (the test of fold_limit() on
+       * two steps without slopes): no fold.
+       */
+      Fold
+      fold_by_slope(const History &history, const double tolerance)
+      {
+        const Step  *step       = history[0];
+        bool         two_slopes = false, fitted_to_h = false;
+        const double limit =
+          limit_by_slope(step, history[1], two_slopes, fitted_to_h);
+        if (std::isnan(limit))
+          return {};
+        Fold fold{limit,
+                  step->K + (fitted_to_h ? 0.9 : 0.95) * (limit - step->K),
+                  false,
+                  true,
+                  0};
+        if (two_slopes)
+          {
+            // Known by Newton's roots on sqrt(h) (p = 2, the fold's own
+            // exponent): this step's and the previous one's.
+            const Step  *previous      = history[1];
+            const double root          = step->K + 2 * q_of(step);
+            const double previous_root = previous->K + 2 * q_of(previous);
+            const double error =
+              std::abs(root - previous_root) *
+              std::pow((root - step->K) / (previous_root - previous->K), 1.5);
+            if (error <= 2 * tolerance * step->K)
+              fold = {root, root, true, true, error};
+          }
+        return fold;
+      }
 
       /**
        * L of h = c (L - K)^p through three points (K_i, h_i), K rising, h
@@ -96,6 +221,9 @@ namespace fdem
       Fold
       fold_limit(const History &history, const double tolerance)
       {
+        if (history[0] != nullptr &&
+            std::isfinite(history[0]->solution.K_star_slope))
+          return fold_by_slope(history, tolerance);
         std::array<double, 3> K{}, h{};
         unsigned int          n = 0;
         for (; n < 3 && history[n] != nullptr; ++n)
@@ -186,7 +314,7 @@ namespace fdem
         // tolerance of the limit (a fixed point).
         if (fold.known)
           {
-            double target = fold.limit * (1 - 1.5 * tolerance);
+            double target = fold.limit * (1 - 1.5 * tolerance) - fold.error;
             if (target < K * (1 + 0.5 * tolerance))
               target = K * (1 + 0.95 * tolerance);
             if (target >= K_high)
@@ -266,7 +394,7 @@ namespace fdem
             // The fixed point is where the fold lies, wherever the step goes;
             // once it is known, the step (a probe) says nothing more.
             if (fold.known)
-              step.distance_left = std::abs(fold.limit - K);
+              step.distance_left = std::abs(fold.limit - K) + fold.error;
             else if (fold.limit > K)
               step.distance_left = std::max(step.distance_left, fold.limit - K);
           }
@@ -278,7 +406,7 @@ namespace fdem
             // the failure first (as next_factor()); bisect after two failures.
             const Fold last = fold_limit(solved, tolerance);
             const bool fold = failures_in_row == 0 && !std::isnan(K_low) &&
-                              !std::isnan(last.limit);
+                              !std::isnan(last.limit) && !last.by_slope;
             // Below a known fold, the failure is the end of the solves (the
             // next_factor() above aimed 1.5 tolerances below the limit): go
             // half a tolerance lower, so that a static solve closes the

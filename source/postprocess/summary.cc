@@ -199,12 +199,14 @@ namespace fdem
               {{"K", step.K},
                {"K_star", number_or_null(step.K_star)},
                {"K_next", step.K_next},
+               {"K_star_slope", number_or_null(step.solution.K_star_slope)},
                {"F_R", step.solution.resisting_force},
                {"F_tau", step.solution.sliding_force},
                {"n_stick", step.solution.n_stick},
                {"n_slip", step.solution.n_slip},
                {"n_open", step.solution.n_open},
                {"n_contact_iterations", step.solution.n_contact_iterations},
+               {"n_slope_solves", step.solution.n_slope_solves},
                {"contact_result", step.solution.result}});
           summary["iterations"]       = steps;
           const auto &fe_stress       = analyses_results.fe_stress;

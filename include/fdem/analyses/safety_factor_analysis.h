@@ -83,6 +83,18 @@ namespace fdem
        */
       StiffnessSensitivity
       stiffness_sensitivity(const Result &base);
+
+      /**
+       * The slope d(K*)/dK at @p K for the model's contact state, solved at K
+       * with the result @p at_K: the state's statuses and slip directions held,
+       * two solves of the mixed system at K -/+ dK (no status iteration; the
+       * rows of a 3D slipping pair are the linearisation of its friction
+       * law, so each is a Newton step of the contact problem from the
+       * solved state), K* of each, their central difference. NaN if either
+       * solve has no K*.
+       */
+      double
+      K_star_slope(const double K, const ReducedStrengthSolution &at_K);
     };
   } // namespace analyses
 } // namespace fdem

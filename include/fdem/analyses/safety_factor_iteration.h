@@ -57,6 +57,16 @@ namespace fdem
        * iteration").
        */
       bool all_slipping = false;
+      /**
+       * The slope d(K*)/dK at this K along the solved state (its statuses and
+       * slip directions held, the mixed system being the status iteration's
+       * linearisation there): computed for all-slipping steps that are not
+       * degenerate (a fold), NaN otherwise. The iteration takes Newton
+       * steps on sqrt(K* - K) with it (doc/theory.md, "The fold's slope").
+       */
+      double K_star_slope = std::numeric_limits<double>::quiet_NaN();
+      /** Solves of the mixed system for K_star_slope (2, or 0). */
+      unsigned int n_slope_solves = 0;
 
       /** Solved, with a sliding force: K* is defined. */
       bool
