@@ -384,7 +384,10 @@ namespace fdem
                         "the ground and the layers): below it the water "
                         "pressure is gamma_w times the depth under the line; "
                         "used where a pressure or pore pressure is "
-                        "'piezometric'. Empty: none.");
+                        "'piezometric'. In 3D the points are x and the "
+                        "vertical z, the line running unchanged along y "
+                        "(the 3D slope's section across its width). Empty: "
+                        "none.");
       prm.leave_subsection();
     }
 
