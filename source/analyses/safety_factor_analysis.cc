@@ -60,14 +60,15 @@ namespace fdem
           solution.n_slope_solves = 2;
         }
       if (solution.has_factor())
-        model.log << "  F_R = " << std::setprecision(9)
-                  << solution.resisting_force
-                  << ", F_tau = " << solution.sliding_force;
-      if (!std::isnan(solution.K_star_slope))
-        model.log << ", dK*/dK = " << std::setprecision(12)
-                  << solution.K_star_slope;
-      if (solution.has_factor())
-        model.log << std::endl;
+        {
+          model.log << "  F_R = " << std::setprecision(9)
+                    << solution.resisting_force
+                    << ", F_tau = " << solution.sliding_force;
+          if (!std::isnan(solution.K_star_slope))
+            model.log << ", dK*/dK = " << std::setprecision(12)
+                      << solution.K_star_slope;
+          model.log << std::endl;
+        }
       if (solution.converged && on_solved_step)
         on_solved_step(K,
                        solution.has_factor() ?
@@ -90,14 +91,14 @@ namespace fdem
     {
       // Near a fold h = K* - K = rho^2 (L - K)^2 with rho of order one
       // (1.6 on the rock wedge): dK, a hundredth of sqrt(h), is about a
-      // hundredth of the distance to the limit, where the central
+      // sixtieth of the distance to the limit there, where the central
       // difference's error (dK / (L - K))^2 is far below what a step
       // needs, and h is still many times the solves' round-off.
       const double h  = K * at_K.resisting_force / at_K.sliding_force - K;
       const double dK = std::max(1e-2 * std::sqrt(std::max(h, 0.0)), 1e-9 * K);
       const contact::ContactOutcome<dim> &solved = model.get_contact_outcome();
       std::array<double, 2>               K_star{};
-      for (unsigned int side = 0; side < 2; ++side)
+      for (unsigned int side = 0; side < 2 && !std::isnan(K_star[0]); ++side)
         {
           const double K_side = side == 0 ? K - dK : K + dK;
           model.apply_strength_dependent_loads(K_side);
@@ -111,15 +112,12 @@ namespace fdem
                              contact::ContactResult::numerical_breakdown;
           const ReducedStrengthSolution s = resisting_and_sliding_forces(
             model.get_mixed_system(), moved, strengths, on_sliding_surface);
-          if (!s.has_factor())
-            {
-              model.apply_strength_dependent_loads(K);
-              return std::numeric_limits<double>::quiet_NaN();
-            }
-          K_star[side] = K_side * s.resisting_force / s.sliding_force;
+          K_star[side] = s.has_factor() ?
+                           K_side * s.resisting_force / s.sliding_force :
+                           std::numeric_limits<double>::quiet_NaN();
         }
       model.apply_strength_dependent_loads(K);
-      return (K_star[1] - K_star[0]) / (2 * dK);
+      return (K_star[1] - K_star[0]) / (2 * dK); // NaN if either has none
     }
 
     template <int dim>

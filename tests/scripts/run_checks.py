@@ -792,7 +792,7 @@ def check_mpi(exe, prm, n_ranks="2"):
     # A bracket on a fold (the 3D wedges: every pair slipping) ends where
     # the iteration aimed, L(1 - 1.5 tol) less the error estimate, L being
     # Newton's root on sqrt(K* - K) from the slope of K*: a difference
-    # quotient over dK = sqrt(K* - K)/100, about (L - K)/160, that carries
+    # quotient over dK = sqrt(K* - K)/100, about (L - K)/60, that carries
     # the round-off of K* (1e-15 to 1e-14 between ranks) into the aim
     # multiplied by about K/dK, 1e5 to 1e6 in the last steps. Measured
     # 2.0e-10 on the tetrahedra's wedge with the same statuses at every
