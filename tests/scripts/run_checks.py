@@ -90,9 +90,12 @@
                                          Geometry/Slope/Mesh size H: every run
                                          certified, and the largest K over the
                                          smallest within TOL relative
-  run_checks.py reference-factor EXE CASE.prm REF.prm TOL
+  run_checks.py reference-factor EXE CASE.prm REF.prm TOL [stiffness-dependent]
                                          both certified, not stiffness-
-                                         dependent, their K within TOL
+                                         dependent, their K within TOL (or
+                                         both stiffness-dependent, and K and
+                                         the stiffness check's two K each
+                                         within TOL)
   run_checks.py undrained-sphere EXE CASE.prm XC,YC,ZC R C GAMMA TOL
                                          certified, and within TOL of the
                                          exact phi = 0 K of the sphere
@@ -457,28 +460,44 @@ def check_plane_strain(exe, prm, prm_2d, reference=None, tolerance=None):
         assert abs(K3 / K_ref - 1) <= float(tolerance), (K3, K_ref)
 
 
-def certified_run(exe, prm):
+def certified_run(exe, prm, stiffness_dependent=False):
     """The run of @p prm, whose K must be certified (a fixed point or a
-    bracket) and not stiffness-dependent; its summary."""
+    bracket) and not stiffness-dependent (or, with @p stiffness_dependent,
+    must be: the check's warning and both of its K); its summary."""
     summary = completed_run(exe, prm).summary
     c = summary["certificate"]
     assert summary["converged"] and c["holds"], c
+    check = summary["stiffness_sensitivity"]
     print(f"{os.path.basename(prm)}: {summary['n_dofs']} dofs, "
           f"{summary['interfaces'][0]['n_pairs']} pairs, K = {summary['safety_factor']!r} "
           f"({c['kind']}, {len(summary['iterations'])} steps), stiffness change "
-          f"{summary['stiffness_sensitivity']['relative_change']!r}")
-    assert not any("stiffness" in w for w in summary["warnings"]), summary["warnings"]
+          f"{check['relative_change']!r} (K stiffer {check['K_stiffer']!r}, "
+          f"softer {check['K_softer']!r})")
+    warned = any("stiffness" in w for w in summary["warnings"])
+    assert warned == stiffness_dependent, summary["warnings"]
+    if stiffness_dependent:
+        assert check["K_stiffer"] is not None and check["K_softer"] is not None, check
     return summary
 
 
-def check_reference_factor(exe, prm, reference_prm, tolerance):
+def check_reference_factor(exe, prm, reference_prm, tolerance, stiffness=None):
     """@p prm and @p reference_prm (another model of the same slope: the 2D
     section of a plane-strain case) both certified, their K within
-    @p tolerance relative."""
-    K = certified_run(exe, prm)["safety_factor"]
-    K_ref = certified_run(exe, reference_prm)["safety_factor"]
-    print(f"relative difference {K / K_ref - 1:.2e} (tolerance {tolerance})")
-    assert abs(K / K_ref - 1) <= float(tolerance), (K, K_ref)
+    @p tolerance relative. With @p stiffness = "stiffness-dependent" both
+    must warn that K depends on the sliding mass's stiffness, and the two
+    models must then agree also with the moving blocks stiffer and softer:
+    the same elastic model in 3D and in its section has the same K at each
+    stiffness, so a plane-strain comparison holds for all three."""
+    assert stiffness in (None, "stiffness-dependent"), stiffness
+    dependent = stiffness is not None
+    runs = [certified_run(exe, p, dependent) for p in (prm, reference_prm)]
+    keys = ["safety_factor"] + (["K_stiffer", "K_softer"] if dependent else [])
+    for key in keys:
+        K, K_ref = (r["safety_factor"] if key == "safety_factor" else
+                    r["stiffness_sensitivity"][key] for r in runs)
+        print(f"{key}: {K!r} against {K_ref!r}, relative difference "
+              f"{K / K_ref - 1:.2e} (tolerance {tolerance})")
+        assert abs(K / K_ref - 1) <= float(tolerance), (key, K, K_ref)
 
 
 def check_undrained_sphere(exe, prm, centre, radius, cohesion, unit_weight, tolerance):

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,24 @@ namespace fdem
           "hexahedra (edges about h/3 to h), or with Element shape = "
           "tetrahedron keeps tetrahedra of size h (growing to 3 h).");
         prm.declare_entry(
+          "Layers",
+          "",
+          Patterns::List(Patterns::Anything(), 0),
+          "Soil layers from the top down: the material of each, a name of "
+          "Materials/Names (a material may come back lower down). The "
+          "layers cut across the sliding mass and the foundation alike. "
+          "Empty: no layers (each block is of its own material).");
+        prm.declare_entry(
+          "Layer boundaries",
+          "",
+          Patterns::Anything(),
+          "The boundaries between consecutive layers, from the top down, "
+          "separated by '|' (one fewer than Layers): each a polyline "
+          "'x,z; x,z; ...' (m) in the section, with increasing x from 0 (or "
+          "before) to the end of the crest (or beyond), inside the model (on "
+          "or below the ground, above the base) and strictly below the "
+          "boundary before it; each runs unchanged along y.");
+        prm.declare_entry(
           "Element shape",
           "hexahedron",
           Patterns::Selection("hexahedron|tetrahedron"),
@@ -125,11 +144,14 @@ namespace fdem
                                                            Surface::cylinder;
         const std::vector<double> c = Utilities::string_to_double(
           Utilities::split_string_list(prm.get("Surface centre"), ','));
-        centre        = Point<3>(c[0], c[1], c[2]);
-        radius        = prm.get_double("Surface radius");
-        half_length   = prm.get_double("Surface half length");
-        mesh_size     = prm.get_double("Mesh size");
-        element_shape = case_input::parse_element_shape(prm);
+        centre           = Point<3>(c[0], c[1], c[2]);
+        radius           = prm.get_double("Surface radius");
+        half_length      = prm.get_double("Surface half length");
+        mesh_size        = prm.get_double("Mesh size");
+        element_shape    = case_input::parse_element_shape(prm);
+        layers           = Utilities::split_string_list(prm.get("Layers"), ',');
+        layer_boundaries = case_input::parse_layer_boundaries(
+          prm.get("Layer boundaries"), "Geometry/Slope 3D/Layer boundaries");
         if (surface == Surface::sphere)
           half_length = radius;
       }
@@ -207,6 +229,15 @@ namespace fdem
         case_input::require(value > 0, path + name + ": must be positive.");
       case_input::require(slope_angle < 90,
                           path + "Slope angle: must be less than 90 degrees.");
+      const double z_top = toe_elevation + slope_height;
+      case_input::validate_layers(layers,
+                                  layer_boundaries,
+                                  {Point<2>(0, toe_elevation),
+                                   Point<2>(toe_length, toe_elevation),
+                                   Point<2>(crest_x(), z_top),
+                                   Point<2>(length(), z_top)},
+                                  toe_elevation - base_depth,
+                                  "Geometry/Slope 3D");
 
       // Points of the surface 1/720 of a turn apart (in the two angles of
       // the ellipsoid, or around the cylinder's section): the part below
@@ -425,34 +456,31 @@ namespace fdem
       });
       AssertThrow(foundation.size() == 1, ExcMessage(unexpected));
 
-      std::vector<int> sliding_surface;
+      // Soil layers (slope_3d_layers.cc): both blocks split along the layer
+      // boundaries, one material region per layer material.
+      std::vector<int> mass_volumes = {mass};
+      split_into_layers(slope, {&mass_volumes, &foundation});
+
+      // The faces by the volumes they bound: of both blocks, the sliding
+      // surface; of one volume only, the outside (base, sides, ground by
+      // their place); of two volumes of one block, a layer boundary inside
+      // it, in no group.
+      std::vector<int> sliding_surface, ground, base, sides;
       GmshSession::run(name + ": Gmsh could not build the model", [&]() {
-        const auto faces_of = [](const int volume) {
-          gmsh::vectorpair boundary;
-          gmsh::model::getBoundary({{3, volume}}, boundary, false, false);
-          std::vector<int> tags;
-          for (const auto &dim_tag : boundary)
-            tags.push_back(std::abs(dim_tag.second));
-          std::sort(tags.begin(), tags.end());
-          return tags;
-        };
-        const std::vector<int> mass_faces       = faces_of(mass);
-        const std::vector<int> foundation_faces = faces_of(foundation[0]);
-        std::vector<int>       all_faces;
-        std::set_union(mass_faces.begin(),
-                       mass_faces.end(),
-                       foundation_faces.begin(),
-                       foundation_faces.end(),
-                       std::back_inserter(all_faces));
-        std::vector<int> ground, base, sides;
-        for (const int face : all_faces)
+        std::map<int, std::pair<unsigned int, unsigned int>> volumes_of;
+        for (const bool of_mass : {true, false})
+          for (const int volume : of_mass ? mass_volumes : foundation)
+            {
+              gmsh::vectorpair boundary;
+              gmsh::model::getBoundary({{3, volume}}, boundary, false, false);
+              for (const auto &dim_tag : boundary)
+                {
+                  auto &count = volumes_of[std::abs(dim_tag.second)];
+                  ++(of_mass ? count.first : count.second);
+                }
+            }
+        for (const auto &[face, count] : volumes_of)
           {
-            const bool of_mass =
-              std::binary_search(mass_faces.begin(), mass_faces.end(), face);
-            const bool of_foundation =
-              std::binary_search(foundation_faces.begin(),
-                                 foundation_faces.end(),
-                                 face);
             double x0, y0, z0, x1, y1, z1;
             gmsh::model::getBoundingBox(2, face, x0, y0, z0, x1, y1, z1);
             const auto at =
@@ -460,8 +488,10 @@ namespace fdem
                 return std::abs(low - value) < tolerance &&
                        std::abs(high - value) < tolerance;
               };
-            if (of_mass && of_foundation)
+            if (count.first > 0 && count.second > 0)
               sliding_surface.push_back(face);
+            else if (count.first + count.second > 1)
+              continue;
             else if (at(z0, z1, z_base))
               base.push_back(face);
             else if (at(x0, x1, 0) || at(x0, x1, x_end) || at(y0, y1, 0) ||
@@ -473,7 +503,9 @@ namespace fdem
         AssertThrow(!sliding_surface.empty() && !ground.empty() &&
                       !base.empty() && !sides.empty(),
                     ExcMessage(unexpected));
-        add_physical_group(3, {mass}, "sliding mass");
+      });
+      GmshSession::run(name + ": Gmsh could not build the model", [&]() {
+        add_physical_group(3, mass_volumes, "sliding mass");
         add_physical_group(3, foundation, "foundation");
         add_physical_group(2, sliding_surface, "sliding surface");
         add_physical_group(2, ground, "ground");
@@ -490,7 +522,8 @@ namespace fdem
         gmsh_3d::mesh_near_surfaces(
           sliding_surface, near, 3 * near, r / 4, hexahedra);
       });
-      MeshDescription<3> mesh = extract_current_gmsh_model<3>(name);
+      MeshDescription<3> mesh =
+        extract_current_gmsh_model<3>(name, slope.layers);
       if (hexahedra)
         move_split_vertices_onto_surface(slope, mesh);
       mesh.surface_normals["sliding surface"] = [slope](const Point<3> &p) {

@@ -80,85 +80,103 @@ namespace fdem
     Slope::parse_layer_parameters(ParameterHandler &prm)
     {
       layers = Utilities::split_string_list(prm.get("Layers"), ',');
-      layer_boundaries.clear();
-      const std::string text = Utilities::trim(prm.get("Layer boundaries"));
-      if (!text.empty())
-        for (const std::string &line : Utilities::split_string_list(text, '|'))
-          {
-            std::vector<Point<2>> points;
-            try
-              {
-                points = case_input::parse_points(line);
-              }
-            catch (...)
-              {
-                AssertThrow(false,
-                            ExcMessage(
-                              "Geometry/Slope/Layer boundaries: '" + line +
-                              "' is not a list of points 'x,y; x,y; ...'."));
-              }
-            layer_boundaries.push_back(points);
-          }
+      layer_boundaries =
+        case_input::parse_layer_boundaries(prm.get("Layer boundaries"),
+                                           "Geometry/Slope/Layer boundaries");
     }
 
     void
     Slope::validate_layers() const
     {
-      const std::string path = "Geometry/Slope/Layer boundaries: ";
-      for (const std::string &name : layers)
-        case_input::require(!name.empty(),
-                            "Geometry/Slope/Layers: empty name in the list.");
-      case_input::require(layers.empty() ?
-                            layer_boundaries.empty() :
-                            layer_boundaries.size() + 1 == layers.size(),
-                          path + "give one boundary fewer than Layers (" +
-                            std::to_string(layers.size()) + " layers, " +
-                            std::to_string(layer_boundaries.size()) +
-                            " boundaries).");
-      const double x_min = ground_surface.front()[0],
-                   x_max = ground_surface.back()[0];
-      double height      = 0;
-      for (const Point<2> &p : ground_surface)
-        height = std::max(height, p[1] - base_elevation);
-      const double tolerance = 1e-10 * (x_max - x_min + height);
-      for (unsigned int k = 0; k < layer_boundaries.size(); ++k)
-        {
-          const auto       &line  = layer_boundaries[k];
-          const std::string which = "boundary " + std::to_string(k + 1) + " ";
-          case_input::require(line.size() >= 2,
-                              path + which + "needs at least two points.");
-          for (unsigned int i = 1; i < line.size(); ++i)
-            case_input::require(line[i][0] > line[i - 1][0],
-                                path + which + "must have increasing x.");
-          case_input::require(line.front()[0] <= x_min + tolerance &&
-                                line.back()[0] >= x_max - tolerance,
-                              path + which + "must span the model from x = " +
-                                number(x_min) + " to x = " + number(x_max) +
-                                ".");
-          for (const double x : case_input::polyline_breakpoints(
-                 line, ground_surface, x_min, x_max))
-            case_input::require(
-              case_input::polyline_elevation(line, x) <=
-                  case_input::polyline_elevation(ground_surface, x) +
-                    tolerance &&
-                case_input::polyline_elevation(line, x) >
-                  base_elevation + tolerance,
-              path + which + "leaves the model at x = " + number(x) +
-                " (above the ground surface or not above the base).");
-          if (k > 0)
-            for (const double x : case_input::polyline_breakpoints(
-                   line, layer_boundaries[k - 1], x_min, x_max))
-              case_input::require(
-                case_input::polyline_elevation(line, x) <
-                  case_input::polyline_elevation(layer_boundaries[k - 1], x) -
-                    tolerance,
-                path + "boundaries " + std::to_string(k) + " and " +
-                  std::to_string(k + 1) +
-                  " cross or touch at x = " + number(x) +
-                  "; each must lie strictly below the one "
-                  "before it.");
-        }
+      case_input::validate_layers(layers,
+                                  layer_boundaries,
+                                  ground_surface,
+                                  base_elevation,
+                                  "Geometry/Slope");
     }
+
+    namespace case_input
+    {
+      std::vector<std::vector<Point<2>>>
+      parse_layer_boundaries(const std::string &text, const std::string &entry)
+      {
+        std::vector<std::vector<Point<2>>> boundaries;
+        const std::string                  trimmed = Utilities::trim(text);
+        if (!trimmed.empty())
+          for (const std::string &line :
+               Utilities::split_string_list(trimmed, '|'))
+            {
+              std::vector<Point<2>> points;
+              try
+                {
+                  points = parse_points(line);
+                }
+              catch (...)
+                {
+                  AssertThrow(false,
+                              ExcMessage(entry + ": '" + line +
+                                         "' is not a list of points 'x,y; "
+                                         "x,y; ...'."));
+                }
+              boundaries.push_back(points);
+            }
+        return boundaries;
+      }
+
+      void
+      validate_layers(const std::vector<std::string>           &layers,
+                      const std::vector<std::vector<Point<2>>> &boundaries,
+                      const std::vector<Point<2>>              &ground,
+                      const double                              base,
+                      const std::string                        &subsection)
+      {
+        const std::string path = subsection + "/Layer boundaries: ";
+        for (const std::string &name : layers)
+          require(!name.empty(),
+                  subsection + "/Layers: empty name in the list.");
+        require(layers.empty() ? boundaries.empty() :
+                                 boundaries.size() + 1 == layers.size(),
+                path + "give one boundary fewer than Layers (" +
+                  std::to_string(layers.size()) + " layers, " +
+                  std::to_string(boundaries.size()) + " boundaries).");
+        const double x_min = ground.front()[0], x_max = ground.back()[0];
+        double       height = 0;
+        for (const Point<2> &p : ground)
+          height = std::max(height, p[1] - base);
+        const double tolerance = 1e-10 * (x_max - x_min + height);
+        for (unsigned int k = 0; k < boundaries.size(); ++k)
+          {
+            const auto       &line  = boundaries[k];
+            const std::string which = "boundary " + std::to_string(k + 1) + " ";
+            require(line.size() >= 2,
+                    path + which + "needs at least two points.");
+            for (unsigned int i = 1; i < line.size(); ++i)
+              require(line[i][0] > line[i - 1][0],
+                      path + which + "must have increasing x.");
+            require(line.front()[0] <= x_min + tolerance &&
+                      line.back()[0] >= x_max - tolerance,
+                    path + which + "must span the model from x = " +
+                      number(x_min) + " to x = " + number(x_max) + ".");
+            for (const double x :
+                 polyline_breakpoints(line, ground, x_min, x_max))
+              require(polyline_elevation(line, x) <=
+                          polyline_elevation(ground, x) + tolerance &&
+                        polyline_elevation(line, x) > base + tolerance,
+                      path + which + "leaves the model at x = " + number(x) +
+                        " (above the ground surface or not above the base).");
+            if (k > 0)
+              for (const double x :
+                   polyline_breakpoints(line, boundaries[k - 1], x_min, x_max))
+                require(polyline_elevation(line, x) <
+                          polyline_elevation(boundaries[k - 1], x) - tolerance,
+                        path + "boundaries " + std::to_string(k) + " and " +
+                          std::to_string(k + 1) +
+                          " cross or touch at x = " + number(x) +
+                          "; each must lie strictly below the one "
+                          "before it.");
+          }
+      }
+    } // namespace case_input
 
     void
     split_into_layers(const Slope                           &slope,

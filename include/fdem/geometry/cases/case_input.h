@@ -126,6 +126,29 @@ namespace fdem
                            const std::vector<Point<2>> &b,
                            const double                 x_min,
                            const double                 x_max);
+
+      /**
+       * Layer boundaries "x,y; x,y; ... | x,y; ..." (polylines separated by
+       * '|'); @p entry names the entry in messages. Empty: none.
+       */
+      std::vector<std::vector<Point<2>>>
+      parse_layer_boundaries(const std::string &text, const std::string &entry);
+
+      /**
+       * Checks soil layers (material names from the top down) and the
+       * boundaries between them against a model whose section is bounded
+       * above by the polyline @p ground (increasing x, spanning the model)
+       * and below by the elevation @p base: one boundary fewer than layers,
+       * each spanning the model, inside it (on or below the ground, above
+       * the base) and strictly below the one before it. @p path is the
+       * subsection ("Geometry/Slope").
+       */
+      void
+      validate_layers(const std::vector<std::string>           &layers,
+                      const std::vector<std::vector<Point<2>>> &boundaries,
+                      const std::vector<Point<2>>              &ground,
+                      const double                              base,
+                      const std::string                        &path);
     } // namespace case_input
   }   // namespace geometry
 } // namespace fdem

@@ -8,6 +8,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <string>
+#include <vector>
+
 namespace fdem
 {
   namespace geometry
@@ -58,6 +61,16 @@ namespace fdem
       double mesh_size;
       /** Hexahedra or tetrahedra. */
       ElementShape element_shape = ElementShape::hypercube;
+      /**
+       * Soil layers from the top down, each a material name (Materials/
+       * Names); empty: none (each block of its own material).
+       */
+      std::vector<std::string> layers;
+      /**
+       * The boundaries between consecutive layers in the section: polylines
+       * (x, z) with increasing x, running unchanged along y.
+       */
+      std::vector<std::vector<Point<2>>> layer_boundaries;
 
       /** x of the crest edge, L_t + H cot beta. */
       double
@@ -119,5 +132,18 @@ namespace fdem
      */
     MeshDescription<3>
     make_slope_3d_mesh(const Slope3D &slope);
+
+    /**
+     * Splits the volumes of @p volume_groups of the current Gmsh model
+     * (OpenCASCADE, synchronised) by the layer boundaries of @p slope
+     * (nothing without layers), each running along y: every volume is
+     * replaced in its list by its pieces, and one physical group of
+     * dimension 3 per layer material holds the pieces in its layers, across
+     * both blocks (slope_3d_layers.cc). The faces are renumbered: classify
+     * them afterwards.
+     */
+    void
+    split_into_layers(const Slope3D                         &slope,
+                      const std::vector<std::vector<int> *> &volume_groups);
   } // namespace geometry
 } // namespace fdem

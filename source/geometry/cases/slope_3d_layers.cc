@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Copyright (C) 2026 the fdem-slope authors
+//
+// Soil layers of the 3D slope generator: each layer is a material region,
+// bounded by the section's polylines running along y. As in 2D
+// (slope_layers.cc), the model's volumes are split by one slab
+// per layer (OpenCASCADE fragment), so that a piece's layer is the slab it
+// came from, with no point-in-region test.
+
+#include <fdem/geometry/cases/slope_3d.h>
+#include <fdem/geometry/gmsh_mesh.h>
+
+#include <gmsh.h>
+
+#include <map>
+#include <set>
+
+namespace fdem
+{
+  namespace geometry
+  {
+    namespace
+    {
+      /**
+       * A slab: the polygon @p outline of the section (x, z) at y = @p y0,
+       * extruded by @p length along y. Returns its volume's tag.
+       */
+      int
+      add_slab(const std::vector<Point<2>> &outline,
+               const double                 y0,
+               const double                 length)
+      {
+        namespace occ = gmsh::model::occ;
+        std::vector<int> points, lines;
+        for (const Point<2> &p : outline)
+          points.push_back(occ::addPoint(p[0], y0, p[1]));
+        for (unsigned int i = 0; i < points.size(); ++i)
+          lines.push_back(
+            occ::addLine(points[i], points[(i + 1) % points.size()]));
+        const int face = occ::addPlaneSurface({occ::addCurveLoop(lines)});
+        gmsh::vectorpair extruded;
+        occ::extrude({{2, face}}, 0, length, 0, extruded);
+        for (const auto &dim_tag : extruded)
+          if (dim_tag.first == 3)
+            return dim_tag.second;
+        AssertThrow(false, ExcInternalError());
+        return 0;
+      }
+    } // namespace
+
+    void
+    split_into_layers(const Slope3D                         &slope,
+                      const std::vector<std::vector<int> *> &volume_groups)
+    {
+      if (slope.layers.empty())
+        return;
+      const double x_max  = slope.length();
+      const double z_top  = slope.toe_elevation + slope.slope_height;
+      const double z_base = slope.toe_elevation - slope.base_depth;
+      // Slabs reach well beyond the model, so that it lies inside their
+      // union; the parts outside are removed afterwards.
+      const double margin = x_max + slope.width + z_top - z_base;
+      std::vector<std::vector<Point<2>>> lines;
+      lines.push_back({Point<2>(-margin, z_top + margin),
+                       Point<2>(x_max + margin, z_top + margin)});
+      for (const auto &boundary : slope.layer_boundaries)
+        {
+          std::vector<Point<2>> line{
+            Point<2>(-margin, case_input::polyline_elevation(boundary, 0))};
+          // Not the points at the ends (x_max, from the slope angle's
+          // tangent, may differ from a given 50 in the last digit).
+          const double tolerance = 1e-9 * margin;
+          for (const Point<2> &p : boundary)
+            if (p[0] > tolerance && p[0] < x_max - tolerance)
+              line.push_back(p);
+          line.emplace_back(x_max,
+                            case_input::polyline_elevation(boundary, x_max));
+          line.emplace_back(x_max + margin, line.back()[1]);
+          line.insert(line.begin() + 1,
+                      Point<2>(0, case_input::polyline_elevation(boundary, 0)));
+          lines.push_back(line);
+        }
+      lines.push_back({Point<2>(-margin, z_base - margin),
+                       Point<2>(x_max + margin, z_base - margin)});
+
+      const std::string message =
+        "Geometry/Slope 3D/Layer boundaries: Gmsh could not split the model";
+      gmsh::vectorpair              objects, tools, pieces;
+      std::vector<gmsh::vectorpair> origin;
+      GmshSession::run(message, [&]() {
+        for (unsigned int k = 0; k + 1 < lines.size(); ++k)
+          {
+            // The section of layer k: its lower line left to right, then its
+            // upper line right to left.
+            std::vector<Point<2>> outline = lines[k + 1];
+            outline.insert(outline.end(), lines[k].rbegin(), lines[k].rend());
+            tools.emplace_back(
+              3, add_slab(outline, -margin, slope.width + 2 * margin));
+          }
+        for (const auto *group : volume_groups)
+          for (const int v : *group)
+            objects.emplace_back(3, v);
+        gmsh::model::occ::fragment(objects, tools, pieces, origin);
+      });
+
+      // Each input's pieces, by its position in objects, then tools.
+      std::map<std::pair<int, int>, unsigned int> position;
+      for (unsigned int i = 0; i < objects.size(); ++i)
+        position[objects[i]] = i;
+      std::set<int> inside;
+      for (auto *group : volume_groups)
+        {
+          std::vector<int> split;
+          for (const int tag : *group)
+            for (const auto &piece : origin[position.at({3, tag})])
+              if (piece.first == 3)
+                {
+                  split.push_back(piece.second);
+                  inside.insert(piece.second);
+                }
+          *group = split;
+        }
+      // Pieces of the layers inside the model, by material; the rest of the
+      // slabs is removed.
+      std::map<std::string, std::vector<int>> by_material;
+      gmsh::vectorpair                        outside;
+      for (unsigned int k = 0; k < slope.layers.size(); ++k)
+        for (const auto &piece : origin[objects.size() + k])
+          if (piece.first == 3)
+            {
+              if (inside.count(piece.second) == 1)
+                by_material[slope.layers[k]].push_back(piece.second);
+              else
+                outside.push_back(piece);
+            }
+      GmshSession::run(message, [&]() {
+        gmsh::model::occ::remove(outside, true);
+        gmsh::model::occ::synchronize();
+        for (const std::string &name : slope.layers)
+          if (by_material.count(name) == 1)
+            {
+              add_physical_group(3, by_material[name], name);
+              by_material.erase(name);
+            }
+      });
+    }
+  } // namespace geometry
+} // namespace fdem
