@@ -267,29 +267,18 @@ namespace fdem
       /**
        * The area of the part of the sliding surface below the ground and
        * the length of its rim, on an n x n grid of the surface's two
-       * parameters (the ellipsoid's angles, or the cylinder's angle and y
-       * across the width): the cells whose centre is below the ground, and
-       * the edges between such a cell and one above it or the model's side.
-       * The rim is a staircase along the grid, longer than the true curve
-       * (up to 4/pi for a curve at 45 degrees to the grid): a margin.
+       * parameters (Slope3D::surface_point(): along y and about the axis): the
+       * cells whose centre is below the ground, and the edges between such a
+       * cell and one above it or the model's side. The rim is a staircase along
+       * the grid, longer than the true curve (up to 4/pi for a curve at 45
+       * degrees to the grid): a margin.
        */
       std::pair<double, double>
       sliding_surface_area_and_rim(const Slope3D &slope)
       {
-        const bool     cylinder = slope.surface == Slope3D::Surface::cylinder;
-        const Point<3> c        = slope.centre;
-        const double   r = slope.radius, b = slope.half_length;
         const unsigned int n     = 200;
         const auto         point = [&](const double s, const double t) {
-          const double phi = 2 * numbers::PI * t / n;
-          if (cylinder)
-            return Point<3>(c[0] + r * std::cos(phi),
-                            slope.width * s / n,
-                            c[2] + r * std::sin(phi));
-          const double theta = numbers::PI * s / n;
-          return Point<3>(c[0] + r * std::sin(theta) * std::cos(phi),
-                          c[1] + b * std::cos(theta),
-                          c[2] + r * std::sin(theta) * std::sin(phi));
+          return slope.surface_point(s / n, 2 * numbers::PI * t / n);
         };
         std::vector<bool> below(n * n);
         double            area = 0, rim = 0;

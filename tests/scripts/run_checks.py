@@ -100,10 +100,12 @@
                                          certified, and within TOL of the
                                          exact phi = 0 K of the sphere
                                          (undrained_sphere.py)
-  run_checks.py undrained-ellipsoid EXE CASE.prm XC,YC,ZC R B C GAMMA TOL
+  run_checks.py undrained-ellipsoid EXE CASE.prm XC,YC,ZC R B C GAMMA TOL [L]
                                          certified, and within TOL of the
-                                         exact phi = 0 K of the spheroid
-                                         (undrained_sphere.py, 320 points)
+                                         exact phi = 0 K of the spheroid,
+                                         or of the capsule of straight
+                                         length L (undrained_sphere.py, 320
+                                         points)
   run_checks.py bad-input EXE BAD.prm    the run must fail with one line on
                                          stderr containing the text of the
                                          file's '# expect:' line, a non-zero
@@ -569,18 +571,20 @@ def check_turned(exe, prm, *assignments):
     compare_turned(exe, prm, summary, settings)
 
 
-def check_undrained_ellipsoid(exe, prm, centre, radius, half_length, cohesion, unit_weight, tolerance):
+def check_undrained_ellipsoid(exe, prm, centre, radius, half_length, cohesion, unit_weight, tolerance,
+                              straight_length="0"):
     """@p prm, a slope on a spheroid (semi-axes @p radius in x and z,
-    @p half_length along y, its axis of revolution) with phi = 0,
+    @p half_length along y, its axis of revolution), or on a capsule (its
+    halves apart by @p straight_length, a cylinder between), with phi = 0,
     certified and within @p tolerance of the exact K of the rigid mass
-    turning about that axis, the spheroid's only rigid mechanism
+    turning about that axis, the surface's only rigid mechanism
     (undrained_sphere.py with 320 points in y; 160, 320 and 640 points
-    agree within 8.3e-7)."""
+    agree within 8.3e-7 on the spheroid, 5.2e-7 on the capsule)."""
     import undrained_sphere  # noqa: E402
     K = certified_run(exe, prm)["safety_factor"]
     exact = undrained_sphere.undrained_sphere_factor(
         tuple(map(float, centre.split(","))), float(radius), float(cohesion), float(unit_weight),
-        n=320, b=float(half_length))
+        n=320, b=float(half_length), straight=float(straight_length))
     print(f"exact {exact!r}; relative difference {K / exact - 1:.2e} (tolerance {tolerance})")
     assert abs(K / exact - 1) <= float(tolerance), (K, exact)
 

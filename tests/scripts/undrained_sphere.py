@@ -41,7 +41,12 @@ m): 1.0315274 with 80 points in y, 1.0315297, 1.0315304 with 160, 320
 points, within 8.3e-7 (a crude independent sum, 4000 x 8000 facets of the
 spheroid and 3000 x 3000 columns of the mass, gives 1.0956047, -1.5e-5).
 
-    /usr/bin/python3 tests/scripts/undrained_sphere.py XC YC ZC R C GAMMA [B [N]]
+A capsule (a cylinder of radius R along y over a straight length L,
+closed by the two halves of the spheroid: Baligh & Azzouz's cylinder with
+ends) is a surface of revolution about the same axis: its K adds L times
+the central section's integrals to the spheroid's.
+
+    /usr/bin/python3 tests/scripts/undrained_sphere.py XC YC ZC R C GAMMA [B [N [L]]]
 """
 import sys
 
@@ -107,9 +112,20 @@ def section(centre, R, b, y):
     return np.array([area, moment])
 
 
-def undrained_sphere_factor(centre, R, c, gamma, n=80, b=None):
+def undrained_sphere_factor(centre, R, c, gamma, n=80, b=None, straight=0.0):
     """K of the sphere of radius R, or of the spheroid with semi-axes R in
-    x and z and b along y (its axis of revolution)."""
+    x and z and b along y (its axis of revolution), or of the capsule: a
+    cylinder of radius R along y over the length @p straight, closed by the
+    spheroid's halves (its two ends, the spheroid's halves moved apart;
+    between them every section is the central one)."""
+    totals = spheroid_totals(centre, R, n, b)
+    totals += straight * section(centre, R, R if b is None else b, centre[1])
+    return c * totals[0] / (gamma * totals[1])
+
+
+def spheroid_totals(centre, R, n, b):
+    """The integrals over y of section() on the spheroid (the sphere if b
+    is None)."""
     xc, yc, zc = centre
     b = R if b is None else b
 
@@ -132,11 +148,12 @@ def undrained_sphere_factor(centre, R, c, gamma, n=80, b=None):
         for gi, wi in zip(g, w):
             t = 0.25 * np.pi * (gi + 1)
             total += 0.25 * np.pi * wi * (yc - y0) * np.sin(t) * section(centre, R, b, yc + sense * (yc - y0) * np.cos(t))
-    return c * total[0] / (gamma * total[1])
+    return total
 
 
 if __name__ == "__main__":
     xc, yc, zc, R, c, gamma = map(float, sys.argv[1:7])
     b = float(sys.argv[7]) if len(sys.argv) > 7 else None
     n = int(sys.argv[8]) if len(sys.argv) > 8 else 80
-    print(repr(undrained_sphere_factor((xc, yc, zc), R, c, gamma, n, b)))
+    straight = float(sys.argv[9]) if len(sys.argv) > 9 else 0.0
+    print(repr(undrained_sphere_factor((xc, yc, zc), R, c, gamma, n, b, straight)))

@@ -65,12 +65,15 @@ namespace fdem
         prm.declare_entry(
           "Sliding surface",
           "ellipsoid",
-          Patterns::Selection("ellipsoid|sphere|cylinder"),
+          Patterns::Selection("ellipsoid|sphere|cylinder|capsule"),
           "Shape of the sliding surface: an ellipsoid with semi-axes Surface "
           "radius in x and z and Surface half length in y, a sphere of "
-          "Surface radius, or a cylinder of Surface radius along y through "
+          "Surface radius, a cylinder of Surface radius along y through "
           "the whole width (the plane-strain case: set the sides to normal "
-          "constraints).");
+          "constraints), or a capsule: a cylinder of Surface radius along y "
+          "over Surface straight length, closed at both ends by "
+          "half-ellipsoids with semi-axis Surface half length along y (a "
+          "long slide with rounded ends).");
         prm.declare_entry("Surface centre",
                           "19.61, 20, 46.32",
                           Patterns::List(Patterns::Double(), 3, 3, ","),
@@ -84,8 +87,15 @@ namespace fdem
         prm.declare_entry("Surface half length",
                           "15",
                           Patterns::Double(0),
-                          "Semi-axis b of the ellipsoid along y (m); not "
-                          "used for a sphere or a cylinder.");
+                          "Semi-axis b of the ellipsoid, or of the "
+                          "capsule's ends, along y (m); not used for a "
+                          "sphere or a cylinder.");
+        prm.declare_entry("Surface straight length",
+                          "20",
+                          Patterns::Double(0),
+                          "Length of the capsule's cylindrical part along "
+                          "y, centred on Surface centre (m); only used for "
+                          "a capsule.");
         prm.declare_entry(
           "Mesh size",
           "2",
@@ -141,12 +151,14 @@ namespace fdem
         const std::string shape = prm.get("Sliding surface");
         surface                 = (shape == "ellipsoid") ? Surface::ellipsoid :
                                   (shape == "sphere")    ? Surface::sphere :
+                                  (shape == "capsule")   ? Surface::capsule :
                                                            Surface::cylinder;
         const std::vector<double> c = Utilities::string_to_double(
           Utilities::split_string_list(prm.get("Surface centre"), ','));
         centre           = Point<3>(c[0], c[1], c[2]);
         radius           = prm.get_double("Surface radius");
         half_length      = prm.get_double("Surface half length");
+        straight_length  = prm.get_double("Surface straight length");
         mesh_size        = prm.get_double("Mesh size");
         element_shape    = case_input::parse_element_shape(prm);
         layers           = Utilities::split_string_list(prm.get("Layers"), ',');
@@ -190,30 +202,6 @@ namespace fdem
 
 
 
-    double
-    Slope3D::quadric(const Point<3> &p) const
-    {
-      const double u = (p[0] - centre[0]) / radius,
-                   v = (p[1] - centre[1]) / half_length,
-                   w = (p[2] - centre[2]) / radius;
-      return u * u + w * w + (surface == Surface::cylinder ? 0 : v * v) - 1;
-    }
-
-
-
-    Tensor<1, 3>
-    Slope3D::quadric_gradient(const Point<3> &p) const
-    {
-      const double r2 = radius * radius, b2 = half_length * half_length;
-      Tensor<1, 3> gradient;
-      gradient[0] = (p[0] - centre[0]) / r2;
-      gradient[1] = surface == Surface::cylinder ? 0 : (p[1] - centre[1]) / b2;
-      gradient[2] = (p[2] - centre[2]) / r2;
-      return 2 * gradient;
-    }
-
-
-
     void
     Slope3D::validate() const
     {
@@ -229,6 +217,9 @@ namespace fdem
         case_input::require(value > 0, path + name + ": must be positive.");
       case_input::require(slope_angle < 90,
                           path + "Slope angle: must be less than 90 degrees.");
+      case_input::require(surface != Surface::capsule || straight_length > 0,
+                          path + "Surface straight length: must be positive "
+                                 "for a capsule (zero is the ellipsoid).");
       const double z_top = toe_elevation + slope_height;
       case_input::validate_layers(layers,
                                   layer_boundaries,
@@ -240,27 +231,25 @@ namespace fdem
                                   "Geometry/Slope 3D");
 
       // Points of the surface 1/720 of a turn apart (in the two angles of
-      // the ellipsoid, or around the cylinder's section): the part below
-      // the ground must stay inside the model, with a margin of 1e-3 of
-      // its size so that OpenCASCADE meets no tangent faces.
+      // the ellipsoid, or around the cylinder's section), and as finely
+      // along the capsule: the part below the ground must stay inside the
+      // model, with a margin of 1e-3 of its size so that OpenCASCADE meets
+      // no tangent faces. The central section is at s = 1/2.
       const double margin =
         1e-3 * (length() + width + base_depth + slope_height);
       const double       z_base   = toe_elevation - base_depth;
       const unsigned int n        = 720;
       const bool         cylinder = surface == Surface::cylinder;
+      const unsigned int n_s      = surface == Surface::capsule ? 3 * n / 4 :
+                                    cylinder                    ? 0 :
+                                                                  n / 2;
       bool               below = false, above = false, leaves = false;
       double             x_low = length(), x_high = 0; // central section
-      for (unsigned int i = 0; i <= (cylinder ? 0 : n / 2); ++i)
+      for (unsigned int i = 0; i <= n_s; ++i)
         for (unsigned int j = 0; j < n; ++j)
           {
-            const double theta =
-              cylinder ? numbers::PI / 2 : numbers::PI * i / (n / 2);
-            const double   phi = 2 * numbers::PI * j / n;
-            const Point<3> p(centre[0] +
-                               radius * std::sin(theta) * std::cos(phi),
-                             centre[1] + half_length * std::cos(theta),
-                             centre[2] +
-                               radius * std::sin(theta) * std::sin(phi));
+            const Point<3> p = surface_point(cylinder ? 0.5 : 1. * i / n_s,
+                                             2 * numbers::PI * j / n);
             if (p[2] >= ground(p[0]))
               {
                 above = true;
@@ -270,7 +259,7 @@ namespace fdem
             leaves = leaves || p[0] < margin || p[0] > length() - margin ||
                      p[2] < z_base + margin ||
                      (!cylinder && (p[1] < margin || p[1] > width - margin));
-            if (i == n / 4 || cylinder)
+            if (2 * i == n_s || cylinder)
               {
                 x_low  = std::min(x_low, p[0]);
                 x_high = std::max(x_high, p[0]);
@@ -300,30 +289,6 @@ namespace fdem
 
     namespace
     {
-      /**
-       * The point of the sliding surface reached from @p p along @p d:
-       * p + t d with quadric(p + t d) = 0, the root t nearest to 0 (the
-       * quadric is quadratic in t).
-       */
-      Point<3>
-      along_onto_quadric(const Slope3D      &slope,
-                         const Point<3>     &p,
-                         const Tensor<1, 3> &d)
-      {
-        const double b  = slope.surface == Slope3D::Surface::cylinder ?
-                            0 :
-                            1 / slope.half_length;
-        const double a2 = std::pow(d[0] / slope.radius, 2) +
-                          std::pow(d[1] * b, 2) +
-                          std::pow(d[2] / slope.radius, 2);
-        const double a1   = slope.quadric_gradient(p) * d;
-        const double a0   = slope.quadric(p);
-        const double root = std::sqrt(std::max(a1 * a1 - 4 * a2 * a0, 0.));
-        // The root of a2 t^2 + a1 t + a0 nearest to 0, without cancellation.
-        const double t = -2 * a0 / (a1 + (a1 < 0 ? -root : root));
-        return p + t * d;
-      }
-
       /**
        * Moves the vertices of the face group "sliding surface" of the
        * hexahedra of @p mesh, which Gmsh's split of the tetrahedra left on
@@ -371,7 +336,7 @@ namespace fdem
                   n /= n.norm();
                   d -= (d * n) * n;
                 }
-              targets.emplace_back(v, along_onto_quadric(slope, p, d));
+              targets.emplace_back(v, slope.along_onto_surface(p, d));
             }
         // A corner sine of 1e-2 (an angle of 0.6 degrees) at least: on the
         // default ellipsoid (Mesh size 2 m) the same 7 of 313 vertices stay
@@ -429,15 +394,42 @@ namespace fdem
             slope_solid.push_back(dim_tag);
         AssertThrow(slope_solid.size() == 1, ExcMessage(unexpected));
 
+        // The solid inside the sliding surface. The capsule's is its
+        // straight cylinder fused with a half-ellipsoid on each end disk:
+        // fusing whole ellipsoids, tangent to the cylinder along its end
+        // circles, gave a solid that OpenCASCADE could not intersect with
+        // the slope (measured).
+        const auto ellipsoid = [&](const double y, const int end) {
+          const int tag =
+            end == 0 ? occ::addSphere(c[0], y, c[2], r) :
+                       occ::addSphere(c[0], y, c[2], r, -1, 0, numbers::PI / 2);
+          // The half's pole from +z onto +y (end 1) or -y (end -1).
+          if (end != 0)
+            occ::rotate(
+              {{3, tag}}, c[0], y, c[2], 1, 0, 0, -end * numbers::PI / 2);
+          occ::dilate({{3, tag}}, c[0], y, c[2], 1, slope.half_length / r, 1);
+          return tag;
+        };
         int inside = 0;
         if (slope.surface == Slope3D::Surface::cylinder)
           inside = occ::addCylinder(c[0], -w, c[2], 0, 3 * w, 0, r);
+        else if (slope.surface == Slope3D::Surface::sphere)
+          inside = occ::addSphere(c[0], c[1], c[2], r);
+        else if (slope.surface == Slope3D::Surface::ellipsoid)
+          inside = ellipsoid(c[1], 0);
         else
           {
-            inside = occ::addSphere(c[0], c[1], c[2], r);
-            if (slope.surface == Slope3D::Surface::ellipsoid)
-              occ::dilate(
-                {{3, inside}}, c[0], c[1], c[2], 1, slope.half_length / r, 1);
+            const double                  half = slope.straight_length / 2;
+            gmsh::vectorpair              fused;
+            std::vector<gmsh::vectorpair> fused_origin;
+            occ::fuse(
+              {{3,
+                occ::addCylinder(c[0], c[1] - half, c[2], 0, 2 * half, 0, r)}},
+              {{3, ellipsoid(c[1] + half, 1)}, {3, ellipsoid(c[1] - half, -1)}},
+              fused,
+              fused_origin);
+            AssertThrow(fused.size() == 1, ExcMessage(unexpected));
+            inside = fused[0].second;
           }
         gmsh::vectorpair              cut_mass, pieces;
         std::vector<gmsh::vectorpair> origin;

@@ -34,7 +34,14 @@ namespace fdem
         /** Radius R. */
         sphere,
         /** Radius R, axis along y through the whole width. */
-        cylinder
+        cylinder,
+        /**
+         * A cylinder of radius R along y over the straight length 2 L_0,
+         * closed at both ends by half-ellipsoids with semi-axes R (x and
+         * z) and b (y): a long slide with rounded ends, Baligh & Azzouz
+         * (1975)'s cylinder with ends.
+         */
+        capsule
       };
 
       /** Height H of the slope (m). */
@@ -55,8 +62,10 @@ namespace fdem
       Point<3> centre;
       /** R: radius of the sphere and cylinder, semi-axis in x and z. */
       double radius;
-      /** b: the ellipsoid's semi-axis along y. */
+      /** b: the ellipsoid's (and the capsule's ends') semi-axis along y. */
       double half_length;
+      /** 2 L_0: the capsule's straight length along y (m). */
+      double straight_length = 0;
       /** Element size h near the sliding surface (m). */
       double mesh_size;
       /** Hexahedra or tetrahedra. */
@@ -85,9 +94,12 @@ namespace fdem
       ground(const double x) const;
 
       /**
-       * The quadric's value at @p p: negative inside the surface, zero on
-       * it, ((x - x_c)/R)^2 + ((y - y_c)/b)^2 + ((z - z_c)/R)^2 - 1 (the
-       * y term left out for the cylinder).
+       * The surface's implicit function at @p p: negative inside the
+       * surface, zero on it, ((x - x_c)/R)^2 + (a(y)/b)^2 + ((z - z_c)/R)^2
+       * - 1 with the axial offset a(y) = y - y_c (none for the cylinder;
+       * for the capsule the distance beyond its straight part, signed).
+       * The capsule's is a quadric on each piece, continuous with its
+       * gradient (slope_3d_surface.cc).
        */
       double
       quadric(const Point<3> &p) const;
@@ -96,6 +108,22 @@ namespace fdem
        * there, pointing out of the sliding mass. */
       Tensor<1, 3>
       quadric_gradient(const Point<3> &p) const;
+
+      /**
+       * The point of the surface at the parameters @p s in [0, 1] along y
+       * (pole to pole; for the cylinder, y = s W) and @p phi (the angle
+       * about the axis along y, from +x towards +z).
+       */
+      Point<3>
+      surface_point(const double s, const double phi) const;
+
+      /**
+       * The point of the surface reached from @p p along @p d: p + t d on
+       * the surface with |t| smallest (on the capsule, of the pieces on
+       * which the point lands).
+       */
+      Point<3>
+      along_onto_surface(const Point<3> &p, const Tensor<1, 3> &d) const;
 
       /** Declare the subsection "Slope 3D" (inside "Geometry"). */
       static void
@@ -113,6 +141,10 @@ namespace fdem
        */
       void
       validate() const;
+
+      /** The axial offset a(y) of quadric(). */
+      double
+      axial_offset(const double y) const;
     };
 
     /**
