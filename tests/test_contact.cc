@@ -267,10 +267,10 @@ TEST(PairRows, SlipAlongAHeldTangent)
   for (const unsigned int held : {1u, 2u})
     for (const double sign : {1.0, -1.0})
       {
-        const unsigned int    free = 3 - held;
-        dealii::Tensor<2, 3>  self_flexibility;
-        self_flexibility[0][0]       = 2;
-        self_flexibility[free][free] = 3;
+        const unsigned int   free = 3 - held;
+        dealii::Tensor<2, 3> self_flexibility;
+        self_flexibility[0][0]         = 2;
+        self_flexibility[free][free]   = 3;
         state.slip_direction[free - 1] = sign;
         state.slip_direction[held - 1] = 5.7e-13;
         const contact::PairRows<3> rows =

@@ -52,9 +52,9 @@ namespace fdem
       // direction's column of C, the system has a zero row and a zero
       // column per such pair, and it was a numerical breakdown on the
       // cylinder meshed with tetrahedra (doc/theory.md, "3D").
-      const bool slip_along_held =
-        dim == 3 && state.status == PairStatus::slip &&
-        (held(1) || held(dim - 1));
+      const bool slip_along_held = dim == 3 &&
+                                   state.status == PairStatus::slip &&
+                                   (held(1) || held(dim - 1));
       if (dim == 3 && state.status == PairStatus::slip && !slip_along_held)
         {
           // With d the slip direction of the previous iterate, e the tangent
@@ -88,10 +88,9 @@ namespace fdem
             // f_t = d (c A - mu f_n): the force at the Mohr-Coulomb limit
             // along the slip direction d (in 3D along the free tangent of a
             // pair with the other held, d = +-1 by the sign of the slip).
-            const double d =
-              slip_along_held ?
-                (state.slip_direction[i - 1] < 0 ? -1.0 : 1.0) :
-                state.slip_direction[i - 1];
+            const double d   = slip_along_held ?
+                                 (state.slip_direction[i - 1] < 0 ? -1.0 : 1.0) :
+                                 state.slip_direction[i - 1];
             rows.force[i][i] = 1;
             rows.force[i][0] = d * strength.friction_coefficient;
             rows.value[i]    = d * strength.cohesion_force;
