@@ -247,3 +247,61 @@ TEST(CondensedPair, ForceRowsEliminatedExactly)
           }
     }
 }
+
+TEST(PairRows, SlipAlongAHeldTangent)
+{
+  // A 3D pair on the rollers of a side has a tangent held on both sides
+  // (zero self-flexibility): its force there is zero and it slips along the
+  // other tangent, at the limit by the sign of d. The linearised rows gave
+  // the turning row (1 - alpha) e . f_t - alpha r e . g_t = 0 instead: with
+  // alpha = 1 and d along the free tangent (measured on the cylinder on
+  // tetrahedra: d = (5.7e-13, 1)) a row on the held gap alone, zero in the
+  // mixed system. Every state below must have independent force rows and
+  // no gap row on a held direction.
+  contact::PairStrength strength;
+  strength.friction_coefficient = 0.3;
+  strength.cohesion_force       = 2.5;
+  contact::PairState<3> state;
+  state.status           = contact::PairStatus::slip;
+  state.direction_weight = 1;
+  for (const unsigned int held : {1u, 2u})
+    for (const double sign : {1.0, -1.0})
+      {
+        const unsigned int   free = 3 - held;
+        dealii::Tensor<2, 3> self_flexibility;
+        self_flexibility[0][0]         = 2;
+        self_flexibility[free][free]   = 3;
+        state.slip_direction[free - 1] = sign;
+        state.slip_direction[held - 1] = 5.7e-13;
+        const contact::PairRows<3> rows =
+          contact::pair_rows(state, strength, self_flexibility, 1e-12);
+        EXPECT_EQ(rows.gap[0][0], 1); // g_n = 0
+        EXPECT_EQ(rows.gap[held].norm(), 0);
+        EXPECT_EQ(rows.gap[free].norm(), 0);
+        // f_held = 0.
+        dealii::Tensor<1, 3> unit;
+        unit[held] = 1;
+        EXPECT_EQ(rows.force[held], unit);
+        EXPECT_EQ(rows.value[held], 0);
+        // f_free = d (c A - mu f_n), d = +-1.
+        dealii::Tensor<1, 3> limit;
+        limit[free] = 1;
+        limit[0]    = sign * strength.friction_coefficient;
+        EXPECT_EQ(rows.force[free], limit);
+        EXPECT_EQ(rows.value[free], sign * strength.cohesion_force);
+        EXPECT_EQ(contact::condense_force_rows(rows).n_free, 1u);
+      }
+  // Both tangents held: no tangential force, as a sticking pair there.
+  dealii::Tensor<2, 3> self_flexibility;
+  self_flexibility[0][0] = 2;
+  const contact::PairRows<3> rows =
+    contact::pair_rows(state, strength, self_flexibility, 1e-12);
+  for (unsigned int i = 1; i < 3; ++i)
+    {
+      dealii::Tensor<1, 3> unit;
+      unit[i] = 1;
+      EXPECT_EQ(rows.force[i], unit);
+      EXPECT_EQ(rows.gap[i].norm(), 0);
+      EXPECT_EQ(rows.value[i], 0);
+    }
+}

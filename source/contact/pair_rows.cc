@@ -42,7 +42,20 @@ namespace fdem
       else
         rows.gap[0][0] = 1;
 
-      if (dim == 3 && state.status == PairStatus::slip)
+      // A slipping pair in 3D with a tangent held (on the rollers of a
+      // side, where both blocks are held across it) cannot slip along it:
+      // its force there goes into the supports (f = 0) and the slip lies
+      // along the other tangent, whose limit row follows 2D's below, with d
+      // the sign of the slip along it. The linearised rows would instead tie
+      // the held direction's force to its gap, which is zero identically:
+      // with alpha = 1 the row turning the force vanishes with the held
+      // direction's column of C, the system has a zero row and a zero
+      // column per such pair, and it was a numerical breakdown on the
+      // cylinder meshed with tetrahedra (doc/theory.md, "3D").
+      const bool slip_along_held = dim == 3 &&
+                                   state.status == PairStatus::slip &&
+                                   (held(1) || held(dim - 1));
+      if (dim == 3 && state.status == PairStatus::slip && !slip_along_held)
         {
           // With d the slip direction of the previous iterate, e the tangent
           // normal to it, alpha = s/|z| and r the pair's augmentation, the
@@ -70,11 +83,14 @@ namespace fdem
           return rows;
         }
       for (unsigned int i = 1; i < dim; ++i)
-        if (state.status == PairStatus::slip)
+        if (state.status == PairStatus::slip && !(slip_along_held && held(i)))
           {
             // f_t = d (c A - mu f_n): the force at the Mohr-Coulomb limit
-            // along the slip direction d.
-            const double d   = state.slip_direction[i - 1];
+            // along the slip direction d (in 3D along the free tangent of a
+            // pair with the other held, d = +-1 by the sign of the slip).
+            const double d   = slip_along_held ?
+                                 (state.slip_direction[i - 1] < 0 ? -1.0 : 1.0) :
+                                 state.slip_direction[i - 1];
             rows.force[i][i] = 1;
             rows.force[i][0] = d * strength.friction_coefficient;
             rows.value[i]    = d * strength.cohesion_force;

@@ -46,7 +46,9 @@ namespace fdem
      * @p self_flexibility is the pair's own block of C (local frame); a
      * direction whose self-flexibility is at most @p held_flexibility is held
      * by Dirichlet conditions on both sides: f = 0 there (its force goes
-     * into the supports, one of the equivalent solutions).
+     * into the supports, one of the equivalent solutions); a slipping pair
+     * in 3D with a held tangent slips along the other one, at the limit
+     * with d = +-1 as in 2D.
      */
     template <int dim>
     PairRows<dim>
