@@ -234,8 +234,12 @@ namespace fdem
           block->factorize(iterative && parameters.solver.direct_solver ==
                                           DirectSolverType::mumps_schur ?
                              DirectSolverType::mumps :
-                             parameters.solver.direct_solver);
+                             parameters.solver.direct_solver,
+                           parameters.solver.block_low_rank_tolerance);
         }
+        const std::string statistics = block->factorization_statistics();
+        if (!statistics.empty())
+          log << "  block '" << block->name << "': " << statistics << std::endl;
         // Timed on its own: the cost of one linear solve of the model is the
         // yardstick of the benchmarks (doc/benchmarks.md).
         TimerOutput::Scope scope(timer, "one solve");

@@ -47,17 +47,22 @@ namespace fdem
     }
 
     std::unique_ptr<BlockFactorization>
-    make_block_factorization(const parameters::DirectSolverType type)
+    make_block_factorization(const parameters::DirectSolverType type,
+                             const double block_low_rank_tolerance)
     {
       using parameters::DirectSolverType;
+      Assert(block_low_rank_tolerance == 0 ||
+               type == DirectSolverType::mumps_schur ||
+               type == DirectSolverType::mumps,
+             ExcMessage("Only MUMPS has a block low-rank factorisation."));
       switch (type)
         {
           case DirectSolverType::mumps_schur:
             return std::make_unique<MumpsSchurSolver>(
-              /*keep_schur_complement=*/true);
+              /*keep_schur_complement=*/true, block_low_rank_tolerance);
           case DirectSolverType::mumps:
             return std::make_unique<MumpsSchurSolver>(
-              /*keep_schur_complement=*/false);
+              /*keep_schur_complement=*/false, block_low_rank_tolerance);
           case DirectSolverType::cholmod:
             return std::make_unique<CholmodSolver>();
           case DirectSolverType::amesos_klu:

@@ -108,6 +108,25 @@ namespace fdem
                         "(dimensionless). The forces, and K, carry what is "
                         "left: on prm/paper_slope.prm 1e-8, 1e-6 and 1e-4 "
                         "moved K by 1e-9, 2e-6 and 3e-5 relative to 1e-12.");
+      prm.declare_entry(
+        "Block low-rank tolerance",
+        "0",
+        Patterns::Double(0, 1e-2),
+        "Direct solver = MUMPS_Schur or MUMPS only: MUMPS's block "
+        "low-rank (BLR) factorisation of each block's stiffness "
+        "matrix, with this dropping parameter (MUMPS's CNTL(7), "
+        "relative to MUMPS's scaled matrix, dimensionless): blocks of "
+        "the fronts are stored as products of low rank whose error is "
+        "about this fraction of the matrix, which saves flops on "
+        "large 3D fronts (1e-6: a third of the factorisation time at "
+        "2e5 dofs; no peak memory saved there). The factors, and so the "
+        "flexibility, the forces and K, become approximate at about "
+        "this relative level (on prm/slope_3d.prm 1e-4 moved K by "
+        "1e-7; 1e-2 made a Schur complement indefinite, an error). "
+        "0: full rank, "
+        "exact up to round-off. The Schur complement of the "
+        "interface dofs stays a full-rank dense matrix. See "
+        "doc/scaling.md for when it pays.");
       prm.leave_subsection();
     }
 
@@ -118,7 +137,17 @@ namespace fdem
       direct_solver   = parse_direct_solver_type(prm.get("Direct solver"));
       mixed_system    = prm.get("Mixed system");
       gmres_tolerance = prm.get_double("GMRES tolerance");
+      block_low_rank_tolerance = prm.get_double("Block low-rank tolerance");
       prm.leave_subsection();
+      // Only MUMPS has a low-rank mode: silently ignoring the entry would let
+      // a user believe a run was approximated (or sped up) when it was not.
+      AssertThrow(block_low_rank_tolerance == 0 ||
+                    direct_solver == DirectSolverType::mumps_schur ||
+                    direct_solver == DirectSolverType::mumps,
+                  ExcMessage("Solver/Block low-rank tolerance: MUMPS's block "
+                             "low-rank factorisation needs Solver/Direct "
+                             "solver = MUMPS_Schur or MUMPS, not " +
+                             direct_solver_name(direct_solver) + "."));
     }
 
     void

@@ -96,6 +96,14 @@
                                          both stiffness-dependent, and K and
                                          the stiffness check's two K each
                                          within TOL)
+  run_checks.py block-low-rank EXE CASE.prm TOL
+                                         the case (which sets Solver/Block
+                                         low-rank tolerance) and the same
+                                         case full rank (tolerance 0): both
+                                         complete, their K within TOL
+                                         relative; the low-rank run's log
+                                         reports MUMPS's compression and
+                                         the full-rank run's does not
   run_checks.py undrained-sphere EXE CASE.prm XC,YC,ZC R C GAMMA TOL
                                          certified, and within TOL of the
                                          exact phi = 0 K of the sphere
@@ -502,6 +510,34 @@ def check_reference_factor(exe, prm, reference_prm, tolerance, stiffness=None):
         assert abs(K / K_ref - 1) <= float(tolerance), (key, K, K_ref)
 
 
+def check_block_low_rank(exe, prm, tolerance):
+    """MUMPS's block low-rank factorisation ("Solver/Block low-rank
+    tolerance" set in @p prm) against the full-rank one of the same case:
+    the approximate factors move K by less than @p tolerance relative. The
+    low-rank run's log must show MUMPS's low-rank statistics (its "after
+    low-rank compression" line per block), so that the test compares two
+    different factorisations, not the same one twice."""
+    runs = {}
+    for name, settings in (("low-rank", None),
+                           ("full rank", {"Solver/Block low-rank tolerance": "0"})):
+        with fdem_run.temporary_run(exe, prm, settings=settings) as result:
+            assert result.returncode == 0, result.stderr
+            assert result.summary is not None, "no summary.json"
+            log = open(result.file("log.txt")).read()
+            runs[name] = (result.summary, log)
+    (low, low_log), (full, full_log) = runs["low-rank"], runs["full rank"]
+    compressed = [line.strip() for line in low_log.splitlines()
+                  if "after low-rank compression" in line]
+    print("\n".join(compressed))
+    assert compressed, "the low-rank run's log reports no compression"
+    assert "after low-rank compression" not in full_log, "the full-rank run compressed"
+    assert low["converged"] and full["converged"], (low["certificate"], full["certificate"])
+    K, K_full = low["safety_factor"], full["safety_factor"]
+    print(f"K low-rank {K!r}, full rank {K_full!r}: relative difference "
+          f"{K / K_full - 1:.2e} (tolerance {tolerance})")
+    assert abs(K / K_full - 1) <= float(tolerance), (K, K_full)
+
+
 def check_undrained_sphere(exe, prm, centre, radius, cohesion, unit_weight, tolerance):
     """@p prm, a slope on a sphere with phi = 0, certified and within
     @p tolerance of the exact K of the rigid mass turning about the
@@ -859,6 +895,7 @@ if __name__ == "__main__":
          "plane-strain": check_plane_strain,
          "plane-strain-contact": check_plane_strain_contact,
          "reference-factor": check_reference_factor,
+         "block-low-rank": check_block_low_rank,
          "undrained-sphere": check_undrained_sphere, "turned": check_turned,
          "undrained-ellipsoid": check_undrained_ellipsoid,
          "certified": check_certified, "fe-stress": check_fe_stress,

@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -94,11 +95,27 @@ namespace fdem
       inverse_entries(
         const std::vector<std::pair<types::global_dof_index,
                                     types::global_dof_index>> &entries) const;
+
+      /**
+       * What the back-end reports of its last factorisation (memory, the
+       * low-rank compression), one line for the run's log; empty if it
+       * reports nothing.
+       */
+      virtual std::string
+      statistics() const
+      {
+        return "";
+      }
     };
 
-    /** A new, not yet factorised, back-end of type @p type. */
+    /**
+     * A new, not yet factorised, back-end of type @p type; with
+     * @p block_low_rank_tolerance > 0 MUMPS's block low-rank factorisation
+     * (MUMPS_Schur and MUMPS only; "Solver/Block low-rank tolerance").
+     */
     std::unique_ptr<BlockFactorization>
-    make_block_factorization(const parameters::DirectSolverType type);
+    make_block_factorization(const parameters::DirectSolverType type,
+                             const double block_low_rank_tolerance = 0);
 
     /**
      * Throws naming Solver/Direct solver = @p type if @p matrix lives on more

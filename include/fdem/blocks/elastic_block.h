@@ -121,10 +121,24 @@ namespace fdem
       void
       assemble(const parameters::LoadParameters &loads);
 
-      /** Factorises the assembled K (the second half of
-       * assemble_and_factorize). */
+      /**
+       * Factorises the assembled K (the second half of
+       * assemble_and_factorize); with @p block_low_rank_tolerance > 0 by
+       * MUMPS's block low-rank factorisation (MUMPS_Schur, MUMPS only).
+       */
       void
-      factorize(const parameters::DirectSolverType solver_type);
+      factorize(const parameters::DirectSolverType solver_type,
+                const double block_low_rank_tolerance = 0);
+
+      /**
+       * What the back-end reports of the factorisation of K (MUMPS: the
+       * factors' size, flops and memory), one line; empty if nothing.
+       */
+      std::string
+      factorization_statistics() const
+      {
+        return factorization != nullptr ? factorization->statistics() : "";
+      }
 
       /**
        * Displacement u = K^{-1} (F_nodal) for a nodal force vector on this

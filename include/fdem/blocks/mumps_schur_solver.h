@@ -5,6 +5,7 @@
 #include <fdem/blocks/block_factorization.h>
 
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -44,8 +45,13 @@ namespace fdem
     class MumpsSchurSolver : public BlockFactorization
     {
     public:
-      /** @p keep_schur_complement: MUMPS_Schur (true) or MUMPS (false). */
-      explicit MumpsSchurSolver(const bool keep_schur_complement);
+      /**
+       * @p keep_schur_complement: MUMPS_Schur (true) or MUMPS (false).
+       * @p block_low_rank_tolerance > 0: MUMPS's block low-rank
+       * factorisation with that dropping parameter (CNTL(7)).
+       */
+      explicit MumpsSchurSolver(const bool   keep_schur_complement,
+                                const double block_low_rank_tolerance = 0);
       ~MumpsSchurSolver() override;
       MumpsSchurSolver(const MumpsSchurSolver &) = delete;
       MumpsSchurSolver &
@@ -111,8 +117,19 @@ namespace fdem
           std::pair<types::global_dof_index, types::global_dof_index>> &entries)
         const override;
 
+      /**
+       * MUMPS's memory (INFOG(16), (21), (22)) and, in low-rank mode, the
+       * factors' entries full rank and compressed (INFOG(29), (35)) and the
+       * flops (RINFOG(3), (14)), one line.
+       */
+      std::string
+      statistics() const override;
+
     private:
-      const bool keep_schur_complement;
+      const bool   keep_schur_complement;
+      const double block_low_rank_tolerance;
+      /** statistics() of the last factorisation, without "MUMPS: ". */
+      std::string report;
       struct Data;
       std::unique_ptr<Data>                 data;
       const TrilinosWrappers::SparseMatrix *matrix = nullptr;

@@ -245,6 +245,11 @@ namespace fdem
       std::string mixed_system = "dense";
       /** Relative tolerance of GMRES for the iterative mixed system. */
       double gmres_tolerance = 1e-12;
+      /**
+       * MUMPS's block low-rank dropping parameter CNTL(7) for the blocks'
+       * factorisations (MUMPS_Schur, MUMPS); 0: full rank.
+       */
+      double block_low_rank_tolerance = 0;
     };
 
     /** What the run writes: subsection "Output". */
