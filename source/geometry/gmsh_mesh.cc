@@ -519,5 +519,39 @@ namespace fdem
           structdim, gmsh::model::addPhysicalGroup(structdim, entities), name);
     }
 
+
+
+    void
+    group_layer_pieces(
+      const int                                            structdim,
+      const std::vector<std::vector<std::pair<int, int>>> &origin,
+      const std::size_t                                    n_objects,
+      const std::vector<std::string>                      &layers,
+      const std::set<int>                                 &inside,
+      const std::string                                   &message)
+    {
+      std::map<std::string, std::vector<int>> by_material;
+      gmsh::vectorpair                        outside;
+      for (unsigned int k = 0; k < layers.size(); ++k)
+        for (const auto &piece : origin[n_objects + k])
+          if (piece.first == structdim)
+            {
+              if (inside.count(piece.second) == 1)
+                by_material[layers[k]].push_back(piece.second);
+              else
+                outside.push_back(piece);
+            }
+      GmshSession::run(message, [&]() {
+        gmsh::model::occ::remove(outside, true);
+        gmsh::model::occ::synchronize();
+        for (const std::string &name : layers)
+          if (by_material.count(name) == 1)
+            {
+              add_physical_group(structdim, by_material[name], name);
+              by_material.erase(name);
+            }
+      });
+    }
+
   } // namespace geometry
 } // namespace fdem

@@ -5,6 +5,7 @@
 #include <fdem/geometry/mesh_description.h>
 
 #include <functional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -164,5 +165,24 @@ namespace fdem
     add_physical_group(const int               structdim,
                        const std::vector<int> &entities,
                        const std::string      &name);
+
+    /**
+     * After an OpenCASCADE fragment of a model's pieces (the first
+     * @p n_objects inputs) with one tool per soil layer (input
+     * n_objects + k for layer k of @p layers, a material name each):
+     * the layer's pieces of dimension @p structdim that are pieces of the
+     * model (@p inside) become one physical group per material (a material
+     * named twice gets one), the rest of the tools is removed. @p origin is
+     * the fragment's map of inputs to pieces; @p message names the entry in
+     * Gmsh's errors. Synchronises the model.
+     */
+    void
+    group_layer_pieces(
+      const int                                            structdim,
+      const std::vector<std::vector<std::pair<int, int>>> &origin,
+      const std::size_t                                    n_objects,
+      const std::vector<std::string>                      &layers,
+      const std::set<int>                                 &inside,
+      const std::string                                   &message);
   } // namespace geometry
 } // namespace fdem

@@ -12,6 +12,30 @@ namespace fdem
   {
     namespace gmsh_3d
     {
+      int
+      add_extruded_polygon(const std::vector<Point<2>> &outline,
+                           const double                 y0,
+                           const double                 length)
+      {
+        namespace occ = gmsh::model::occ;
+        std::vector<int> points, lines;
+        for (const Point<2> &p : outline)
+          points.push_back(occ::addPoint(p[0], y0, p[1]));
+        for (unsigned int i = 0; i < points.size(); ++i)
+          lines.push_back(
+            occ::addLine(points[i], points[(i + 1) % points.size()]));
+        const int face = occ::addPlaneSurface({occ::addCurveLoop(lines)});
+        gmsh::vectorpair extruded;
+        occ::extrude({{2, face}}, 0, length, 0, extruded);
+        for (const auto &dim_tag : extruded)
+          if (dim_tag.first == 3)
+            return dim_tag.second;
+        AssertThrow(false, ExcInternalError());
+        return 0;
+      }
+
+
+
       void
       mesh_near_surfaces(const std::vector<int> &surfaces,
                          const double            near,

@@ -372,27 +372,16 @@ namespace fdem
       std::vector<int> foundation;
       GmshSession::run(name + ": Gmsh could not build the model", [&]() {
         // The section in the plane y = 0, extruded along y.
-        std::vector<int> points;
-        for (const auto &[x, z] :
-             std::vector<std::pair<double, double>>{{0, z_base},
-                                                    {x_end, z_base},
-                                                    {x_end, z_top},
-                                                    {x_crest, z_top},
-                                                    {x_toe, z_toe},
-                                                    {0, z_toe}})
-          points.push_back(occ::addPoint(x, 0, z));
-        std::vector<int> lines;
-        for (unsigned int i = 0; i < points.size(); ++i)
-          lines.push_back(
-            occ::addLine(points[i], points[(i + 1) % points.size()]));
-        const int section = occ::addPlaneSurface({occ::addCurveLoop(lines)});
-        gmsh::vectorpair extruded;
-        occ::extrude({{2, section}}, 0, w, 0, extruded);
-        gmsh::vectorpair slope_solid;
-        for (const auto &dim_tag : extruded)
-          if (dim_tag.first == 3)
-            slope_solid.push_back(dim_tag);
-        AssertThrow(slope_solid.size() == 1, ExcMessage(unexpected));
+        const gmsh::vectorpair slope_solid = {
+          {3,
+           gmsh_3d::add_extruded_polygon({Point<2>(0, z_base),
+                                          Point<2>(x_end, z_base),
+                                          Point<2>(x_end, z_top),
+                                          Point<2>(x_crest, z_top),
+                                          Point<2>(x_toe, z_toe),
+                                          Point<2>(0, z_toe)},
+                                         0,
+                                         w)}};
 
         // The solid inside the sliding surface. The capsule's is its
         // straight cylinder fused with a half-ellipsoid on each end disk:

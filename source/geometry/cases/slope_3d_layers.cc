@@ -7,6 +7,7 @@
 // per layer (OpenCASCADE fragment), so that a piece's layer is the slab it
 // came from, with no point-in-region test.
 
+#include <fdem/geometry/cases/gmsh_3d.h>
 #include <fdem/geometry/cases/slope_3d.h>
 #include <fdem/geometry/gmsh_mesh.h>
 
@@ -19,35 +20,6 @@ namespace fdem
 {
   namespace geometry
   {
-    namespace
-    {
-      /**
-       * A slab: the polygon @p outline of the section (x, z) at y = @p y0,
-       * extruded by @p length along y. Returns its volume's tag.
-       */
-      int
-      add_slab(const std::vector<Point<2>> &outline,
-               const double                 y0,
-               const double                 length)
-      {
-        namespace occ = gmsh::model::occ;
-        std::vector<int> points, lines;
-        for (const Point<2> &p : outline)
-          points.push_back(occ::addPoint(p[0], y0, p[1]));
-        for (unsigned int i = 0; i < points.size(); ++i)
-          lines.push_back(
-            occ::addLine(points[i], points[(i + 1) % points.size()]));
-        const int face = occ::addPlaneSurface({occ::addCurveLoop(lines)});
-        gmsh::vectorpair extruded;
-        occ::extrude({{2, face}}, 0, length, 0, extruded);
-        for (const auto &dim_tag : extruded)
-          if (dim_tag.first == 3)
-            return dim_tag.second;
-        AssertThrow(false, ExcInternalError());
-        return 0;
-      }
-    } // namespace
-
     void
     split_into_layers(const Slope3D                         &slope,
                       const std::vector<std::vector<int> *> &volume_groups)
@@ -94,8 +66,9 @@ namespace fdem
             // upper line right to left.
             std::vector<Point<2>> outline = lines[k + 1];
             outline.insert(outline.end(), lines[k].rbegin(), lines[k].rend());
-            tools.emplace_back(
-              3, add_slab(outline, -margin, slope.width + 2 * margin));
+            tools.emplace_back(3,
+                               gmsh_3d::add_extruded_polygon(
+                                 outline, -margin, slope.width + 2 * margin));
           }
         for (const auto *group : volume_groups)
           for (const int v : *group)
@@ -122,27 +95,8 @@ namespace fdem
         }
       // Pieces of the layers inside the model, by material; the rest of the
       // slabs is removed.
-      std::map<std::string, std::vector<int>> by_material;
-      gmsh::vectorpair                        outside;
-      for (unsigned int k = 0; k < slope.layers.size(); ++k)
-        for (const auto &piece : origin[objects.size() + k])
-          if (piece.first == 3)
-            {
-              if (inside.count(piece.second) == 1)
-                by_material[slope.layers[k]].push_back(piece.second);
-              else
-                outside.push_back(piece);
-            }
-      GmshSession::run(message, [&]() {
-        gmsh::model::occ::remove(outside, true);
-        gmsh::model::occ::synchronize();
-        for (const std::string &name : slope.layers)
-          if (by_material.count(name) == 1)
-            {
-              add_physical_group(3, by_material[name], name);
-              by_material.erase(name);
-            }
-      });
+      group_layer_pieces(
+        3, origin, objects.size(), slope.layers, inside, message);
     }
   } // namespace geometry
 } // namespace fdem

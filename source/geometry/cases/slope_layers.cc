@@ -257,29 +257,13 @@ namespace fdem
         }
       // Pieces of the layers inside the model, by material; the rest of the
       // strips is removed.
-      std::map<std::string, std::vector<int>> by_material;
-      gmsh::vectorpair                        outside;
-      for (unsigned int k = 0; k < slope.layers.size(); ++k)
-        for (const auto &piece : origin[objects.size() + k])
-          if (piece.first == 2)
-            {
-              if (inside.count(piece.second) == 1)
-                by_material[slope.layers[k]].push_back(piece.second);
-              else
-                outside.push_back(piece);
-            }
-      GmshSession::run(
-        "Geometry/Slope/Layer boundaries: Gmsh could not split the model",
-        [&]() {
-          gmsh::model::occ::remove(outside, true);
-          gmsh::model::occ::synchronize();
-        });
-      for (const std::string &name : slope.layers)
-        if (by_material.count(name) == 1)
-          {
-            add_physical_group(2, by_material[name], name);
-            by_material.erase(name);
-          }
+      group_layer_pieces(
+        2,
+        origin,
+        objects.size(),
+        slope.layers,
+        inside,
+        "Geometry/Slope/Layer boundaries: Gmsh could not split the model");
     }
   } // namespace geometry
 } // namespace fdem

@@ -26,6 +26,16 @@ namespace fdem
        * and faces: a curved surface's are moved onto it by the generator
        * (move_vertices_keeping_cells_valid()). Needs an active GmshSession.
        */
+      /**
+       * Adds to the current Gmsh model (OpenCASCADE) the prism of the
+       * polygon @p outline, points (x, z) in the plane y = @p y0, extruded
+       * by @p length along y; returns its volume's tag.
+       */
+      int
+      add_extruded_polygon(const std::vector<Point<2>> &outline,
+                           const double                 y0,
+                           const double                 length);
+
       void
       mesh_near_surfaces(const std::vector<int> &surfaces,
                          const double            near,
