@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/newmark.h>
+#include <fdem/geometry/cases/case_input.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -17,37 +18,6 @@ namespace fdem
   {
     using namespace dealii;
 
-    namespace
-    {
-      /** The fields of a line split at commas, semicolons and blanks. */
-      std::vector<std::string>
-      fields_of(const std::string &line)
-      {
-        std::vector<std::string> fields;
-        std::string              field;
-        for (const char c : line)
-          if (c == ',' || c == ';' || c == ' ' || c == '\t' || c == '\r')
-            {
-              if (!field.empty())
-                fields.push_back(field);
-              field.clear();
-            }
-          else
-            field += c;
-        if (!field.empty())
-          fields.push_back(field);
-        return fields;
-      }
-
-      bool
-      parse_number(const std::string &text, double &value)
-      {
-        char *end = nullptr;
-        errno     = 0;
-        value     = std::strtod(text.c_str(), &end);
-        return end != text.c_str() && *end == '\0' && errno == 0;
-      }
-    } // namespace
 
     AccelerationRecord
     read_acceleration_record(const std::string &file, const std::string &unit)
@@ -67,22 +37,23 @@ namespace fdem
           const std::size_t comment = line.find('#');
           if (comment != std::string::npos)
             line.erase(comment);
-          const std::vector<std::string> fields = fields_of(line);
+          const std::vector<std::string> fields =
+            geometry::case_input::split_fields(line);
           if (fields.empty())
             continue;
           double     t = 0, a = 0;
-          const bool numbers = fields.size() == 2 &&
-                               parse_number(fields[0], t) &&
-                               parse_number(fields[1], a);
+          const bool numbers =
+            fields.size() == 2 &&
+            geometry::case_input::parse_number(fields[0], t) &&
+            geometry::case_input::parse_number(fields[1], a);
           if (!numbers && header_allowed)
             {
               // A header: the first line, if none of its fields is a number.
               double ignored;
-              if (std::none_of(fields.begin(),
-                               fields.end(),
-                               [&](const std::string &f) {
-                                 return parse_number(f, ignored);
-                               }))
+              if (std::none_of(
+                    fields.begin(), fields.end(), [&](const std::string &f) {
+                      return geometry::case_input::parse_number(f, ignored);
+                    }))
                 {
                   header_allowed = false;
                   continue;

@@ -286,7 +286,7 @@ namespace fdem
           for (unsigned int j = 0; j < n; ++j)
             {
               const Point<3> centre = point(i + 0.5, j + 0.5);
-              below[i * n + j]      = centre[2] < slope.ground(centre[0]);
+              below[i * n + j] = centre[2] < slope.ground(centre[0], centre[1]);
               if (below[i * n + j])
                 area +=
                   0.5 * cross_product_3d(point(i + 1, j + 1) - point(i, j),
@@ -318,12 +318,7 @@ namespace fdem
         // surface.
         const bool   hexahedra = slope.element_shape == ElementShape::hypercube;
         const double near      = (hexahedra ? 2 : 1) * slope.mesh_size;
-        const double volume =
-          slope.length() * slope.width *
-          (slope.base_depth +
-           slope.slope_height *
-             (slope.length() - 0.5 * (slope.crest_x() + slope.toe_length)) /
-             slope.length());
+        const double volume    = slope.model_volume();
         const double tetrahedra = 8.5 * volume / (near * near * near);
         // The pairs: Gmsh's triangles of edge s on the sliding surface have
         // 2 / (sqrt(3) s^2) = 1.155 vertices per s^2 inside, and about one

@@ -122,7 +122,8 @@ namespace fdem
 
 
     void
-    GeometryParameters::parse_parameters(ParameterHandler &prm)
+    GeometryParameters::parse_parameters(ParameterHandler  &prm,
+                                         const std::string &prm_directory)
     {
       prm.enter_subsection("Geometry");
       {
@@ -182,6 +183,7 @@ namespace fdem
             hertz_sphere.validate();
             break;
           case Source::slope_3d:
+            slope_3d.load_terrain(prm_directory);
             slope_3d.validate();
             break;
         }

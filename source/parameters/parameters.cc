@@ -165,7 +165,7 @@ namespace fdem
     {
       dimension = prm.get_integer("Dimension");
       fe_degree = prm.get_integer("Finite element degree");
-      geometry.parse_parameters(prm);
+      geometry.parse_parameters(prm, prm_directory);
       loads.parse_parameters(prm, dimension);
       contact.parse_parameters(prm);
       safety_factor.parse_parameters(prm);
@@ -316,12 +316,11 @@ namespace fdem
                                      parameters.interface_names,
                                      parameters.material_names);
       parse_file(prm, filename, false);
-      parameters.parse_parameters(prm);
-
       const std::filesystem::path path(filename);
       parameters.case_name = path.stem().string();
       parameters.prm_directory =
         path.has_parent_path() ? path.parent_path().string() : ".";
+      parameters.parse_parameters(prm);
       if (expanded != nullptr)
         {
           std::ostringstream out;

@@ -11,6 +11,8 @@
 
 #include <fdem/geometry/cases/slope_3d.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 using namespace geometry_test;
@@ -53,10 +55,11 @@ namespace
     const double r = s.radius, b = s.half_length;
     const double x0 = s.centre[0] - r, dx = 2 * r / n;
     // The capsule's straight part lies between its ends.
-    const double half   = s.straight_length / 2;
-    const double y0     = cylinder ? 0 : s.centre[1] - b - half;
-    const double dy     = cylinder ? s.width / n : 2 * (b + half) / n;
-    double       volume = 0, area = 0;
+    const double half = s.straight_length / 2;
+    const double y0   = cylinder ? s.y_min() : s.centre[1] - b - half;
+    const double dy =
+      cylinder ? (s.y_max() - s.y_min()) / n : 2 * (b + half) / n;
+    double volume = 0, area = 0;
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         {
@@ -67,7 +70,7 @@ namespace
           if (q <= 0)
             continue;
           const double z      = s.centre[2] - r * std::sqrt(q);
-          const double ground = s.ground(x);
+          const double ground = s.ground(x, y);
           if (z >= ground)
             continue;
           volume +=
@@ -240,4 +243,80 @@ TEST(Slope3D, SurfacesThatCutNoSlopeAreRejected)
     [] { parse(slope_entries("ellipsoid", "42, 20, 38", 6, 15, 40, 2)); },
     "Geometry/Slope 3D/Surface centre: the sliding surface does not daylight "
     "on the slope face");
+}
+
+
+
+// A sphere under the uneven terrain of three_d.undrained_sphere_terrain
+// (tests/three_d/data/uneven_terrain.csv), meshed with tetrahedra: every
+// vertex of the ground on the terrain's bilinear surface (the ruled faces
+// between the grid's sections are that surface), the sides at the grid's
+// edges, the mass's volume and the surface's area against their integrals
+// over the terrain (the facets inscribed in the sphere: within 2 %, as the
+// straight slope's).
+TEST(Slope3D, TerrainGroundAndMassMatchTheGrid)
+{
+  std::string entries =
+    slope_entries("sphere", "19.61, 20, 46.32", 21.32, 0, 40, 2);
+  entries.insert(entries.rfind("end"),
+                 "set Element shape = tetrahedron\nset Terrain file = " +
+                   std::string(FDEM_GEOMETRY_TEST_DATA) +
+                   "/../../three_d/data/uneven_terrain.csv\n");
+  const Parameters         geometry = parse(entries);
+  const geometry::Slope3D &s        = geometry.slope_3d;
+  EXPECT_EQ(s.x_min(), 0);
+  EXPECT_EQ(s.x_max(), 50);
+  EXPECT_EQ(s.y_max(), 40);
+  const MeshDescription<3> mesh  = geometry::make_slope_3d_mesh(s);
+  double                   worst = 0;
+  for (const auto &face : faces_of(mesh, "ground"))
+    for (const unsigned int v : face.vertices)
+      {
+        const Point<3> &p = mesh.vertices[v];
+        worst = std::max(worst, std::abs(p[2] - s.ground(p[0], p[1])));
+      }
+  std::cout << "ground vertices off the terrain by up to " << worst << " m\n";
+  EXPECT_LT(worst, 1e-6);
+  for (const auto &face : faces_of(mesh, "sides"))
+    for (const unsigned int v : face.vertices)
+      {
+        const Point<3> &p        = mesh.vertices[v];
+        const double    off_side = std::min({std::abs(p[0]),
+                                             std::abs(p[0] - 50),
+                                             std::abs(p[1]),
+                                             std::abs(p[1] - 40)});
+        EXPECT_LT(off_side, 1e-6) << p;
+      }
+  double area = 0;
+  for (const auto &face : faces_of(mesh, "sliding surface"))
+    area += 0.5 * cross_product_3d(mesh.vertices[face.vertices[1]] -
+                                     mesh.vertices[face.vertices[0]],
+                                   mesh.vertices[face.vertices[2]] -
+                                     mesh.vertices[face.vertices[0]])
+                    .norm();
+  const auto [exact_volume, exact_area] = exact_volume_and_area(s, 2000);
+  const double volume =
+    block_area(mesh, index_of(mesh.block_names, "sliding mass"));
+  std::cout << "sliding mass " << volume << " (exact " << exact_volume
+            << "), surface " << area << " (exact " << exact_area << ")\n";
+  EXPECT_NEAR(volume / exact_volume, 1, 0.02);
+  EXPECT_NEAR(area / exact_area, 1, 0.02);
+}
+
+
+
+// A terrain whose grid is narrower than the sphere's part below the
+// ground: the sliding surface leaves the model at its sides.
+TEST(Slope3D, TerrainTooNarrowForTheSurfaceIsRejected)
+{
+  const std::string name = temporary_file(".csv");
+  std::ofstream(name) << "0 10 25\n10 10 25\n30 10 35\n50 10 35\n"
+                         "0 30 25\n10 30 25\n30 30 35\n50 30 35\n";
+  std::string entries =
+    slope_entries("sphere", "19.61, 20, 46.32", 21.32, 0, 40, 2);
+  entries.insert(entries.rfind("end"), "set Terrain file = " + name + "\n");
+  expect_error([&] { parse(entries); },
+               "Geometry/Slope 3D/Surface centre: the sliding surface leaves "
+               "the model");
+  std::filesystem::remove(name);
 }

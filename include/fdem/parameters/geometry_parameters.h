@@ -98,9 +98,13 @@ namespace fdem
       static void
       declare_parameters(ParameterHandler &prm);
 
-      /** Read and check the subsection "Geometry"; throws on invalid data. */
+      /**
+       * Read and check the subsection "Geometry"; throws on invalid data.
+       * Files it names (a terrain) are read relative to @p prm_directory.
+       */
       void
-      parse_parameters(ParameterHandler &prm);
+      parse_parameters(ParameterHandler  &prm,
+                       const std::string &prm_directory = ".");
 
       /**
        * The mesh file to open: a relative name is taken relative to the

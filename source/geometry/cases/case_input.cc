@@ -9,7 +9,9 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <set>
 
@@ -207,6 +209,38 @@ namespace fdem
             if (p[0] > x_min && p[0] < x_max)
               x.insert(p[0]);
         return {x.begin(), x.end()};
+      }
+
+
+
+      std::vector<std::string>
+      split_fields(const std::string &line)
+      {
+        std::vector<std::string> fields;
+        std::string              field;
+        for (const char c : line)
+          if (c == ',' || c == ';' || c == ' ' || c == '\t' || c == '\r')
+            {
+              if (!field.empty())
+                fields.push_back(field);
+              field.clear();
+            }
+          else
+            field += c;
+        if (!field.empty())
+          fields.push_back(field);
+        return fields;
+      }
+
+
+
+      bool
+      parse_number(const std::string &text, double &value)
+      {
+        char *end = nullptr;
+        errno     = 0;
+        value     = std::strtod(text.c_str(), &end);
+        return end != text.c_str() && *end == '\0' && errno == 0;
       }
     } // namespace case_input
   }   // namespace geometry

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -124,6 +125,21 @@ namespace fdem
           "or below the ground, above the base) and strictly below the "
           "boundary before it; each runs unchanged along y.");
         prm.declare_entry(
+          "Terrain file",
+          "",
+          Patterns::Anything(),
+          "A ground surface from a grid of elevations instead of the "
+          "straight slope: a text file of lines 'x, y, z' (m; commas, "
+          "semicolons or blanks; '#' comments; an optional header line), one "
+          "per point of a rectangular grid (every x of the file with every "
+          "y), in any order; relative names from the .prm file's directory. "
+          "The ground is bilinear on each grid cell; the model spans the "
+          "grid in x and y (its sides there), with its base Base depth below "
+          "the lowest point; Slope height, Slope angle, Toe length, Crest "
+          "length, Toe elevation and Width are not used. Cells much smaller "
+          "than Mesh size make the mesh finer there. Empty: the straight "
+          "slope.");
+        prm.declare_entry(
           "Element shape",
           "hexahedron",
           Patterns::Selection("hexahedron|tetrahedron"),
@@ -166,38 +182,22 @@ namespace fdem
           prm.get("Layer boundaries"), "Geometry/Slope 3D/Layer boundaries");
         if (surface == Surface::sphere)
           half_length = radius;
+        terrain_file = prm.get("Terrain file");
+        terrain      = TerrainGrid();
       }
       prm.leave_subsection();
     }
 
 
 
-    double
-    Slope3D::crest_x() const
+    void
+    Slope3D::load_terrain(const std::string &prm_directory)
     {
-      return toe_length +
-             slope_height / std::tan(slope_angle * numbers::PI / 180);
-    }
-
-
-
-    double
-    Slope3D::length() const
-    {
-      return crest_x() + crest_length;
-    }
-
-
-
-    double
-    Slope3D::ground(const double x) const
-    {
-      const double x_toe = toe_length, x_crest = crest_x();
-      if (x <= x_toe)
-        return toe_elevation;
-      if (x >= x_crest)
-        return toe_elevation + slope_height;
-      return toe_elevation + slope_height * (x - x_toe) / (x_crest - x_toe);
+      terrain = TerrainGrid();
+      if (!terrain_file.empty())
+        terrain = terrain_grid_from_file(
+          (std::filesystem::path(prm_directory) / terrain_file).string(),
+          "Geometry/Slope 3D/Terrain file");
     }
 
 
@@ -220,14 +220,10 @@ namespace fdem
       case_input::require(surface != Surface::capsule || straight_length > 0,
                           path + "Surface straight length: must be positive "
                                  "for a capsule (zero is the ellipsoid).");
-      const double z_top = toe_elevation + slope_height;
       case_input::validate_layers(layers,
                                   layer_boundaries,
-                                  {Point<2>(0, toe_elevation),
-                                   Point<2>(toe_length, toe_elevation),
-                                   Point<2>(crest_x(), z_top),
-                                   Point<2>(length(), z_top)},
-                                  toe_elevation - base_depth,
+                                  ground_profile(),
+                                  base_elevation(),
                                   "Geometry/Slope 3D");
 
       // Points of the surface 1/720 of a turn apart (in the two angles of
@@ -235,30 +231,31 @@ namespace fdem
       // along the capsule: the part below the ground must stay inside the
       // model, with a margin of 1e-3 of its size so that OpenCASCADE meets
       // no tangent faces. The central section is at s = 1/2.
-      const double margin =
-        1e-3 * (length() + width + base_depth + slope_height);
-      const double       z_base   = toe_elevation - base_depth;
-      const unsigned int n        = 720;
+      const double margin  = 1e-3 * (x_max() - x_min() + y_max() - y_min() +
+                                    top_elevation() - base_elevation());
+      const double z_base  = base_elevation();
+      const unsigned int n = 720;
       const bool         cylinder = surface == Surface::cylinder;
       const unsigned int n_s      = surface == Surface::capsule ? 3 * n / 4 :
                                     cylinder                    ? 0 :
                                                                   n / 2;
       bool               below = false, above = false, leaves = false;
-      double             x_low = length(), x_high = 0; // central section
+      double             x_low = x_max(), x_high = x_min(); // central section
       for (unsigned int i = 0; i <= n_s; ++i)
         for (unsigned int j = 0; j < n; ++j)
           {
             const Point<3> p = surface_point(cylinder ? 0.5 : 1. * i / n_s,
                                              2 * numbers::PI * j / n);
-            if (p[2] >= ground(p[0]))
+            if (p[2] >= ground(p[0], p[1]))
               {
                 above = true;
                 continue;
               }
             below  = true;
-            leaves = leaves || p[0] < margin || p[0] > length() - margin ||
-                     p[2] < z_base + margin ||
-                     (!cylinder && (p[1] < margin || p[1] > width - margin));
+            leaves = leaves || p[0] < x_min() + margin ||
+                     p[0] > x_max() - margin || p[2] < z_base + margin ||
+                     (!cylinder &&
+                      (p[1] < y_min() + margin || p[1] > y_max() - margin));
             if (2 * i == n_s || cylinder)
               {
                 x_low  = std::min(x_low, p[0]);
@@ -275,12 +272,17 @@ namespace fdem
                "the ground (it must stay inside 0 < x < L, 0 < y < Width "
                "and above the base; Surface radius and Surface half length "
                "too).");
+      // A terrain has no slope face: only that the surface cuts it.
       case_input::require(
-        x_low < crest_x() && x_high > toe_length,
+        !terrain.empty() || (x_low < crest_x() && x_high > toe_length),
         path + "Surface centre: the sliding surface does not daylight on "
                "the slope face (its central section must cut the ground "
                "between the toe and the crest edge).");
-      case_input::require(!cylinder || centre[2] > ground(centre[0]),
+      bool axis_above = true;
+      for (const double y :
+           terrain.empty() ? std::vector<double>{0} : terrain.y)
+        axis_above = axis_above && centre[2] > ground(centre[0], y);
+      case_input::require(!cylinder || axis_above,
                           path + "Surface centre: a cylinder's axis must lie "
                                  "above the ground.");
     }
@@ -316,8 +318,6 @@ namespace fdem
         };
         const std::vector<bool> on_surface = vertices_of("sliding surface");
         const std::vector<bool> on_ground  = vertices_of("ground");
-        const double            rise =
-          slope.slope_height / (slope.crest_x() - slope.toe_length);
         std::vector<std::pair<unsigned int, Point<3>>> targets;
         for (unsigned int v = 0; v < mesh.vertices.size(); ++v)
           if (on_surface[v])
@@ -326,12 +326,11 @@ namespace fdem
               Tensor<1, 3>    d = slope.quadric_gradient(p);
               if (on_ground[v])
                 {
-                  // The ground's plane at p: z = z_0 + s x.
-                  const double s =
-                    (p[0] > slope.toe_length && p[0] < slope.crest_x()) ? rise :
-                                                                          0;
-                  Tensor<1, 3> n;
-                  n[0] = -s;
+                  // The ground's plane at p: z = z_0 + g . (x, y).
+                  const Tensor<1, 2> g = slope.ground_gradient(p[0], p[1]);
+                  Tensor<1, 3>       n;
+                  n[0] = -g[0];
+                  n[1] = -g[1];
                   n[2] = 1;
                   n /= n.norm();
                   d -= (d * n) * n;
@@ -356,13 +355,11 @@ namespace fdem
       const std::string unexpected =
         name + ": OpenCASCADE did not cut the sliding mass out of the slope "
                "as expected; try a slightly different sliding surface.";
-      const double x_toe = slope.toe_length, x_crest = slope.crest_x();
-      const double x_end = slope.length(), w = slope.width;
-      const double z_toe  = slope.toe_elevation;
-      const double z_top  = z_toe + slope.slope_height;
-      const double z_base = z_toe - slope.base_depth;
+      const double x_0 = slope.x_min(), x_end = slope.x_max();
+      const double y_0 = slope.y_min(), y_end = slope.y_max();
+      const double z_base = slope.base_elevation();
       const double tolerance =
-        1e-7 * (x_end + w + slope.base_depth + slope.slope_height);
+        1e-7 * (x_end - x_0 + y_end - y_0 + slope.top_elevation() - z_base);
       const Point<3> &c = slope.centre;
       const double    r = slope.radius;
 
@@ -371,17 +368,7 @@ namespace fdem
       int              mass = 0;
       std::vector<int> foundation;
       GmshSession::run(name + ": Gmsh could not build the model", [&]() {
-        // The section in the plane y = 0, extruded along y.
-        const gmsh::vectorpair slope_solid = {
-          {3,
-           gmsh_3d::add_extruded_polygon({Point<2>(0, z_base),
-                                          Point<2>(x_end, z_base),
-                                          Point<2>(x_end, z_top),
-                                          Point<2>(x_crest, z_top),
-                                          Point<2>(x_toe, z_toe),
-                                          Point<2>(0, z_toe)},
-                                         0,
-                                         w)}};
+        const gmsh::vectorpair slope_solid = {{3, add_slope_3d_solid(slope)}};
 
         // The solid inside the sliding surface. The capsule's is its
         // straight cylinder fused with a half-ellipsoid on each end disk:
@@ -401,7 +388,8 @@ namespace fdem
         };
         int inside = 0;
         if (slope.surface == Slope3D::Surface::cylinder)
-          inside = occ::addCylinder(c[0], -w, c[2], 0, 3 * w, 0, r);
+          inside = occ::addCylinder(
+            c[0], 2 * y_0 - y_end, c[2], 0, 3 * (y_end - y_0), 0, r);
         else if (slope.surface == Slope3D::Surface::sphere)
           inside = occ::addSphere(c[0], c[1], c[2], r);
         else if (slope.surface == Slope3D::Surface::ellipsoid)
@@ -475,8 +463,8 @@ namespace fdem
               continue;
             else if (at(z0, z1, z_base))
               base.push_back(face);
-            else if (at(x0, x1, 0) || at(x0, x1, x_end) || at(y0, y1, 0) ||
-                     at(y0, y1, w))
+            else if (at(x0, x1, x_0) || at(x0, x1, x_end) || at(y0, y1, y_0) ||
+                     at(y0, y1, y_end))
               sides.push_back(face);
             else
               ground.push_back(face);

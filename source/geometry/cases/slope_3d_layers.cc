@@ -26,33 +26,34 @@ namespace fdem
     {
       if (slope.layers.empty())
         return;
-      const double x_max  = slope.length();
-      const double z_top  = slope.toe_elevation + slope.slope_height;
-      const double z_base = slope.toe_elevation - slope.base_depth;
+      const double x_min = slope.x_min(), x_max = slope.x_max();
+      const double y_min = slope.y_min(), y_max = slope.y_max();
+      const double z_top  = slope.top_elevation();
+      const double z_base = slope.base_elevation();
       // Slabs reach well beyond the model, so that it lies inside their
       // union; the parts outside are removed afterwards.
-      const double margin = x_max + slope.width + z_top - z_base;
+      const double margin = x_max - x_min + y_max - y_min + z_top - z_base;
       std::vector<std::vector<Point<2>>> lines;
-      lines.push_back({Point<2>(-margin, z_top + margin),
+      lines.push_back({Point<2>(x_min - margin, z_top + margin),
                        Point<2>(x_max + margin, z_top + margin)});
       for (const auto &boundary : slope.layer_boundaries)
         {
-          std::vector<Point<2>> line{
-            Point<2>(-margin, case_input::polyline_elevation(boundary, 0))};
+          const double z_front =
+            case_input::polyline_elevation(boundary, x_min);
+          std::vector<Point<2>> line{Point<2>(x_min - margin, z_front),
+                                     Point<2>(x_min, z_front)};
           // Not the points at the ends (x_max, from the slope angle's
           // tangent, may differ from a given 50 in the last digit).
           const double tolerance = 1e-9 * margin;
           for (const Point<2> &p : boundary)
-            if (p[0] > tolerance && p[0] < x_max - tolerance)
+            if (p[0] > x_min + tolerance && p[0] < x_max - tolerance)
               line.push_back(p);
           line.emplace_back(x_max,
                             case_input::polyline_elevation(boundary, x_max));
           line.emplace_back(x_max + margin, line.back()[1]);
-          line.insert(line.begin() + 1,
-                      Point<2>(0, case_input::polyline_elevation(boundary, 0)));
           lines.push_back(line);
         }
-      lines.push_back({Point<2>(-margin, z_base - margin),
+      lines.push_back({Point<2>(x_min - margin, z_base - margin),
                        Point<2>(x_max + margin, z_base - margin)});
 
       const std::string message =
@@ -67,8 +68,10 @@ namespace fdem
             std::vector<Point<2>> outline = lines[k + 1];
             outline.insert(outline.end(), lines[k].rbegin(), lines[k].rend());
             tools.emplace_back(3,
-                               gmsh_3d::add_extruded_polygon(
-                                 outline, -margin, slope.width + 2 * margin));
+                               gmsh_3d::add_extruded_polygon(outline,
+                                                             y_min - margin,
+                                                             y_max - y_min +
+                                                               2 * margin));
           }
         for (const auto *group : volume_groups)
           for (const int v : *group)

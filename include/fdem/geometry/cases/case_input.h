@@ -79,6 +79,16 @@ namespace fdem
       Point<2>
       parse_point(const std::string &text);
 
+      /** The fields of a line of a data file, split at commas, semicolons
+       * and blanks (empty fields dropped). */
+      std::vector<std::string>
+      split_fields(const std::string &line);
+
+      /** Whether @p text is a whole number (strtod, nothing left over, no
+       * overflow); the number in @p value. */
+      bool
+      parse_number(const std::string &text, double &value);
+
       /** The points "x,y; x,y; ...". */
       std::vector<Point<2>>
       parse_points(const std::string &text);

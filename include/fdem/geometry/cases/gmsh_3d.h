@@ -17,16 +17,6 @@ namespace fdem
     namespace gmsh_3d
     {
       /**
-       * Meshes the current Gmsh model in 3D: tetrahedra of size @p near up
-       * to @p distance_min from the surfaces @p surfaces, growing by a
-       * quarter of the further distance up to @p far (Delaunay, sizes from
-       * this field only), then all split into hexahedra if @p hexahedra.
-       * The split's new vertices (midpoints of the edges, centroids of the
-       * faces and of the tetrahedra) stay on the tetrahedra's flat edges
-       * and faces: a curved surface's are moved onto it by the generator
-       * (move_vertices_keeping_cells_valid()). Needs an active GmshSession.
-       */
-      /**
        * Adds to the current Gmsh model (OpenCASCADE) the prism of the
        * polygon @p outline, points (x, z) in the plane y = @p y0, extruded
        * by @p length along y; returns its volume's tag.
@@ -36,6 +26,16 @@ namespace fdem
                            const double                 y0,
                            const double                 length);
 
+      /**
+       * Meshes the current Gmsh model in 3D: tetrahedra of size @p near up
+       * to @p distance_min from the surfaces @p surfaces, growing by a
+       * quarter of the further distance up to @p far (Delaunay, sizes from
+       * this field only), then all split into hexahedra if @p hexahedra.
+       * The split's new vertices (midpoints of the edges, centroids of the
+       * faces and of the tetrahedra) stay on the tetrahedra's flat edges
+       * and faces: a curved surface's are moved onto it by the generator
+       * (move_vertices_keeping_cells_valid()). Needs an active GmshSession.
+       */
       void
       mesh_near_surfaces(const std::vector<int> &surfaces,
                          const double            near,

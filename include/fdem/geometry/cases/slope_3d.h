@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/geometry/cases/case_input.h>
+#include <fdem/geometry/cases/terrain.h>
 #include <fdem/geometry/mesh_description.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -22,7 +23,10 @@ namespace fdem
      * is at x = Toe length, the crest edge behind it), z up. The section
      * of the ground is (0, z_t), (L_t, z_t), (L_t + H cot beta, z_t + H),
      * (L_t + H cot beta + L_c, z_t + H), the base is at z_t - D, and the
-     * model spans 0 <= y <= W.
+     * model spans 0 <= y <= W. With a terrain file the ground is the
+     * terrain's bilinear surface instead, the model spans the terrain's
+     * grid in x and y, and its base is Base depth below the terrain's
+     * lowest point.
      */
     struct Slope3D
     {
@@ -81,17 +85,58 @@ namespace fdem
        */
       std::vector<std::vector<Point<2>>> layer_boundaries;
 
-      /** x of the crest edge, L_t + H cot beta. */
+      /**
+       * The terrain file's name as given (empty: the straight slope), and
+       * the grid read from it (relative to the .prm file's directory).
+       */
+      std::string terrain_file;
+      TerrainGrid terrain;
+
+      /** x of the crest edge, L_t + H cot beta (the straight slope). */
       double
       crest_x() const;
 
-      /** x of the back of the model, crest_x() + L_c. */
+      /** The model's extent: 0 to crest_x() + L_c in x and 0 to W in y, or
+       * the terrain grid's. */
       double
-      length() const;
+      x_min() const;
+      double
+      x_max() const;
+      double
+      y_min() const;
+      double
+      y_max() const;
 
-      /** z of the ground at @p x. */
+      /** z of the base: z_t - D, or D below the terrain's lowest point. */
       double
-      ground(const double x) const;
+      base_elevation() const;
+
+      /** The highest z of the ground. */
+      double
+      top_elevation() const;
+
+      /** z of the ground at (@p x, @p y). */
+      double
+      ground(const double x, const double y) const;
+
+      /**
+       * The ground's gradient (dz/dx, dz/dy) at (@p x, @p y): of the plane
+       * the point is on, the slope face's only strictly between the toe
+       * and the crest edge.
+       */
+      Tensor<1, 2>
+      ground_gradient(const double x, const double y) const;
+
+      /**
+       * The lowest ground over y at each x, a polyline with increasing x
+       * across the model: the section's ground line of the straight slope.
+       */
+      std::vector<Point<2>>
+      ground_profile() const;
+
+      /** The volume of the model: below the ground, above the base. */
+      double
+      model_volume() const;
 
       /**
        * The surface's implicit function at @p p: negative inside the
@@ -134,6 +179,13 @@ namespace fdem
       parse_parameters(ParameterHandler &prm);
 
       /**
+       * Read the terrain file, if one is named, relative to
+       * @p prm_directory (before validate()).
+       */
+      void
+      load_terrain(const std::string &prm_directory);
+
+      /**
        * Throw a one-sentence message naming the entry if the data are
        * invalid: also if the sliding surface does not cut the ground, does
        * not daylight on the slope face, or leaves the model below the
@@ -164,6 +216,16 @@ namespace fdem
      */
     MeshDescription<3>
     make_slope_3d_mesh(const Slope3D &slope);
+
+    /**
+     * Adds the solid of @p slope's model to the current Gmsh model
+     * (OpenCASCADE) and returns its volume's tag: the section extruded
+     * along y, or with a terrain the solid through the grid's sections
+     * along x at each y of the grid, joined by ruled faces (bilinear on
+     * each cell, as TerrainGrid::elevation()) (slope_3d_ground.cc).
+     */
+    int
+    add_slope_3d_solid(const Slope3D &slope);
 
     /**
      * Splits the volumes of @p volume_groups of the current Gmsh model
