@@ -6,11 +6,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 namespace fdem
 {
@@ -24,44 +20,19 @@ namespace fdem
     {
       const std::string where =
         "Yield acceleration/Acceleration record: '" + file + "'";
-      std::ifstream in(file);
-      AssertThrow(in, ExcMessage(where + " cannot be read (missing file?)."));
       const double       scale = unit == "g" ? standard_gravity : 1.0;
       AccelerationRecord record;
-      std::string        line;
-      unsigned int       line_number    = 0;
-      bool               header_allowed = true;
-      while (std::getline(in, line))
-        {
-          ++line_number;
-          const std::size_t comment = line.find('#');
-          if (comment != std::string::npos)
-            line.erase(comment);
-          const std::vector<std::string> fields =
-            geometry::case_input::split_fields(line);
-          if (fields.empty())
-            continue;
+      geometry::case_input::for_each_table_row(
+        file,
+        where,
+        [&](const unsigned int /*line_number*/,
+            const std::string              &at,
+            const std::vector<std::string> &fields) {
           double     t = 0, a = 0;
           const bool numbers =
             fields.size() == 2 &&
             geometry::case_input::parse_number(fields[0], t) &&
             geometry::case_input::parse_number(fields[1], a);
-          if (!numbers && header_allowed)
-            {
-              // A header: the first line, if none of its fields is a number.
-              double ignored;
-              if (std::none_of(
-                    fields.begin(), fields.end(), [&](const std::string &f) {
-                      return geometry::case_input::parse_number(f, ignored);
-                    }))
-                {
-                  header_allowed = false;
-                  continue;
-                }
-            }
-          header_allowed = false;
-          const std::string at =
-            where + " line " + std::to_string(line_number) + ": ";
           AssertThrow(fields.size() == 2,
                       ExcMessage(
                         at + "expected two values (time, acceleration), got " +
@@ -76,7 +47,7 @@ namespace fdem
               " is not after the time before it; times must increase."));
           record.time.push_back(t);
           record.acceleration.push_back(a * scale);
-        }
+        });
       AssertThrow(record.time.size() >= 2,
                   ExcMessage(where +
                              ": fewer than two samples (time, acceleration)."));

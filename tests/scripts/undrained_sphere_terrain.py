@@ -38,6 +38,8 @@ import sys
 import numpy as np
 from numpy.polynomial.legendre import leggauss
 
+from undrained_sphere import sign_changes as roots  # the sign changes of f on [a, b]
+
 
 class Terrain:
     def __init__(self, path):
@@ -67,21 +69,6 @@ class Terrain:
         z = self.z
         return ((1 - s) * (1 - t) * z[j, i] + s * (1 - t) * z[j, i + 1] + (1 - s) * t * z[j + 1, i]
                 + s * t * z[j + 1, i + 1])
-
-
-def roots(f, a, b, n=400):
-    """The points in (a, b) where f changes sign, by bisection."""
-    xs = np.linspace(a, b, n + 1)
-    fs = f(xs)
-    found = []
-    for k in range(n):
-        if fs[k] * fs[k + 1] < 0:
-            lo, hi = xs[k], xs[k + 1]
-            for _ in range(100):
-                mid = 0.5 * (lo + hi)
-                lo, hi = (lo, mid) if f(lo) * f(mid) <= 0 else (mid, hi)
-            found.append(0.5 * (lo + hi))
-    return found
 
 
 def pieces(a, b, breaks, n):

@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
 #include <set>
 
@@ -241,6 +242,48 @@ namespace fdem
         errno     = 0;
         value     = std::strtod(text.c_str(), &end);
         return end != text.c_str() && *end == '\0' && errno == 0;
+      }
+
+
+
+      void
+      for_each_table_row(
+        const std::string &file_name,
+        const std::string &where,
+        const std::function<void(const unsigned int              line_number,
+                                 const std::string              &at,
+                                 const std::vector<std::string> &fields)> &row)
+      {
+        std::ifstream in(file_name);
+        AssertThrow(in, ExcMessage(where + " cannot be read (missing file?)."));
+        std::string  line;
+        unsigned int line_number    = 0;
+        bool         header_allowed = true;
+        while (std::getline(in, line))
+          {
+            ++line_number;
+            const std::size_t comment = line.find('#');
+            if (comment != std::string::npos)
+              line.erase(comment);
+            const std::vector<std::string> fields = split_fields(line);
+            if (fields.empty())
+              continue;
+            double ignored;
+            if (header_allowed && std::none_of(fields.begin(),
+                                               fields.end(),
+                                               [&](const std::string &f) {
+                                                 return parse_number(f,
+                                                                     ignored);
+                                               }))
+              {
+                header_allowed = false;
+                continue;
+              }
+            header_allowed = false;
+            row(line_number,
+                where + " line " + std::to_string(line_number) + ": ",
+                fields);
+          }
       }
     } // namespace case_input
   }   // namespace geometry

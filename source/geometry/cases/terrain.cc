@@ -12,9 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace fdem
 {
@@ -34,6 +34,16 @@ namespace fdem
                                  v.size() - 1) -
           1;
         return {k, (clamped - v[k]) / (v[k + 1] - v[k])};
+      }
+
+      /** The fields of a line, as read (comments dropped). */
+      std::string
+      fields_text(const std::vector<std::string> &fields)
+      {
+        std::string text;
+        for (const std::string &f : fields)
+          text += (text.empty() ? "" : ", ") + f;
+        return text;
       }
 
       std::string
@@ -131,47 +141,24 @@ namespace fdem
                            const std::string &entry)
     {
       const std::string where = entry + ": '" + file_name + "'";
-      std::ifstream     in(file_name);
-      AssertThrow(in, ExcMessage(where + " cannot be read (missing file?)."));
       std::map<std::pair<double, double>, double>       points;
       std::map<std::pair<double, double>, unsigned int> line_of;
-      std::string                                       line;
-      unsigned int                                      line_number    = 0;
-      bool                                              header_allowed = true;
-      while (std::getline(in, line))
-        {
-          ++line_number;
-          const std::size_t comment = line.find('#');
-          if (comment != std::string::npos)
-            line.erase(comment);
-          const std::vector<std::string> fields =
-            case_input::split_fields(line);
-          if (fields.empty())
-            continue;
+      case_input::for_each_table_row(
+        file_name,
+        where,
+        [&](const unsigned int              line_number,
+            const std::string              &at,
+            const std::vector<std::string> &fields) {
           double value[3] = {0, 0, 0};
           bool   numbers  = fields.size() == 3;
           for (unsigned int k = 0; k < fields.size() && k < 3; ++k)
             numbers = case_input::parse_number(fields[k], value[k]) &&
                       std::isfinite(value[k]) && numbers;
-          if (header_allowed && !numbers &&
-              std::none_of(fields.begin(),
-                           fields.end(),
-                           [](const std::string &f) {
-                             double ignored;
-                             return case_input::parse_number(f, ignored);
-                           }))
-            {
-              header_allowed = false;
-              continue;
-            }
-          header_allowed = false;
-          const std::string at =
-            where + " line " + std::to_string(line_number) + ": ";
           AssertThrow(numbers,
                       ExcMessage(at +
                                  "expected three finite numbers x, y, "
                                  "z (m), got '" +
-                                 line + "'."));
+                                 fields_text(fields) + "'."));
           const std::pair<double, double> xy(value[0], value[1]);
           AssertThrow(points.count(xy) == 0,
                       ExcMessage(at + "the point x = " + fields[0] + ", y = " +
@@ -179,7 +166,7 @@ namespace fdem
                                  std::to_string(line_of[xy]) + "."));
           points[xy]  = value[2];
           line_of[xy] = line_number;
-        }
+        });
 
       std::set<double> xs, ys;
       for (const auto &[xy, z] : points)

@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,22 @@ namespace fdem
        * and blanks (empty fields dropped). */
       std::vector<std::string>
       split_fields(const std::string &line);
+
+      /**
+       * Calls @p row for each data line of the text table @p file_name:
+       * with the line's number N, "@p where line N: " for its messages and
+       * its fields (split_fields()). '#' starts a comment, blank lines are
+       * skipped, and a first line none of whose fields is a number is a header.
+       * Throws
+       * "@p where cannot be read" if the file cannot be opened.
+       */
+      void
+      for_each_table_row(
+        const std::string &file_name,
+        const std::string &where,
+        const std::function<void(const unsigned int              line_number,
+                                 const std::string              &at,
+                                 const std::vector<std::string> &fields)> &row);
 
       /** Whether @p text is a whole number (strtod, nothing left over, no
        * overflow); the number in @p value. */
