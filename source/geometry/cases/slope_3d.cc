@@ -235,16 +235,20 @@ namespace fdem
                                     top_elevation() - base_elevation());
       const double z_base  = base_elevation();
       const unsigned int n = 720;
-      const bool         cylinder = surface == Surface::cylinder;
-      const unsigned int n_s      = surface == Surface::capsule ? 3 * n / 4 :
-                                    cylinder                    ? 0 :
-                                                                  n / 2;
+      // The cylinder's sections are all one but under a terrain, which
+      // may change along y: there 48 of them across the width.
+      const bool         cylinder    = surface == Surface::cylinder;
+      const bool         one_section = cylinder && terrain.empty();
+      const unsigned int n_s         = surface == Surface::capsule ? 3 * n / 4 :
+                                       one_section                 ? 0 :
+                                       cylinder                    ? 48 :
+                                                                     n / 2;
       bool               below = false, above = false, leaves = false;
       double             x_low = x_max(), x_high = x_min(); // central section
       for (unsigned int i = 0; i <= n_s; ++i)
         for (unsigned int j = 0; j < n; ++j)
           {
-            const Point<3> p = surface_point(cylinder ? 0.5 : 1. * i / n_s,
+            const Point<3> p = surface_point(one_section ? 0.5 : 1. * i / n_s,
                                              2 * numbers::PI * j / n);
             if (p[2] >= ground(p[0], p[1]))
               {
@@ -256,7 +260,7 @@ namespace fdem
                      p[0] > x_max() - margin || p[2] < z_base + margin ||
                      (!cylinder &&
                       (p[1] < y_min() + margin || p[1] > y_max() - margin));
-            if (2 * i == n_s || cylinder)
+            if (2 * i == n_s || one_section)
               {
                 x_low  = std::min(x_low, p[0]);
                 x_high = std::max(x_high, p[0]);

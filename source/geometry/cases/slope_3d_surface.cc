@@ -69,12 +69,12 @@ namespace fdem
     Slope3D::surface_point(const double s, const double phi) const
     {
       // The ring at s: its centre's y and radius. The cylinder runs across
-      // the model's width; the ellipsoid and sphere from pole to pole
-      // (theta = pi s); the capsule's ends take the first and last third
-      // of s, its straight part the middle third.
+      // the model's width (y_min() to y_max()); the ellipsoid and sphere from
+      // pole to pole (theta = pi s); the capsule's ends take the first and last
+      // third of s, its straight part the middle third.
       double y = 0, ring = radius;
       if (surface == Surface::cylinder)
-        y = width * s;
+        y = y_min() + (y_max() - y_min()) * s;
       else if (surface == Surface::capsule)
         {
           const double half_straight = straight_length / 2;
