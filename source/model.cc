@@ -200,7 +200,7 @@ namespace fdem
           std::vector<unsigned int>{b},
           blocks::block_materials(mesh, parameters, b),
           parameters.fe_degree));
-        if (parameters.has_piezometric_line())
+        if (parameters.has_water_table())
           blocks.back()->water_table =
             std::make_shared<blocks::PiezometricPressure<dim>>(
               parameters.water, parameters.geometry);

@@ -10,9 +10,12 @@
 #include "test_helpers.h"
 
 #include <fdem/analyses/limit_equilibrium_model.h>
+#include <fdem/blocks/surface_loads.h>
+#include <fdem/geometry/make_mesh.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -197,4 +200,61 @@ TEST(PerchedWater, PerchedTableOnThePlaneGivesTheClosedForm)
   EXPECT_LT(K, run(dry)->results().safety_factor.safety_factor);
 
   expect_every_method_gives(perched, closed_form(0), 1e-9);
+}
+
+// Water/Piezometric surface file (3D): the pressure below a water table
+// given on a grid is gamma_w times the depth under its bilinear surface,
+// clamped beyond the grid, in the input's coordinates: scaled, turned and
+// moved with the mesh (Geometry transformation), a point's pressure is the
+// same depth times the scale. A material's own line still wins in its
+// cells.
+TEST(PerchedWater, WaterSurfaceGridGivesTheDepthBelowItInAnyFrame)
+{
+  parameters::WaterParameters water;
+  water.unit_weight           = 9.81;
+  water.piezometric_surface.x = {0, 10, 30};
+  water.piezometric_surface.y = {-5, 20};
+  water.piezometric_surface.z = {25, 26, 30, 27, 29, 33};
+  const auto surface_level    = [](double x, double y) {
+    // Bilinear per cell: in x piecewise linear, in y linear (0 at y = -5,
+    // 1 at y = 20), clamped beyond.
+    x               = std::clamp(x, 0.0, 30.0);
+    y               = std::clamp(y, -5.0, 20.0);
+    const double t  = (y + 5) / 25;
+    const double z0 = x <= 10 ? 25 + 0.1 * x : 26 + 0.2 * (x - 10);
+    const double z1 = x <= 10 ? 27 + 0.2 * x : 29 + 0.2 * (x - 10);
+    return (1 - t) * z0 + t * z1;
+  };
+  parameters::GeometryParameters plain;
+  plain.translation = {0, 0, 0};
+  parameters::GeometryParameters moved;
+  moved.scale_factor   = 1000;
+  moved.rotation_angle = 30;
+  moved.rotation_axis  = dealii::Tensor<1, 3>({1., 2., 3.});
+  moved.rotation_axis /= moved.rotation_axis.norm();
+  moved.translation = {500, -200, 100};
+  const blocks::PiezometricPressure<3> in_plain(water, plain),
+    in_moved(water, moved), raised(water, plain, 1.5);
+  parameters::MaterialParameters own_line, no_line;
+  own_line.piezometric_line = {{{0, 20}}, {{30, 20}}};
+  for (const Point<3> &p : {Point<3>(5, 0, 24),
+                            Point<3>(20, 10, 27.5),
+                            Point<3>(-4, 30, 26),
+                            Point<3>(40, -9, 31),
+                            Point<3>(25, 12, 40)})
+    {
+      const double depth = std::max(0.0, surface_level(p[0], p[1]) - p[2]);
+      EXPECT_NEAR(in_plain.value(p), 9.81 * depth, 1e-12) << p;
+      EXPECT_NEAR(in_plain.value(p, no_line), 9.81 * depth, 1e-12) << p;
+      EXPECT_NEAR(in_plain.value(p, own_line),
+                  9.81 * std::max(0.0, 20 - p[2]),
+                  1e-12)
+        << p;
+      EXPECT_NEAR(raised.value(p),
+                  9.81 * std::max(0.0, surface_level(p[0], p[1]) + 1.5 - p[2]),
+                  1e-12)
+        << p;
+      const Point<3> image = geometry::transformed_point(moved, p);
+      EXPECT_NEAR(in_moved.value(image), 1000 * 9.81 * depth, 1e-8) << p;
+    }
 }

@@ -267,7 +267,7 @@ namespace fdem
         "case's, towards Loads/Seismic direction (or the free face), with the case's Vertical "
         "seismic coefficient and Seismic on pore water, without a new factorisation; and "
         "Water/Piezometric line shift (length, positive up, in the line's own coordinates): every point of Water/Piezometric "
-        "line and of the materials' own lines raised by the sample's value, with the pore "
+        "line (or of Water/Piezometric surface file) and of the materials' own lines raised by the sample's value, with the pore "
         "pressures ('piezometric') and the saturated weights below them, a new right-hand side on the same factorisations "
         "(e.g. normal, mean 0, sd 1). Values not listed keep those of the case.");
       prm.declare_entry(

@@ -12,6 +12,29 @@ namespace fdem
 {
   namespace blocks
   {
+    namespace
+    {
+      /** The line's y at @p x, its points raised by @p shift: linear
+       * between them, constant beyond its ends. */
+      double
+      piecewise_linear(const std::vector<std::array<double, 2>> &line,
+                       const double                              x,
+                       const double                              shift)
+      {
+        if (x <= line.front()[0])
+          return line.front()[1] + shift;
+        for (unsigned int i = 1; i < line.size(); ++i)
+          if (x <= line[i][0])
+            {
+              const double s =
+                (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]);
+              return (1 - s) * (line[i - 1][1] + shift) +
+                     s * (line[i][1] + shift);
+            }
+        return line.back()[1] + shift;
+      }
+    } // namespace
+
     template <int dim>
     PiezometricPressure<dim>::PiezometricPressure(
       const parameters::WaterParameters    &water,
@@ -44,27 +67,21 @@ namespace fdem
     template <int dim>
     double
     PiezometricPressure<dim>::pressure_below(
-      const std::vector<std::array<double, 2>> &line,
+      const std::vector<std::array<double, 2>> &own_line,
       const Point<dim>                         &p) const
     {
-      if (line.empty())
-        return 0;
+      const std::vector<std::array<double, 2>> &line =
+        own_line.empty() ? water.piezometric_line : own_line;
       const Tensor<1, dim> x0 = to_input * (p - translation);
       const double         x = x0[0], y = x0[dim - 1];
       // The shift is added to the points, as a raised line would be given.
-      double level = line.front()[1] + shift;
-      if (x >= line.back()[0])
-        level = line.back()[1] + shift;
-      else if (x > line.front()[0])
-        for (unsigned int i = 1; i < line.size(); ++i)
-          if (x <= line[i][0])
-            {
-              const double s =
-                (x - line[i - 1][0]) / (line[i][0] - line[i - 1][0]);
-              level =
-                (1 - s) * (line[i - 1][1] + shift) + s * (line[i][1] + shift);
-              break;
-            }
+      double level = 0;
+      if (!line.empty())
+        level = piecewise_linear(line, x, shift);
+      else if (dim == 3 && !water.piezometric_surface.empty())
+        level = water.piezometric_surface.elevation(x0[0], x0[1]) + shift;
+      else
+        return 0;
       return water.unit_weight * scale * std::max(0.0, level - y);
     }
 
@@ -73,7 +90,7 @@ namespace fdem
     PiezometricPressure<dim>::value(const Point<dim> &p,
                                     const unsigned int) const
     {
-      return pressure_below(water.piezometric_line, p);
+      return pressure_below({}, p);
     }
 
     template <int dim>
@@ -82,10 +99,7 @@ namespace fdem
       const Point<dim>                     &p,
       const parameters::MaterialParameters &material) const
     {
-      return pressure_below(material.piezometric_line.empty() ?
-                              water.piezometric_line :
-                              material.piezometric_line,
-                            p);
+      return pressure_below(material.piezometric_line, p);
     }
 
     template <int dim>

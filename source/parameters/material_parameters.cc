@@ -46,7 +46,7 @@ namespace fdem
         "0",
         Patterns::Double(0),
         "Unit weight below the water table (the material's own "
-        "Piezometric line, or Water/Piezometric line) "
+        "Piezometric line, or Water/Piezometric line or surface) "
         "(force/length^3, e.g. kN/m^3), evaluated at each "
         "quadrature point; 0: the same weight as above it. It "
         "is the total weight (soil and water): give the water "
@@ -84,14 +84,15 @@ namespace fdem
         "This material's own water table, points 'x,y; x,y; ...' with "
         "increasing x (length, in the coordinates before the Geometry "
         "transformation, moved with the mesh): used instead of "
-        "Water/Piezometric line in this material's cells (the saturated unit "
+        "Water/Piezometric line (or surface) in this material's cells (the saturated unit "
         "weight below it) and on the faces of its cells where a pressure or "
         "pore pressure is 'piezometric' (gamma_w times the depth under this "
         "line); limit equilibrium does the same for the slices' layers and "
         "bases. A perched water table: the upper layer's line above a "
         "low-permeability layer, the lower layers on Water/Piezometric line "
-        "or their own. Where neither this nor Water/Piezometric line is "
-        "given, the material is dry. Empty: Water/Piezometric line.");
+        "or their own. Where neither this nor Water/Piezometric line (or "
+        "surface) is given, the material is dry. Empty: Water/Piezometric "
+        "line (or surface).");
     }
 
     void

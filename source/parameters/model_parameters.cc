@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <utility>
@@ -388,17 +389,48 @@ namespace fdem
                         "vertical z, the line running unchanged along y "
                         "(the 3D slope's section across its width). Empty: "
                         "none.");
+      prm.declare_entry(
+        "Piezometric surface file",
+        "",
+        Patterns::Anything(),
+        "3D: the water table as a surface over x and y, a text file of "
+        "lines 'x, y, z' (length, in the coordinates before the Geometry "
+        "transformation) on a rectangular grid, in any order, as "
+        "Geometry/Slope 3D/Terrain file: bilinear between the grid's "
+        "points, constant beyond its edges. Below it the water pressure is "
+        "gamma_w times the depth under the surface, used where a pressure "
+        "or pore pressure is 'piezometric', and the saturated unit weight "
+        "acts. Relative to the .prm file's folder. Empty: none (or "
+        "Piezometric line); not both.");
       prm.leave_subsection();
     }
 
     void
-    WaterParameters::parse_parameters(ParameterHandler &prm)
+    WaterParameters::parse_parameters(ParameterHandler  &prm,
+                                      const unsigned int dim,
+                                      const std::string &prm_directory)
     {
       prm.enter_subsection("Water");
       unit_weight      = prm.get_double("Unit weight of water");
       piezometric_line = parse_piezometric_line(prm.get("Piezometric line"),
                                                 "Water/Piezometric line");
+      piezometric_surface_file = prm.get("Piezometric surface file");
       prm.leave_subsection();
+      piezometric_surface = geometry::TerrainGrid();
+      if (piezometric_surface_file.empty())
+        return;
+      AssertThrow(dim == 3,
+                  ExcMessage("Water/Piezometric surface file: a water surface "
+                             "over x and y is for 3D models; in 2D give "
+                             "Water/Piezometric line."));
+      AssertThrow(piezometric_line.empty(),
+                  ExcMessage("Water/Piezometric surface file: give either it "
+                             "or Water/Piezometric line, not both."));
+      piezometric_surface =
+        geometry::terrain_grid_from_file((std::filesystem::path(prm_directory) /
+                                          piezometric_surface_file)
+                                           .string(),
+                                         "Water/Piezometric surface file");
     }
 
     void

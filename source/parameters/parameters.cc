@@ -169,7 +169,7 @@ namespace fdem
       loads.parse_parameters(prm, dimension);
       contact.parse_parameters(prm);
       safety_factor.parse_parameters(prm);
-      water.parse_parameters(prm);
+      water.parse_parameters(prm, dimension, prm_directory);
       solver.parse_parameters(prm);
       output.parse_parameters(prm);
       limit_equilibrium.parse_parameters(prm);
@@ -236,9 +236,9 @@ namespace fdem
     }
 
     bool
-    Parameters::has_piezometric_line() const
+    Parameters::has_water_table() const
     {
-      return !water.piezometric_line.empty() ||
+      return water.has_water_table() ||
              std::any_of(materials.begin(),
                          materials.end(),
                          [](const auto &material) {
@@ -249,11 +249,12 @@ namespace fdem
     void
     Parameters::check_piezometric_pressures() const
     {
-      if (has_piezometric_line())
+      if (has_water_table())
         return;
       const std::string why =
         ": 'piezometric' needs a water table; give Water/Piezometric line "
-        "(or a material's own Piezometric line).";
+        "or Piezometric surface file (or a material's own Piezometric "
+        "line).";
       for (const auto &[name, boundary] : boundaries)
         AssertThrow(boundary.pressure != "piezometric",
                     ExcMessage("Boundaries/" + name + "/Pressure" + why));
@@ -277,9 +278,11 @@ namespace fdem
       for (const auto &variable : probabilistic.variables)
         AssertThrow(
           variable.owner != analyses::RandomVariable::Owner::water ||
-            has_piezometric_line(),
-          ExcMessage("Probabilistic/Variables: '" + variable.target +
-                     "' shifts Water/Piezometric line, but no line is given."));
+            has_water_table(),
+          ExcMessage(
+            "Probabilistic/Variables: '" + variable.target +
+            "' shifts the water table, but none is given (Water/Piezometric "
+            "line or Piezometric surface file)."));
       AssertThrow(
         !probabilistic.compute || safety_factor.compute,
         ExcMessage(

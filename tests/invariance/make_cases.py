@@ -154,6 +154,25 @@ CASES = {
         "extra": lambda F, L: [],
     },
 }
+# The 3D slope under a water table surface (Water/Piezometric surface file,
+# in the input's coordinates: scaled with the mesh by Scale factor) with
+# saturated weights and the pore pressure on the sliding surface
+# (tests/three_d/sloping_water.prm, kN and m; the units' variants override
+# the weights).
+def water_3d_lines(F, L):
+    return (["subsection Water", f"  set Unit weight of water = {num(9.81 * F / L**3)}", "end",
+             "subsection Blocks"]
+            + sum(([f"  subsection {name}", f"    set Saturated unit weight = {num(22 * F / L**3)}",
+                    "  end"] for name in ("sliding mass", "foundation")), [])
+            + ["end"])
+
+
+CASES["slope_3d_water"] = {
+    **CASES["slope_3d"],
+    "quick": CASES["slope_3d"]["quick"]
+    + ["include @PRM_DIR@/../tests/three_d/sloping_water.prm"],
+    "extra": water_3d_lines,
+}
 # The layered slope with a perched water table in the fill
 # (Materials/fill/Piezometric line, in the input's coordinates like the
 # slope's line): the layered slope's entries.

@@ -104,13 +104,14 @@
                                          relative; the low-rank run's log
                                          reports MUMPS's compression and
                                          the full-rank run's does not
-  run_checks.py undrained-sphere EXE CASE.prm XC,YC,ZC R C GAMMA TOL [TERRAIN]
+  run_checks.py undrained-sphere EXE CASE.prm XC,YC,ZC R C GAMMA TOL [TERRAIN [WATER GAMMA_SAT]]
                                          certified, and within TOL of the
                                          exact phi = 0 K of the sphere
                                          (undrained_sphere.py; under the
                                          grid TERRAIN,
-                                         undrained_sphere_terrain.py), and
-                                         the same turned
+                                         undrained_sphere_terrain.py, with
+                                         GAMMA_SAT below the water table
+                                         grid WATER), and the same turned
   run_checks.py undrained-ellipsoid EXE CASE.prm XC,YC,ZC R B C GAMMA TOL [L]
                                          certified, and within TOL of the
                                          exact phi = 0 K of the spheroid,
@@ -541,12 +542,15 @@ def check_block_low_rank(exe, prm, tolerance):
     assert abs(K / K_full - 1) <= float(tolerance), (K, K_full)
 
 
-def check_undrained_sphere(exe, prm, centre, radius, cohesion, unit_weight, tolerance, terrain=None):
+def check_undrained_sphere(exe, prm, centre, radius, cohesion, unit_weight, tolerance, terrain=None,
+                           water=None, saturated_unit_weight=None):
     """@p prm, a slope on a sphere with phi = 0, certified and within
     @p tolerance of the exact K of the rigid mass turning about the
     sphere's axis (undrained_sphere.py), or under the terrain grid
     @p terrain about the axis of least K (undrained_sphere_terrain.py,
-    40 points per piece: 20 to 80 agree within 3e-7). The same model turned by 30
+    40 points per piece: 20 to 80 agree within 3e-7), with the unit weight
+    @p saturated_unit_weight below the water table grid @p water if given.
+    The same model turned by 30
     degrees about (1, 2, 3) (Geometry/Rotation, gravity turned with it:
     the pairs' exact normals turn with the mesh) takes the same steps to
     the same K, to 1e-8 as the invariance tests. It did not while the
@@ -561,7 +565,8 @@ def check_undrained_sphere(exe, prm, centre, radius, cohesion, unit_weight, tole
     centre = tuple(map(float, centre.split(",")))
     if terrain:
         exact, axis = undrained_sphere_terrain.undrained_sphere_terrain_factor(
-            terrain, centre, float(radius), float(cohesion), float(unit_weight))
+            terrain, centre, float(radius), float(cohesion), float(unit_weight),
+            water=water, gamma_sat=float(saturated_unit_weight) if water else None)
         print(f"axis of the exact turn {axis}")
     else:
         exact = undrained_sphere.undrained_sphere_factor(centre, float(radius), float(cohesion),

@@ -31,7 +31,13 @@ tests/three_d/slope_3d.prm this reproduces undrained_sphere.py's
 1.0315274 (the minimum on e = y); see tests/CMakeLists.txt for the
 convergence measured on the terrains tested.
 
-    /usr/bin/python3 tests/scripts/undrained_sphere_terrain.py TERRAIN XC YC ZC R C GAMMA [N]
+With a water table (a grid file WATER, bilinear as the terrain) the unit
+weight below it is GAMMA_SAT: the weight's moment takes each column's
+saturated part at GAMMA_SAT. The pore pressure on the sphere is normal to
+it and passes through the centre, so it adds no moment: K is that of the
+heavier mass.
+
+    /usr/bin/python3 tests/scripts/undrained_sphere_terrain.py TERRAIN XC YC ZC R C GAMMA [N [WATER GAMMA_SAT]]
 """
 import sys
 
@@ -82,10 +88,22 @@ def pieces(a, b, breaks, n):
     return np.concatenate(xs), np.concatenate(ws)
 
 
-def sphere_quadrature(ground, centre, R, n):
+def plane_of(grid):
+    """(a, b, c) if the grid's surface is the plane z = a + b x + c y, else
+    None."""
+    X, Y = np.meshgrid(grid.x, grid.y)
+    A = np.stack([np.ones(X.size), X.ravel(), Y.ravel()], axis=1)
+    coefficients = np.linalg.lstsq(A, grid.z.ravel(), rcond=None)[0]
+    scale = 1 + np.max(np.abs(grid.z))
+    return coefficients if np.max(np.abs(A @ coefficients - grid.z.ravel())) < 1e-12 * scale else None
+
+
+def sphere_quadrature(ground, centre, R, n, gamma, water=None, gamma_sat=None):
     """The nodes r (from the centre) and weights of dA on the sphere below
-    the ground, and the moment M_w / gamma of the mass."""
+    the ground, and the moment M_w of the mass's weight: gamma, or below
+    the grid @p water gamma_sat."""
     xc, yc, zc = centre
+    excess = 0.0 if water is None else gamma_sat - gamma
 
     def circle(y):
         rho = np.sqrt(max(R * R - (y - yc) ** 2, 0.0))
@@ -116,6 +134,17 @@ def sphere_quadrature(ground, centre, R, n):
         for sense in (-1, 1):
             sheet = lambda y: ground(xg, y) - (zc + sense * np.sqrt(np.maximum(half * half - (y - yc) ** 2, 0)))
             crossings += roots(sheet, yc - half, yc + half) if half > 0 else []
+    # Below a water table the weight kinks at its grid lines, and where
+    # the water enters a section: for a plane z = a + b x + c y its line in
+    # the section touches the circle, (a + b x_c + c y - z_c) / sqrt(1 +
+    # b^2) = -rho(y) (other water surfaces: see the convergence in n).
+    if water is not None:
+        crossings += list(water.y)
+        plane = plane_of(water)
+        if plane is not None:
+            a, b, c = plane
+            crossings += roots(lambda y: (a + b * xc + c * y - zc) / np.sqrt(1 + b * b)
+                               + np.sqrt(np.maximum(R * R - (y - yc) ** 2, 0)), yc - R, yc + R)
     breaks = sorted(set([y_a, y_b] + [y for y in list(ground.y) + crossings if y_a < y < y_b]))
     g, w = leggauss(n)
     nodes, weights = [], []
@@ -139,24 +168,33 @@ def sphere_quadrature(ground, centre, R, n):
             weights.append(R * wpsi * wy)
             # The volume: columns over x between the sphere's sheets.
 
-            def height(x):
+            def weight(x):
                 s = np.sqrt(np.maximum(rho * rho - (x - xc) ** 2, 0))
-                return np.maximum(0, np.minimum(ground(x, y), zc + s) - (zc - s))
+                top = np.minimum(ground(x, y), zc + s)
+                total = gamma * np.maximum(0, top - (zc - s))
+                if water is not None:
+                    total += excess * np.maximum(0, np.minimum(water(x, y), top) - (zc - s))
+                return total
 
             xbreaks = [xg for xg in ground.x]
-            for sense in (-1, 1):
-                xbreaks += roots(lambda x: ground(x, y) - (zc + sense * np.sqrt(np.maximum(rho * rho - (x - xc) ** 2, 0))),
-                                 xc - rho, xc + rho)
+            sheets = [lambda x, sense=sense: zc + sense * np.sqrt(np.maximum(rho * rho - (x - xc) ** 2, 0))
+                      for sense in (-1, 1)]
+            for sheet in sheets:
+                xbreaks += roots(lambda x: ground(x, y) - sheet(x), xc - rho, xc + rho)
+            if water is not None:
+                xbreaks += list(water.x)
+                for surface in sheets + [lambda x: ground(x, y)]:
+                    xbreaks += roots(lambda x: water(x, y) - surface(x), xc - rho, xc + rho)
             x, wx = pieces(xc - rho, xc + rho, xbreaks, n)
-            h = height(x) * wx * wy
+            h = weight(x) * wx * wy
             moment += np.array([-(y - yc) * np.sum(h), np.sum((x - xc) * h), 0.0])
     return np.concatenate(nodes), np.concatenate(weights), moment
 
 
-def factor_and_axis(nodes, weights, moment, c, gamma):
+def factor_and_axis(nodes, weights, moment, c):
     def K(a, b):
         e = np.array([np.cos(a) * np.sin(b), np.cos(a) * np.cos(b), np.sin(a)])
-        em = gamma * e @ moment
+        em = e @ moment
         return (c * np.sum(weights * np.linalg.norm(np.cross(e, nodes), axis=1)) / em if em > 0 else np.inf), e
 
     a, b = 0.0, 0.0  # e = y
@@ -174,14 +212,18 @@ def factor_and_axis(nodes, weights, moment, c, gamma):
     return best, K(a, b)[1]
 
 
-def undrained_sphere_terrain_factor(path, centre, R, c, gamma, n=40):
-    nodes, weights, moment = sphere_quadrature(Terrain(path), centre, R, n)
-    return factor_and_axis(nodes, weights, moment, c, gamma)
+def undrained_sphere_terrain_factor(path, centre, R, c, gamma, n=40, water=None, gamma_sat=None):
+    """K and the axis of the turn; with @p water (a grid file of the water
+    table) the unit weight is @p gamma_sat below it."""
+    nodes, weights, moment = sphere_quadrature(Terrain(path), centre, R, n, gamma,
+                                               Terrain(water) if water else None, gamma_sat)
+    return factor_and_axis(nodes, weights, moment, c)
 
 
 if __name__ == '__main__':
     path = sys.argv[1]
     xc, yc, zc, R, c, gamma = map(float, sys.argv[2:8])
     n = int(sys.argv[8]) if len(sys.argv) > 8 else 40
-    K, e = undrained_sphere_terrain_factor(path, (xc, yc, zc), R, c, gamma, n)
+    water, gamma_sat = (sys.argv[9], float(sys.argv[10])) if len(sys.argv) > 10 else (None, None)
+    K, e = undrained_sphere_terrain_factor(path, (xc, yc, zc), R, c, gamma, n, water, gamma_sat)
     print(repr(K), ' '.join(f'{v:.6f}' for v in e))

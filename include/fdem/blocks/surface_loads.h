@@ -25,7 +25,10 @@ namespace fdem
      * own (MaterialParameters::piezometric_line, a perched water table),
      * that one: value(p, material) is the pressure in or on a cell of that
      * material, value(p) the one of Water/Piezometric line. No line: 0 (a
-     * dry material).
+     * dry material). In 3D the lines are over x and z, unchanged along y,
+     * and Water/Piezometric surface file gives the water table as a
+     * surface z_w(x, y) instead (bilinear on its grid, clamped beyond it):
+     * p = gamma_w max(0, z_w(x, y) - z).
      *
      * The lines are in the input's coordinates, as the ground, the layers,
      * the weak layers and the anchors are, and move with the mesh
@@ -55,9 +58,10 @@ namespace fdem
             const parameters::MaterialParameters &material) const;
 
     private:
-      /** The pressure below @p line (none if empty). */
+      /** The pressure below @p own_line, or if it is empty below the
+       * water table (Water/Piezometric line or surface; none: 0). */
       double
-      pressure_below(const std::vector<std::array<double, 2>> &line,
+      pressure_below(const std::vector<std::array<double, 2>> &own_line,
                      const Point<dim>                         &p) const;
 
       const parameters::WaterParameters water;

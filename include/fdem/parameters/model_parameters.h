@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include <fdem/geometry/cases/terrain.h>
 #include <fdem/parameters/material_parameters.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -136,8 +137,19 @@ namespace fdem
     {
       static void
       declare_parameters(dealii::ParameterHandler &prm);
+      /** Reads the subsection; a surface file is read relative to
+       * @p prm_directory and only in 3D (@p dim). */
       void
-      parse_parameters(dealii::ParameterHandler &prm);
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const unsigned int        dim,
+                       const std::string        &prm_directory = ".");
+
+      /** Whether a water table is given: the line or the surface. */
+      bool
+      has_water_table() const
+      {
+        return !piezometric_line.empty() || !piezometric_surface.empty();
+      }
 
       /** Unit weight of water gamma_w (force/length^3). */
       double unit_weight = 9.81;
@@ -148,6 +160,14 @@ namespace fdem
        * (MaterialParameters::piezometric_line) uses that one instead.
        */
       std::vector<std::array<double, 2>> piezometric_line;
+      /**
+       * The water table as a surface over x and y (3D only): elevations z
+       * on a rectangular grid, read like Geometry/Slope 3D/Terrain file
+       * from Water/Piezometric surface file (kept here as given, relative
+       * to the .prm's folder). Empty: none; not with a line.
+       */
+      std::string           piezometric_surface_file;
+      geometry::TerrainGrid piezometric_surface;
     };
 
     /** The status iteration of the contact solver: subsection "Contact". */

@@ -89,10 +89,10 @@ namespace fdem
       void
       probabilistic_check_targets() const;
 
-      /** Whether a water table is given: Water/Piezometric line, or a
-       * material's own Piezometric line. */
+      /** Whether a water table is given: Water/Piezometric line or
+       * Piezometric surface file, or a material's own Piezometric line. */
       bool
-      has_piezometric_line() const;
+      has_water_table() const;
 
       /** Throws naming the entry if a boundary's Pressure or an interface's
        * Pore pressure is 'piezometric' and no water table is given. */
