@@ -101,3 +101,91 @@ TEST(TerrainGrid, EachWrongFileIsNamedOnOneLine)
   wrong("0 0 1\n1 0 1\n2 0 1\n", "at least two distinct x and two distinct y");
   wrong("", "at least two distinct x and two distinct y, got 0 and 0");
 }
+
+
+
+// A Gmsh surface as the ground (Terrain file = .geo, .msh or .stl): the
+// paper's straight slope as three planes (toe z = 25 to x = 10, the face
+// rising 1:2 to the crest at x = 30, z = 35), meshed by Gmsh into
+// triangles, or quadrangles (Recombine), sampled on a grid. Every surface
+// element lies in one of the planes, so each sample is exact: on the
+// grid through the kinks (spacing 10) and on one that misses them
+// (spacing 7: steps of 6.25 m in x, 40/6 m in y).
+TEST(TerrainGrid, SamplesAGmshSurfaceExactlyOnItsPlanes)
+{
+  const auto slope = [](const double x) {
+    return x <= 10 ? 25 : x <= 30 ? 25 + 0.5 * (x - 10) : 35;
+  };
+  const std::string planes =
+    "lc = 5;\n"
+    "Point(1) = {0, 0, 25, lc}; Point(2) = {10, 0, 25, lc};\n"
+    "Point(3) = {30, 0, 35, lc}; Point(4) = {50, 0, 35, lc};\n"
+    "Point(5) = {0, 40, 25, lc}; Point(6) = {10, 40, 25, lc};\n"
+    "Point(7) = {30, 40, 35, lc}; Point(8) = {50, 40, 35, lc};\n"
+    "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+    "Line(4) = {5, 6}; Line(5) = {6, 7}; Line(6) = {7, 8};\n"
+    "Line(7) = {1, 5}; Line(8) = {2, 6}; Line(9) = {3, 7}; Line(10) = {4, 8};\n"
+    "Curve Loop(1) = {1, 8, -4, -7}; Plane Surface(1) = {1};\n"
+    "Curve Loop(2) = {2, 9, -5, -8}; Plane Surface(2) = {2};\n"
+    "Curve Loop(3) = {3, 10, -6, -9}; Plane Surface(3) = {3};\n";
+  for (const std::string extra : {"", "Recombine Surface{1, 2, 3};\n"})
+    {
+      const std::string name = temporary_file(".geo");
+      std::ofstream(name) << planes << extra;
+      for (const double spacing : {10.0, 7.0})
+        {
+          const geometry::TerrainGrid grid =
+            geometry::terrain_grid_from_surface(name, "Terrain file", spacing);
+          const unsigned int n_x = spacing == 10 ? 6 : 9,
+                             n_y = spacing == 10 ? 5 : 7;
+          ASSERT_EQ(grid.x.size(), n_x) << spacing;
+          ASSERT_EQ(grid.y.size(), n_y) << spacing;
+          EXPECT_EQ(grid.x.front(), 0);
+          EXPECT_EQ(grid.x.back(), 50);
+          EXPECT_EQ(grid.y.front(), 0);
+          EXPECT_EQ(grid.y.back(), 40);
+          for (unsigned int j = 0; j < n_y; ++j)
+            for (unsigned int i = 0; i < n_x; ++i)
+              {
+                EXPECT_NEAR(grid.x[i], 50.0 * i / (n_x - 1), 1e-12);
+                EXPECT_NEAR(grid.at(i, j), slope(grid.x[i]), 1e-9)
+                  << grid.x[i] << ", " << grid.y[j] << extra;
+              }
+        }
+      std::filesystem::remove(name);
+    }
+  EXPECT_TRUE(geometry::is_surface_mesh_file("ground.MSH"));
+  EXPECT_TRUE(geometry::is_surface_mesh_file("dir.v2/ground.stl"));
+  EXPECT_FALSE(geometry::is_surface_mesh_file("ground.csv"));
+}
+
+
+
+// A Gmsh surface that leaves part of its rectangle uncovered, or has two
+// sheets over part of it: one line naming the entry, the file and a point.
+TEST(TerrainGrid, GmshSurfaceWithAGapOrAnOverhangIsNamed)
+{
+  const std::string entry = "Geometry/Slope 3D/Terrain file";
+  const auto wrong = [&](const std::string &geo, const std::string &message) {
+    const std::string name = temporary_file(".geo");
+    std::ofstream(name) << geo;
+    expect_error([&] { geometry::terrain_grid_from_surface(name, entry, 10); },
+                 entry + ": '" + name + "': " + message);
+    std::filesystem::remove(name);
+  };
+  wrong("Point(1) = {0, 0, 25, 10}; Point(2) = {50, 0, 35, 10};\n"
+        "Point(3) = {0, 40, 30, 10};\n"
+        "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};\n"
+        "Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\n",
+        "the surface does not cover x = 40, y = 10");
+  wrong("Point(1) = {0, 0, 25, 10}; Point(2) = {50, 0, 25, 10};\n"
+        "Point(3) = {50, 40, 25, 10}; Point(4) = {0, 40, 25, 10};\n"
+        "Point(5) = {20, 0, 30, 10}; Point(6) = {40, 0, 30, 10};\n"
+        "Point(7) = {40, 40, 30, 10}; Point(8) = {20, 40, 30, 10};\n"
+        "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};\n"
+        "Line(4) = {4, 1}; Line(5) = {5, 6}; Line(6) = {6, 7};\n"
+        "Line(7) = {7, 8}; Line(8) = {8, 5};\n"
+        "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+        "Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};\n",
+        "the surface has two elevations");
+}

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <limits>
 #include <set>
+#include <sstream>
 
 namespace fdem
 {
@@ -132,6 +133,15 @@ namespace fdem
         return Patterns::List(Patterns::Double(), 2, 2, ",");
       }
 
+
+
+      std::string
+      number_text(const double value)
+      {
+        std::ostringstream out;
+        out << value;
+        return out.str();
+      }
 
 
       std::string

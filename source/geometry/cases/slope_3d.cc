@@ -137,8 +137,21 @@ namespace fdem
           "grid in x and y (its sides there), with its base Base depth below "
           "the lowest point; Slope height, Slope angle, Toe length, Crest "
           "length, Toe elevation and Width are not used. Cells much smaller "
-          "than Mesh size make the mesh finer there. Empty: the straight "
-          "slope.");
+          "than Mesh size make the mesh finer there. Or a surface for Gmsh "
+          "(.msh of triangles or quadrangles, .geo whose surfaces Gmsh "
+          "meshes, .stl) covering a rectangle in x and y, one elevation at "
+          "each point: sampled on a grid over its extent every Terrain grid "
+          "spacing, the ground bilinear between the samples. Empty: the "
+          "straight slope.");
+        prm.declare_entry(
+          "Terrain grid spacing",
+          "0",
+          Patterns::Double(0),
+          "With a Gmsh surface as Terrain file: the largest distance between "
+          "the grid lines it is sampled on, in x and in y (m). The ground "
+          "follows the surface to within the variation of its slope over a "
+          "cell: give the spacing of the surface's features you want kept. "
+          "0: Mesh size.");
         prm.declare_entry(
           "Element shape",
           "hexahedron",
@@ -182,8 +195,9 @@ namespace fdem
           prm.get("Layer boundaries"), "Geometry/Slope 3D/Layer boundaries");
         if (surface == Surface::sphere)
           half_length = radius;
-        terrain_file = prm.get("Terrain file");
-        terrain      = TerrainGrid();
+        terrain_file    = prm.get("Terrain file");
+        terrain_spacing = prm.get_double("Terrain grid spacing");
+        terrain         = TerrainGrid();
       }
       prm.leave_subsection();
     }
@@ -194,10 +208,20 @@ namespace fdem
     Slope3D::load_terrain(const std::string &prm_directory)
     {
       terrain = TerrainGrid();
-      if (!terrain_file.empty())
-        terrain = terrain_grid_from_file(
-          (std::filesystem::path(prm_directory) / terrain_file).string(),
-          "Geometry/Slope 3D/Terrain file");
+      if (terrain_file.empty())
+        return;
+      const std::string path =
+        (std::filesystem::path(prm_directory) / terrain_file).string();
+      const std::string entry = "Geometry/Slope 3D/Terrain file";
+      if (is_surface_mesh_file(terrain_file))
+        {
+          case_input::require(mesh_size > 0,
+                              "Geometry/Slope 3D/Mesh size: must be positive.");
+          terrain = terrain_grid_from_surface(
+            path, entry, terrain_spacing > 0 ? terrain_spacing : mesh_size);
+        }
+      else
+        terrain = terrain_grid_from_file(path, entry);
     }
 
 

@@ -45,14 +45,6 @@ namespace fdem
           text += (text.empty() ? "" : ", ") + f;
         return text;
       }
-
-      std::string
-      number_text(const double value)
-      {
-        std::ostringstream out;
-        out << value;
-        return out.str();
-      }
     } // namespace
 
 
@@ -191,8 +183,8 @@ namespace fdem
                         ExcMessage(where +
                                    ": the grid has no elevation at "
                                    "x = " +
-                                   number_text(px) +
-                                   ", y = " + number_text(py) +
+                                   case_input::number_text(px) +
+                                   ", y = " + case_input::number_text(py) +
                                    " (every x of the file with every y, " +
                                    std::to_string(grid.x.size()) + " x " +
                                    std::to_string(grid.y.size()) +

@@ -126,6 +126,10 @@ namespace fdem
       Patterns::List
       orientation_pattern();
 
+      /** @p value as a message shows it (the stream's default format). */
+      std::string
+      number_text(const double value);
+
       /** Help text of a plane orientation entry about @p plane. */
       std::string
       orientation_help(const std::string &plane);

@@ -91,6 +91,9 @@ namespace fdem
        */
       std::string terrain_file;
       TerrainGrid terrain;
+      /** The grid spacing a Gmsh surface as terrain is sampled at (0: Mesh
+       * size). */
+      double terrain_spacing = 0;
 
       /** x of the crest edge, L_t + H cot beta (the straight slope). */
       double

@@ -1,0 +1,21 @@
+// A ground surface with two sheets over part of its plan: an overhang.
+Point(1) = {0, 0, 25, 10};
+Point(2) = {50, 0, 25, 10};
+Point(3) = {50, 40, 25, 10};
+Point(4) = {0, 40, 25, 10};
+Point(5) = {20, 0, 30, 10};
+Point(6) = {40, 0, 30, 10};
+Point(7) = {40, 40, 30, 10};
+Point(8) = {20, 40, 30, 10};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Line(5) = {5, 6};
+Line(6) = {6, 7};
+Line(7) = {7, 8};
+Line(8) = {8, 5};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Curve Loop(2) = {5, 6, 7, 8};
+Plane Surface(2) = {2};
