@@ -98,11 +98,17 @@ def circle_surface(ground, centre, radius, n_points=2001):
     right whose end points lie on the ground (found by bisection)."""
     xc, yc = centre
 
-    def depth(x):  # ground minus circle (lower half) at x
-        return elevation(ground, x) - (yc - math.sqrt(max(radius**2 - (x - xc) ** 2, 0.0)))
+    def circle(x):  # the lower half
+        return yc - math.sqrt(max(radius**2 - (x - xc) ** 2, 0.0))
+
+    def depth(x):  # ground minus circle at x
+        return elevation(ground, x) - circle(x)
 
     xs = np.linspace(xc - radius, xc + radius, 20001)
-    inside = [depth(x) > 0 for x in xs]
+    # The ground's elevations in one np.interp call (the same values as
+    # elevation() point by point, 20000 calls fewer); the circle's as before.
+    grounds = np.interp(xs, [p[0] for p in ground], [p[1] for p in ground])
+    inside = [g - circle(x) > 0 for g, x in zip(grounds, xs)]
     first = inside.index(True)
     last = len(inside) - 1 - inside[::-1].index(True)
     x0 = brentq(depth, xs[max(first - 1, 0)], xs[first], xtol=1e-13) if first > 0 else xs[0]
@@ -266,7 +272,9 @@ def _spencer_thrusts(slices, F, lam, crack_force):
     """The effective base normal forces N of the slices and the interslice
     thrusts E at their right-hand boundaries (E = 0 at the toe), for the
     mass moving to the left. @p slices is the dict of arrays of
-    slice_arrays()."""
+    slice_arrays(). @p F may be a column of factors (shape (m, 1)): a row
+    per factor then, each the same operations as for that F alone (the
+    cumulative sum runs along the slices in order either way)."""
     s = slices
     sa, ca = s["sin"], s["cos"]
     a, b = s["c"] * s["l"] / F, s["tan_phi"] / F
@@ -277,24 +285,26 @@ def _spencer_thrusts(slices, F, lam, crack_force):
     num = (s["U"] * ca + a * sa - (s["W"] - s["V"])) - lam * (a * ca - s["U"] * sa + Px)
     den = lam * (b * ca - sa) - (ca + b * sa)
     N = num / den
-    return N, np.cumsum(N * (b * ca - sa) + (a * ca - s["U"] * sa + Px))
+    return N, np.cumsum(N * (b * ca - sa) + (a * ca - s["U"] * sa + Px), axis=-1)
 
 
 def _spencer_residuals(slices, F, lam, crack_force, crack_point):
     """E at the last boundary (force equilibrium) and the total moment about
     the origin (moment equilibrium), for the mass moving to the left.
-    @p slices is the dict of arrays of slice_arrays()."""
+    @p slices is the dict of arrays of slice_arrays(); @p F a factor or a
+    column of them, as for _spencer_thrusts()."""
     s = slices
     sa, ca = s["sin"], s["cos"]
     a, b = s["c"] * s["l"] / F, s["tan_phi"] / F
     N, thrusts = _spencer_thrusts(slices, F, lam, crack_force)
-    E = thrusts[-1]
+    E = thrusts[..., -1]
     S = a + b * N
     # Moment about the origin of the weights, the base forces and the
     # crack's water force; interslice forces cancel in the sum.
     fx = -(N + s["U"]) * sa + S * ca
     fy = (N + s["U"]) * ca + S * sa
-    moment = np.sum(s["xm"] * fy - s["ym"] * fx - s["xg"] * (s["W"] - s["V"]) + s["yg"] * s["Q"])
+    moment = np.sum(s["xm"] * fy - s["ym"] * fx - s["xg"] * (s["W"] - s["V"]) + s["yg"] * s["Q"],
+                    axis=-1)
     if crack_force:
         moment += crack_point[1] * crack_force  # r x F with F = (-P, 0)
     return E, moment
@@ -315,7 +325,7 @@ def spencer(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0
 
     def force_F(lam):
         f = lambda F: _spencer_residuals(slices, F, lam, mass.crack_force, mass.crack_point)[0]
-        return _root_in_F(f, slices)
+        return _root_in_F(f, slices, lambda Fs: f(Fs[:, np.newaxis]))
 
     def moment_gap(lam):
         F = force_F(lam)
@@ -325,17 +335,23 @@ def spencer(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0
                            np.sum(slices["W"]) * (mass.x[-1] - mass.x[0]))
 
 
-def _largest_root(f, low, high, n):
+def _largest_root(f, low, high, n, f_many=None):
+    """The largest root of @p f in [low, high]: a sign change over n
+    geometrically spaced factors, refined by Brent. @p f_many, if given,
+    evaluates f on an array of factors at once (the same values as f one by
+    one: the scan is most of the work, and one array pass costs what a few
+    single calls do)."""
     Fs = np.geomspace(low, high, n)
-    values = [f(F) for F in Fs]
+    values = f_many(Fs) if f_many is not None else [f(F) for F in Fs]
     for i in reversed(range(len(Fs) - 1)):
         if np.isfinite(values[i]) and np.isfinite(values[i + 1]) and values[i] * values[i + 1] <= 0:
             return brentq(f, Fs[i], Fs[i + 1], xtol=1e-14, rtol=1e-14)
     return None
 
 
-def _root_in_F(f, slices):
-    """The largest root of f in [0.05, 50]. Small spurious roots exist where
+def _root_in_F(f, slices, f_many=None):
+    """The largest root of f in [0.05, 50] (@p f_many: f on an array of
+    factors, see _largest_root()). Small spurious roots exist where
     a slice's normal-force denominator (Bishop's m_alpha = cos(alpha) +
     sin(alpha) tan(phi) / F) changes sign at a small F; the physical root is
     the one above them. A root at which some m_alpha of @p slices (arrays
@@ -346,10 +362,10 @@ def _root_in_F(f, slices):
         return F is not None and bool(np.all(
             np.cos(slices["alpha"]) + np.sin(slices["alpha"]) * slices["tan_phi"] / F > 0))
 
-    F = _largest_root(f, 0.05, 50, 200)
+    F = _largest_root(f, 0.05, 50, 200, f_many)
     if admissible(F):
         return F
-    F = _largest_root(f, 50, 1e4, 100)
+    F = _largest_root(f, 50, 1e4, 100, f_many)
     if admissible(F):
         return F
     raise ValueError("no factor of safety in [0.05, 1e4] with every m_alpha positive")
@@ -363,19 +379,30 @@ def bishop(section, centre, radius, n_slices=400):
     slices = mass.slices()
     xc = -centre[0] if mass.mirrored else centre[0]
 
+    # What does not depend on F, once: per slice cos(alpha), sin(alpha)
+    # tan(phi) and the numerator of its resisting term; the driving moment.
+    cos_alpha, sin_tan_phi, numerator = [], [], []
+    driving = 0.0
+    for s in slices:
+        sa, ca = math.sin(s["alpha"]), math.cos(s["alpha"])
+        width = s["l"] * ca
+        cos_alpha.append(ca)
+        sin_tan_phi.append(sa * s["tan_phi"])
+        numerator.append(s["c"] * width + (s["W"] - s["V"] - s["U"] * ca) * s["tan_phi"])
+        # The weight's moment about the centre, for a mass moving left, and
+        # the seismic force's (Q to the left at yg).
+        driving += (s["W"] - s["V"]) * (s["xg"] - xc) + s["Q"] * (centre[1] - s["yg"])
+    cos_alpha, sin_tan_phi, numerator = map(np.array, (cos_alpha, sin_tan_phi, numerator))
+
     def g(F):
-        resisting, driving = 0.0, 0.0
-        for s in slices:
-            sa, ca = math.sin(s["alpha"]), math.cos(s["alpha"])
-            m = ca + sa * s["tan_phi"] / F
-            width = s["l"] * ca
-            resisting += (s["c"] * width + (s["W"] - s["V"] - s["U"] * ca) * s["tan_phi"]) / m
-            # The weight's moment about the centre, for a mass moving left,
-            # and the seismic force's (Q to the left at yg).
-            driving += (s["W"] - s["V"]) * (s["xg"] - xc) + s["Q"] * (centre[1] - s["yg"])
+        """@p F a factor or an array of them. The resisting terms are summed
+        slice after slice (cumsum adds in the order of a loop), so that each
+        F gets the value it would alone."""
+        m = cos_alpha + sin_tan_phi / np.expand_dims(F, -1)
+        resisting = np.cumsum(numerator / m, axis=-1)[..., -1]
         return F - radius * resisting / driving
 
-    return _root_in_F(g, slice_arrays(slices))
+    return _root_in_F(g, slice_arrays(slices), g)
 
 
 def _section_strength(mass, x):
@@ -528,34 +555,73 @@ def _root_in_lambda(gap, lams, F_of, scale):
     raise ValueError("no interslice force scale satisfies both equilibria")
 
 
-def _interslice_residuals(s, F, lam, f, crack_force, crack_point):
+class _InterSliceMarch:
     """Morgenstern-Price's march: X = lam f E on each vertical boundary
     (f at the boundaries, E = 0 at the toe), each slice's effective normal
     force from its vertical equilibrium and the thrust on its right from its
-    horizontal one. Returns the thrust left at the crest end and the moment
-    about the origin of the weights, base forces and the crack's water (the
-    interslice forces cancel in it). With f = 1 it is Spencer's."""
-    n = len(s["W"])
-    E, moment = 0.0, 0.0
-    for i in range(n):
-        sa, ca = s["sin"][i], s["cos"][i]
-        a, b = s["c"][i] * s["l"][i] / F, s["tan_phi"][i] / F
-        Px = (-crack_force if i == n - 1 else 0.0) - s["Q"][i]
-        g = a * ca - s["U"][i] * sa + Px
-        h = b * ca - sa
-        # y: N (ca + b sa) + U ca + a sa - W + lam f_L E_L - lam f_R E_R = 0,
-        # with E_R = E_L + N h + g.
-        N = ((s["U"][i] * ca + a * sa - (s["W"][i] - s["V"][i])) + lam * (f[i] - f[i + 1]) * E
-             - lam * f[i + 1] * g) / (lam * f[i + 1] * h - (ca + b * sa))
-        E += N * h + g
-        S = a + b * N
-        fx = -(N + s["U"][i]) * sa + S * ca
-        fy = (N + s["U"][i]) * ca + S * sa
-        moment += (s["xm"][i] * fy - s["ym"][i] * fx - s["xg"][i] * (s["W"][i] - s["V"][i])
-                   + s["yg"][i] * s["Q"][i])
-    if crack_force:
-        moment += crack_point[1] * crack_force
-    return E, moment
+    horizontal one. residuals() returns the thrust left at the crest end and
+    the moment about the origin of the weights, base forces and the crack's
+    water (the interslice forces cancel in it). With f = 1 it is Spencer's.
+
+    The root finders evaluate the march thousands of times, and it
+    is sequential (a slice's N needs the thrust on its left), so its speed
+    is a Python loop's: what depends on neither F nor lambda is worked out
+    once, and the loop runs on Python floats (several times faster than
+    numpy scalars, and rounded the same). Every sum and product is the one
+    of the textbook march, in the same order."""
+
+    def __init__(self, s, f, crack_force, crack_point):
+        """@p s: the dict of arrays of slice_arrays(); @p f: the interslice
+        function at the slices' boundaries."""
+        self.crack_force, self.crack_point = crack_force, crack_point
+        n = len(s["W"])
+        s = {k: v.tolist() for k, v in s.items()}
+        f = [float(v) for v in f]
+        self.rows = []
+        for i in range(n):
+            sa, ca, U, W_V = s["sin"][i], s["cos"][i], s["U"][i], s["W"][i] - s["V"][i]
+            # The crack's water on the upper slice and the seismic force Q
+            # on every slice push to the left.
+            Px = (-crack_force if i == n - 1 else 0.0) - s["Q"][i]
+            self.rows.append((sa, ca, s["c"][i] * s["l"][i], s["tan_phi"][i], U, U * ca, U * sa,
+                              W_V, Px, f[i] - f[i + 1], f[i + 1],
+                              s["xm"][i], s["ym"][i], s["xg"][i] * W_V, s["yg"][i] * s["Q"][i]))
+
+    def residuals(self, F, lam, moment=True):
+        """(E at the crest, moment) at the factor @p F and scale @p lam; the
+        moment is None unless asked for. @p F may also be an array of
+        factors: the same operations element by element, so the same
+        values, for the scan of _largest_root() in one pass."""
+        lam = float(lam)  # a numpy scalar from a scan would slow the loop down
+        try:
+            return self._march(F, lam, moment)
+        except ZeroDivisionError:
+            # A denominator exactly zero: numpy's inf or nan (as an array
+            # of F gives), not an exception.
+            return self._march(np.float64(F), lam, moment)
+
+    def _march(self, F, lam, moment):
+        E, M = 0.0, 0.0
+        for sa, ca, cl, tan_phi, U, U_ca, U_sa, W_V, Px, df, f_right, xm, ym, xg_W, yg_Q \
+                in self.rows:
+            a, b = cl / F, tan_phi / F
+            g = a * ca - U_sa + Px
+            h = b * ca - sa
+            # y: N (ca + b sa) + U ca + a sa - W + lam f_L E_L - lam f_R E_R = 0,
+            # with E_R = E_L + N h + g.
+            N = ((U_ca + a * sa - W_V) + lam * df * E - lam * f_right * g) \
+                / (lam * f_right * h - (ca + b * sa))
+            E += N * h + g
+            if moment:
+                S = a + b * N
+                fx = -(N + U) * sa + S * ca
+                fy = (N + U) * ca + S * sa
+                M += xm * fy - ym * fx - xg_W + yg_Q
+        if not moment:
+            return E, None
+        if self.crack_force:
+            M += self.crack_point[1] * self.crack_force
+        return E, M
 
 
 def morgenstern_price(section, surface, n_slices=400, function="half-sine", crack_depth=0.0,
@@ -571,13 +637,14 @@ def morgenstern_price(section, surface, n_slices=400, function="half-sine", crac
     else:
         f, lams = np.sin(math.pi * (x - x[0]) / (x[-1] - x[0])), np.linspace(-1.2, 2.4, 73)
 
+    march = _InterSliceMarch(s, f, mass.crack_force, mass.crack_point)
+
     def force_F(lam):
-        return _root_in_F(lambda F: _interslice_residuals(
-            s, F, lam, f, mass.crack_force, mass.crack_point)[0], s)
+        thrust = lambda F: march.residuals(F, lam, moment=False)[0]
+        return _root_in_F(thrust, s, thrust)
 
     def gap(lam):
-        return _interslice_residuals(s, force_F(lam), lam, f, mass.crack_force,
-                                     mass.crack_point)[1]
+        return march.residuals(force_F(lam), lam)[1]
 
     return _root_in_lambda(gap, lams, force_F, np.sum(s["W"]) * (x[-1] - x[0]))
 
@@ -606,8 +673,9 @@ def janbu(section, surface, n_slices=400, crack_depth=0.0, crack_water_depth=0.0
     mass = SlicedMass(section, surface, n_slices, crack_depth, crack_water_depth)
     s = slice_arrays(mass.slices())
     f = np.ones(len(mass.x))
-    F0 = _root_in_F(lambda F: _interslice_residuals(
-        s, F, 0.0, f, mass.crack_force, mass.crack_point)[0], s)
+    march = _InterSliceMarch(s, f, mass.crack_force, mass.crack_point)
+    thrust = lambda F: march.residuals(F, 0.0, moment=False)[0]
+    F0 = _root_in_F(thrust, s, thrust)
     (x0, y0), (x1, y1) = mass.surface[0], mass.surface[-1]
     L = math.hypot(x1 - x0, y1 - y0)
     d = max(max(((x1 - x0) * (y0 - y) - (y1 - y0) * (x0 - x)) / L for x, y in mass.surface), 0.0)
