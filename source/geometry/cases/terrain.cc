@@ -14,7 +14,6 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <sstream>
 
 namespace fdem
 {

@@ -22,7 +22,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 namespace fdem
 {
@@ -167,13 +166,15 @@ namespace fdem
         };
       std::vector<std::vector<unsigned int>> in_bucket(n_buckets * n_buckets);
       const double                           size = std::max(x1 - x0, y1 - y0);
+      // Twice each triangle's signed area in the plan.
+      std::vector<double> plan_area(triangles.size());
       for (unsigned int k = 0; k < triangles.size(); ++k)
         {
-          const Triangle &t    = triangles[k];
-          const double    area = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
-                              (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
+          const Triangle &t = triangles[k];
+          plan_area[k]      = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
+                         (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
           // A vertical facet (a cliff in the survey) covers no point.
-          if (std::abs(area) <= 1e-12 * size * size)
+          if (std::abs(plan_area[k]) <= 1e-12 * size * size)
             continue;
           const auto [ax, bx] = std::minmax({t[0][0], t[1][0], t[2][0]});
           const auto [ay, by] = std::minmax({t[0][1], t[1][1], t[2][1]});
@@ -193,9 +194,8 @@ namespace fdem
             for (const unsigned int k :
                  in_bucket[bucket(py, y0, y1) * n_buckets + bucket(px, x0, x1)])
               {
-                const Triangle &t = triangles[k];
-                const double area = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
-                                    (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
+                const Triangle &t    = triangles[k];
+                const double    area = plan_area[k];
                 // Barycentric coordinates of the point in the plan.
                 const double b1 = ((px - t[0][0]) * (t[2][1] - t[0][1]) -
                                    (t[2][0] - t[0][0]) * (py - t[0][1])) /
