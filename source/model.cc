@@ -372,17 +372,27 @@ namespace fdem
                 ExcMessage("Reinforcement: passive bars need Solver/Mixed "
                            "system = dense; the iterative solver does not "
                            "take their rows yet."));
-    mixed_system = std::make_unique<contact::MixedSystem<dim>>(
+    contact::KrylovControl krylov;
+    krylov.tolerance = parameters.solver.gmres_tolerance;
+    // The Dirichlet preconditioner factorises each block once more, on one
+    // rank (DirichletPreconditioner): with more MPI ranks the pairs' one.
+    krylov.preconditioner =
+      parameters.solver.mixed_preconditioner == "Dirichlet" &&
+          Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ?
+        contact::KrylovPreconditioner::dirichlet :
+        contact::KrylovPreconditioner::pairs;
+    krylov.direct_solver = parameters.solver.direct_solver;
+    mixed_system         = std::make_unique<contact::MixedSystem<dim>>(
       blocks,
       external_displacements,
       interfaces,
       parameters.solver.mixed_system == "iterative" ?
-        contact::MixedSystemSolver::iterative :
-        contact::MixedSystemSolver::dense,
+                contact::MixedSystemSolver::iterative :
+                contact::MixedSystemSolver::dense,
       parameters.safety_factor.compute &&
         parameters.safety_factor.stiffness_check,
-      bar_links);
-    mixed_system->krylov_control.tolerance = parameters.solver.gmres_tolerance;
+      bar_links,
+      krylov);
   }
 
   template <int dim>

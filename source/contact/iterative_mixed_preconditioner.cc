@@ -8,6 +8,7 @@
 // neighbouring pairs for the smooth force patterns, which the pairs' blocks
 // precondition worst. All of it is done once per model, in the flexibility
 // phase.
+#include <fdem/contact/dirichlet_preconditioner.h>
 #include <fdem/contact/iterative_mixed_solver.h>
 #include <fdem/linear_algebra/dense_lu.h>
 
@@ -88,7 +89,15 @@ namespace fdem
               projector_coefficients = std::move(B);
             }
         }
-      setup_coarse_space();
+      // The Dirichlet preconditioner is the inverse of C at every scale: the
+      // smooth patterns, for which the groups were made, need no coarse space
+      // beyond the rigid unknowns (FETI's own).
+      if (system.krylov_control.preconditioner ==
+          KrylovPreconditioner::dirichlet)
+        dirichlet = std::make_unique<DirichletPreconditioner<dim>>(
+          system, system.krylov_control.direct_solver);
+      else
+        setup_coarse_space();
     }
 
     template <int dim>

@@ -13,6 +13,7 @@
 // on the rigid modes (MixedSystem::solve, RigidModeTest). A coarse
 // correction on groups of neighbouring pairs takes care of the smooth force
 // patterns, which the pairs' blocks precondition worst.
+#include <fdem/contact/dirichlet_preconditioner.h>
 #include <fdem/contact/iterative_mixed_solver.h>
 #include <fdem/linear_algebra/dense_lu.h>
 
@@ -48,6 +49,9 @@ namespace fdem
     {
       setup_preconditioner();
     }
+
+    template <int dim>
+    IterativeMixedSolver<dim>::~IterativeMixedSolver() = default;
 
     template <int dim>
     std::string
@@ -141,12 +145,78 @@ namespace fdem
             std::abs(determinant(M_scaled)) > 1e-14 * std::pow(size, dim) ?
               invert(M) :
               Tensor<2, dim>(unit_symmetric_tensor<dim>());
+          if (dirichlet)
+            continue;
           const Tensor<2, dim> MG = M_inverse[p] * rows[p].gap;
           for (unsigned int r = 0; r < n_rigid; ++r)
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int k = 0; k < dim; ++k)
                 H(dim * p + i, r) +=
                   MG[i][k] * rigid_scale[r] * rigid_coupling(dim * p + k, r);
+        }
+
+      // The pairs' part of the preconditioner: t = M_p^{-1} r_p per pair,
+      // which solves the pairs' rows with C replaced by its pairs' blocks
+      // D_p. With the Dirichlet preconditioner H ~ C^{-1} (FETI's), t is
+      // corrected once: the local solution (f = t, displacement u = D t)
+      // satisfies the rows but not the global law f = H u; its mismatch
+      // e = H D t - t, taken up by the rows with the local law
+      // (G dU + F df = 0, df - D^{-1} dU = e), gives f = t + M^{-1} G D e.
+      // For a sticking pair (G = I, F = 0) that is f = H r, FETI's
+      // preconditioner; rows that fix forces (open, a slip limit, a held
+      // direction) stay satisfied exactly, and the 3D slip's row across the
+      // slip takes the correction by its weight on the gap. (Replacing f by
+      // H u along the directions that the force rows leave free instead
+      // needed twice the iterations once pairs slipped: 21.8 GMRES
+      // iterations per solve against 9.5 at 121 pairs.)
+      const auto local_solve = [&](const std::vector<Vector<double>> &r) {
+        std::vector<Vector<double>> t(r.size(), Vector<double>(n_forces));
+        for (unsigned int c = 0; c < r.size(); ++c)
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int k = 0; k < dim; ++k)
+                t[c][dim * p + i] += M_inverse[p][i][k] * r[c][dim * p + k];
+        if (!dirichlet)
+          return t;
+        std::vector<Vector<double>> u(r.size(), Vector<double>(n_forces));
+        for (unsigned int c = 0; c < r.size(); ++c)
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int k = 0; k < dim; ++k)
+                u[c][dim * p + i] +=
+                  projected_self_flexibility[p][i][k] * t[c][dim * p + k];
+        const std::vector<Vector<double>> h = dirichlet->apply(u);
+        for (unsigned int c = 0; c < r.size(); ++c)
+          for (unsigned int p = 0; p < n_pairs; ++p)
+            {
+              Tensor<1, dim> e, t_p;
+              for (unsigned int i = 0; i < dim; ++i)
+                {
+                  e[i]   = h[c][dim * p + i] - t[c][dim * p + i];
+                  t_p[i] = t[c][dim * p + i];
+                }
+              const Tensor<1, dim> correction =
+                M_inverse[p] *
+                (rows[p].gap * (projected_self_flexibility[p] * e));
+              for (unsigned int i = 0; i < dim; ++i)
+                t[c][dim * p + i] = t_p[i] + correction[i];
+            }
+        return t;
+      };
+      if (dirichlet && n_rigid > 0)
+        {
+          // H = L(G W'), L the map above: its columns by one product each.
+          std::vector<Vector<double>> GW(n_rigid, Vector<double>(n_forces));
+          for (unsigned int r = 0; r < n_rigid; ++r)
+            for (unsigned int p = 0; p < n_pairs; ++p)
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int k = 0; k < dim; ++k)
+                  GW[r][dim * p + i] += rows[p].gap[i][k] * rigid_scale[r] *
+                                        rigid_coupling(dim * p + k, r);
+          const std::vector<Vector<double>> LGW = local_solve(GW);
+          for (unsigned int r = 0; r < n_rigid; ++r)
+            for (unsigned int j = 0; j < n_forces; ++j)
+              H(j, r) = LGW[r][j];
         }
       std::unique_ptr<linear_algebra::DenseLU> rigid_lu;
       solution.reciprocal_condition = 1;
@@ -175,11 +245,10 @@ namespace fdem
       const std::function<void(Vector<double> &, const Vector<double> &)>
         pair_preconditioner = [&](Vector<double> &z, const Vector<double> &r) {
           z.reinit(n);
-          Vector<double> t(n_forces), coarse_rhs(n_rigid);
-          for (unsigned int p = 0; p < n_pairs; ++p)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int k = 0; k < dim; ++k)
-                t[dim * p + i] += M_inverse[p][i][k] * r[dim * p + k];
+          Vector<double> r_forces(n_forces), coarse_rhs(n_rigid);
+          for (unsigned int j = 0; j < n_forces; ++j)
+            r_forces[j] = r[j];
+          Vector<double> t = local_solve({r_forces})[0];
           if (n_rigid > 0)
             {
               rigid_coupling.Tvmult(coarse_rhs, t);
@@ -227,7 +296,8 @@ namespace fdem
               RZ(row, c) = scale_row * coarse_basis(row, c);
           }
       FullMatrix<double> E(n_coarse, n_coarse);
-      RZ.Tmmult(E, AZ);
+      if (n_coarse > 0)
+        RZ.Tmmult(E, AZ);
       const linear_algebra::DenseLU coarse_lu(E);
       // A coarse problem without a digit left (no such state is known) is
       // left out: the pairs' preconditioner alone is still a preconditioner.

@@ -18,8 +18,10 @@ namespace fdem
       const std::vector<Interface<dim>> &interfaces,
       const MixedSystemSolver            solver,
       const bool                         keep_moving_part,
-      const std::vector<BarLink<dim>>   &bars)
-      : blocks(blocks)
+      const std::vector<BarLink<dim>>   &bars,
+      const KrylovControl               &krylov)
+      : krylov_control(krylov)
+      , blocks(blocks)
       , solver_type(solver)
       , bar_links(bars)
     {

@@ -109,6 +109,22 @@ namespace fdem
                         "left: on prm/paper_slope.prm 1e-8, 1e-6 and 1e-4 "
                         "moved K by 1e-9, 2e-6 and 3e-5 relative to 1e-12.");
       prm.declare_entry(
+        "Mixed preconditioner",
+        "Dirichlet",
+        Patterns::Selection("Dirichlet|pairs"),
+        "Mixed system = iterative: the preconditioner of GMRES. "
+        "Dirichlet: FETI's Dirichlet preconditioner, the inverse of the "
+        "interface flexibility approximated by the blocks' Schur "
+        "complements on their interface dofs (one more sparse "
+        "factorisation per block, of its stiffness with the interface "
+        "dofs fixed, so about twice the factors' memory), fitted to the "
+        "pairs' rows and the rigid unknowns; its GMRES iterations grow "
+        "little with the pairs. pairs: the pairs' own blocks of the "
+        "flexibility with a coarse correction on groups of neighbouring "
+        "pairs (no second factorisation; iterations grow with the "
+        "pairs). With more than one MPI rank pairs is used. See "
+        "doc/scaling.md for measurements.");
+      prm.declare_entry(
         "Block low-rank tolerance",
         "0",
         Patterns::Double(0, 1e-2),
@@ -134,9 +150,10 @@ namespace fdem
     SolverParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      direct_solver   = parse_direct_solver_type(prm.get("Direct solver"));
-      mixed_system    = prm.get("Mixed system");
-      gmres_tolerance = prm.get_double("GMRES tolerance");
+      direct_solver        = parse_direct_solver_type(prm.get("Direct solver"));
+      mixed_system         = prm.get("Mixed system");
+      gmres_tolerance      = prm.get_double("GMRES tolerance");
+      mixed_preconditioner = prm.get("Mixed preconditioner");
       block_low_rank_tolerance = prm.get_double("Block low-rank tolerance");
       prm.leave_subsection();
       // Only MUMPS has a low-rank mode: silently ignoring the entry would let

@@ -223,6 +223,19 @@ namespace fdem
         const Vector<double> &u,
         const unsigned int material_id = numbers::invalid_unsigned_int) const;
 
+      /**
+       * The assembled stiffness matrix K, with the Dirichlet conditions and
+       * the minimal support condensed (their rows and columns hold only a
+       * diagonal entry): what the factorisation factorised. The iterative
+       * mixed system's Dirichlet preconditioner builds the block's Schur
+       * complement on its interface dofs from it.
+       */
+      const TrilinosWrappers::SparseMatrix &
+      stiffness() const
+      {
+        return stiffness_matrix;
+      }
+
       /** Number of free rigid modes. */
       unsigned int
       n_free_rigid_modes() const

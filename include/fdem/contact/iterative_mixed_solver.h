@@ -9,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ namespace fdem
 {
   namespace contact
   {
+    template <int dim>
+    class DirichletPreconditioner;
+
     /**
      * The iterative solver of the mixed system (MixedSystemSolver::iterative):
      * C is never formed. GMRES works on x = [f; gamma w / c_0] (the rigid
@@ -26,7 +30,10 @@ namespace fdem
      * preconditioner is the same system with C replaced by the pairs' own
      * blocks of P C P (P onto ker W^T), solved exactly, with a coarse
      * correction on groups of neighbouring pairs for the smooth force
-     * patterns, which the pairs' blocks precondition worst.
+     * patterns, which the pairs' blocks precondition worst. With
+     * KrylovPreconditioner::dirichlet the pairs' solution is corrected by
+     * FETI's Dirichlet preconditioner H ~ C^{-1} (DirichletPreconditioner)
+     * through the pairs' rows, and the groups are not needed.
      */
     template <int dim>
     class IterativeMixedSolver
@@ -38,6 +45,8 @@ namespace fdem
        * blocks, which @p system counts.
        */
       explicit IterativeMixedSolver(MixedSystem<dim> &system);
+
+      ~IterativeMixedSolver();
 
       /**
        * The system with the rows @p rows, whose rigid modes can be held
@@ -59,6 +68,16 @@ namespace fdem
        */
       std::vector<Tensor<2, dim>> projected_self_flexibility;
 
+      /**
+       * The Dirichlet preconditioner, with KrylovPreconditioner::dirichlet;
+       * nullptr otherwise.
+       */
+      const DirichletPreconditioner<dim> *
+      dirichlet_preconditioner() const
+      {
+        return dirichlet.get();
+      }
+
     private:
       MixedSystem<dim> &system;
 
@@ -79,6 +98,9 @@ namespace fdem
       std::vector<unsigned int> pair_group;
       unsigned int              n_groups = 0;
       FullMatrix<double>        coarse_basis, coarse_flexibility;
+
+      /** KrylovPreconditioner::dirichlet: H ~ C^{-1}. */
+      std::unique_ptr<DirichletPreconditioner<dim>> dirichlet;
 
       /** Computes projected_self_flexibility and the coarse space. */
       void

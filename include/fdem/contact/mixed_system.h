@@ -104,6 +104,27 @@ namespace fdem
       iterative
     };
 
+    /**
+     * The preconditioner of the iterative solver ("Solver/Mixed
+     * preconditioner"), doc/theory.md.
+     */
+    enum class KrylovPreconditioner
+    {
+      /**
+       * The same system with C replaced by its pairs' own blocks of P C P,
+       * solved exactly, and a coarse correction on groups of neighbouring
+       * pairs.
+       */
+      pairs,
+      /**
+       * FETI's Dirichlet preconditioner: C^{-1} approximated by the blocks'
+       * Schur complements on their interface dofs, sum_b D_b B_b S_b B_b^T
+       * D_b (DirichletPreconditioner), fitted to the pairs' rows and the
+       * rigid unknowns.
+       */
+      dirichlet
+    };
+
     /** Controls of the iterative solver. */
     struct KrylovControl
     {
@@ -111,6 +132,15 @@ namespace fdem
       double tolerance = 1e-12;
       /** Largest number of GMRES iterations per solve. */
       unsigned int max_iterations = 2000;
+      /** The preconditioner; read when the system is constructed. */
+      KrylovPreconditioner preconditioner = KrylovPreconditioner::pairs;
+      /**
+       * KrylovPreconditioner::dirichlet: the back-end that factorises each
+       * block's stiffness with its interface dofs fixed (MUMPS_Schur stands
+       * for MUMPS: no Schur complement is kept).
+       */
+      parameters::DirectSolverType direct_solver =
+        parameters::DirectSolverType::mumps;
     };
 
     template <int dim>
@@ -152,7 +182,8 @@ namespace fdem
         const std::vector<Interface<dim>> &interfaces,
         const MixedSystemSolver            solver = MixedSystemSolver::dense,
         const bool                         keep_moving_part = false,
-        const std::vector<BarLink<dim>>   &bars             = {});
+        const std::vector<BarLink<dim>>   &bars             = {},
+        const KrylovControl               &krylov           = KrylovControl());
 
       /** The solvers keep a reference to the system: it stays where it is. */
       MixedSystem(const MixedSystem &) = delete;
@@ -416,6 +447,32 @@ namespace fdem
         return bar_links[p - n_contact_pairs()];
       }
 
+      /**
+       * The pairs that touch one block, the sign of the load they put on it
+       * (I receives -f, J receives +f), and their dofs on it, dim per pair.
+       */
+      struct BlockTouch
+      {
+        unsigned int                         block = 0;
+        std::vector<unsigned int>            pairs;
+        std::vector<double>                  signs;
+        std::vector<types::global_dof_index> dofs;
+      };
+
+      /** Every block that a pair touches, with those pairs. */
+      const std::vector<BlockTouch> &
+      block_touches() const
+      {
+        return touches;
+      }
+
+      /** Block @p b of the model. */
+      const blocks::ElasticBlock<dim> &
+      block(const unsigned int b) const
+      {
+        return *blocks[b];
+      }
+
       /** Number of rigid unknowns (free modes over all blocks). */
       unsigned int
       n_rigid_unknowns() const
@@ -450,17 +507,6 @@ namespace fdem
       std::vector<const NodePair<dim> *> pairs;
       std::vector<unsigned int>          pair_block_I, pair_block_J;
 
-      /**
-       * The pairs that touch one block, the sign of the load they put on it
-       * (I receives -f, J receives +f), and their dofs on it, dim per pair.
-       */
-      struct BlockTouch
-      {
-        unsigned int                         block = 0;
-        std::vector<unsigned int>            pairs;
-        std::vector<double>                  signs;
-        std::vector<types::global_dof_index> dofs;
-      };
       /** Every block that a pair touches. */
       std::vector<BlockTouch> touches;
       /** A direction with at most this self-flexibility is held (pair_rows()).

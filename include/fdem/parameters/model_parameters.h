@@ -266,6 +266,12 @@ namespace fdem
       /** Relative tolerance of GMRES for the iterative mixed system. */
       double gmres_tolerance = 1e-12;
       /**
+       * Preconditioner of the iterative mixed system: "Dirichlet" (FETI's
+       * Dirichlet preconditioner from the blocks' Schur complements) or
+       * "pairs" (the pairs' own blocks and groups of pairs).
+       */
+      std::string mixed_preconditioner = "Dirichlet";
+      /**
        * MUMPS's block low-rank dropping parameter CNTL(7) for the blocks'
        * factorisations (MUMPS_Schur, MUMPS); 0: full rank.
        */
