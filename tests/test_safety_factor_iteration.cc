@@ -110,6 +110,32 @@ TEST(SafetyFactorIteration, BracketAtTheLimitWithAMechanismAboveIsCertified)
   EXPECT_NEAR(result.safety_factor, 1.2, control.tolerance * 1.2);
 }
 
+TEST(SafetyFactorIteration, FailureBelowStrengthToSpareIsSolvedAgainOnce)
+{
+  // K* = 1.3 + 0.1 (K - 1), fixed point 4/3, a mechanism from 1.4 up; but
+  // the first solve at or above 1.2 fails as a mechanism (as a solve that
+  // started from a state further down, with pairs open, did on a sphere
+  // with a soft mass). The bracket closes below that failure with K* 2 %
+  // above K, so the iteration solves the failure's K again from the state
+  // below, once, and goes on to the fixed point.
+  parameters::SafetyFactorParameters control;
+  std::ostringstream                 log;
+  bool                               failed_once = false;
+  const auto                         result      = analyses::iterate(
+    [&](const double K) {
+      const bool fail = !failed_once && K >= 1.2;
+      failed_once     = failed_once || fail;
+      return synthetic_step(K, 1.3 + 0.1 * (K - 1), fail ? K : 1.4);
+    },
+    control,
+    log);
+  ASSERT_TRUE(result.converged) << log.str() << result.certificate.reason;
+  expect_certificate_holds(result, control.tolerance);
+  EXPECT_NEAR(result.safety_factor, 4.0 / 3, control.tolerance * 4 / 3);
+  EXPECT_NE(log.str().find("solving there again"), std::string::npos)
+    << log.str();
+}
+
 TEST(SafetyFactorCertificate, BracketNeedsAMechanismAbove)
 {
   // A bracket as the iteration leaves it: a solved K_lo whose K* agrees

@@ -451,6 +451,30 @@ namespace fdem
       }
 
       /**
+       * Whether to solve again at the failure K_high that closed the
+       * bracket, from the static state @p low just below it: where that
+       * state has strength to spare by eq. (12) (K* above K by more than
+       * Bracket agreement, so the bracket certifies nothing), the failure
+       * may belong to the state it started from rather than to K. Each
+       * solve starts from the last static state, and the failure's did
+       * from one further down: on a sphere in undrained soil with a 10
+       * times softer mass, a solve at K = 1.017281 from a state with 12
+       * pairs open ran away, while the states crept up to it from below
+       * were all closed with K* 1.1 % above K, and the same K solved again
+       * from them was static (the iteration then closed at K* = K). Once
+       * per failure K: a second failure there closes the bracket.
+       */
+      bool
+      retry_failure(const Step                               *low,
+                    const double                              K_high,
+                    const double                              K_retried,
+                    const parameters::SafetyFactorParameters &parameters)
+      {
+        return low != nullptr && std::isfinite(K_high) && K_high != K_retried &&
+               low->K_star > low->K * (1 + parameters.bracket_agreement);
+      }
+
+      /**
        * One line per step, for the default screen: K, K* and the pairs'
        * statuses (F_R and F_tau are in summary.json and the log file).
        */
@@ -489,6 +513,7 @@ namespace fdem
       History      solved{}; // the last solved steps, latest first
       const Step *&previous        = solved[0];
       unsigned int failures_in_row = 0;
+      double       K_retried       = nan; // a failure solved again
       result.reason                = "iteration limit reached";
       result.steps.reserve(parameters.max_iterations); // keeps `solved` valid
       for (unsigned int i = 0; i < parameters.max_iterations; ++i)
@@ -542,9 +567,26 @@ namespace fdem
             }
           if (!std::isnan(K_low) && K_high - K_low <= tolerance * K_low)
             {
-              result.reason =
-                "bracket: the largest K with a static solution, to the tolerance";
-              break;
+              const Step *low =
+                (s.has_factor() && !s.degenerate) ? &step : previous;
+              if (retry_failure(low, K_high, K_retried, parameters))
+                {
+                  log << "  K* is " << std::setprecision(3)
+                      << 100 * (low->K_star / low->K - 1)
+                      << " % above K just below the failure at K = "
+                      << std::setprecision(8) << K_high
+                      << ": solving there again from the static state"
+                      << std::endl;
+                  K_retried                  = K_high;
+                  result.steps.back().K_next = K_high;
+                  K_high = std::numeric_limits<double>::infinity();
+                }
+              else
+                {
+                  result.reason = "bracket: the largest K with a static "
+                                  "solution, to the tolerance";
+                  break;
+                }
             }
           if (std::isnan(K_low) && step.K_next < parameters.minimum_factor)
             {
