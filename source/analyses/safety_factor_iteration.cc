@@ -567,8 +567,11 @@ namespace fdem
             }
           if (!std::isnan(K_low) && K_high - K_low <= tolerance * K_low)
             {
+              // Only a static state solved after the failure is new to
+              // it: a failure that closes the bracket itself started from
+              // the latest static state already.
               const Step *low =
-                (s.has_factor() && !s.degenerate) ? &step : previous;
+                (s.has_factor() && !s.degenerate) ? &step : nullptr;
               if (retry_failure(low, K_high, K_retried, parameters))
                 {
                   log << "  K* is " << std::setprecision(3)
