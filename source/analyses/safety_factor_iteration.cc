@@ -451,6 +451,35 @@ namespace fdem
       }
 
       /**
+       * Whether to solve again at the failure K_high from the static state
+       * @p step solved after it: where that state has strength to spare
+       * beyond K_high by eq. (12) (K* above K_high by more than Bracket
+       * agreement, so a bracket closing there could certify nothing), the
+       * failure may belong to the state it started from rather than to K.
+       * Each solve starts from the last static state: on a sphere in
+       * undrained soil with a 10 times softer mass, a solve at K = 1.017281
+       * from a state with 12 pairs open ran away, the closed states solved
+       * below it afterwards had K* 1.1 % above K, and the same K solved
+       * again from one of them was static (the iteration then closed at
+       * K* = K). Once per failure K, and at most max_retries times in a
+       * run, so that a model whose failures are real (a free crack: K*
+       * far above every K) pays a few solves, not one per bisection.
+       */
+      bool
+      retry_failure(const Step                               &step,
+                    const double                              K_high,
+                    const double                              K_retried,
+                    const unsigned int                        n_retries,
+                    const parameters::SafetyFactorParameters &parameters)
+      {
+        constexpr unsigned int max_retries = 2;
+        return step.solution.has_factor() && !step.solution.degenerate &&
+               std::isfinite(K_high) && K_high != K_retried &&
+               n_retries < max_retries &&
+               step.K_star > K_high * (1 + parameters.bracket_agreement);
+      }
+
+      /**
        * One line per step, for the default screen: K, K* and the pairs'
        * statuses (F_R and F_tau are in summary.json and the log file).
        */
@@ -489,6 +518,8 @@ namespace fdem
       History      solved{}; // the last solved steps, latest first
       const Step *&previous        = solved[0];
       unsigned int failures_in_row = 0;
+      double       K_retried       = nan; // a failure solved again
+      unsigned int n_retries       = 0;
       result.reason                = "iteration limit reached";
       result.steps.reserve(parameters.max_iterations); // keeps `solved` valid
       for (unsigned int i = 0; i < parameters.max_iterations; ++i)
@@ -540,7 +571,18 @@ namespace fdem
                 << "  K* is independent of K (a planar limit): solving just below it"
                 << std::endl;
             }
-          if (!std::isnan(K_low) && K_high - K_low <= tolerance * K_low)
+          if (retry_failure(step, K_high, K_retried, n_retries, parameters))
+            {
+              log << "  K* = " << std::setprecision(8) << step.K_star
+                  << " lies beyond the failure at K = " << K_high
+                  << ": solving there again from this static state"
+                  << std::endl;
+              K_retried = K_high;
+              ++n_retries;
+              result.steps.back().K_next = K_high;
+              K_high = std::numeric_limits<double>::infinity();
+            }
+          else if (!std::isnan(K_low) && K_high - K_low <= tolerance * K_low)
             {
               result.reason =
                 "bracket: the largest K with a static solution, to the tolerance";

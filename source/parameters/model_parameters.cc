@@ -400,8 +400,20 @@ namespace fdem
         "points, constant beyond its edges. Below it the water pressure is "
         "gamma_w times the depth under the surface, used where a pressure "
         "or pore pressure is 'piezometric', and the saturated unit weight "
-        "acts. Relative to the .prm file's folder. Empty: none (or "
-        "Piezometric line); not both.");
+        "acts. Or a surface for Gmsh (.msh of triangles or quadrangles, "
+        ".geo whose surfaces Gmsh meshes, .stl) covering a rectangle in x "
+        "and y with one elevation at each point, sampled on a grid every "
+        "Piezometric surface grid spacing. Relative to the .prm file's "
+        "folder. Empty: none (or Piezometric line); not both.");
+      prm.declare_entry(
+        "Piezometric surface grid spacing",
+        "0",
+        Patterns::Double(0),
+        "With a Gmsh surface as Piezometric surface file: the largest "
+        "distance between the grid lines it is sampled on, in x and in y "
+        "(length). The water table follows the surface to within the "
+        "variation of its slope over a cell. 0: 200 steps along the "
+        "surface's longer side.");
       prm.leave_subsection();
     }
 
@@ -415,6 +427,7 @@ namespace fdem
       piezometric_line = parse_piezometric_line(prm.get("Piezometric line"),
                                                 "Water/Piezometric line");
       piezometric_surface_file = prm.get("Piezometric surface file");
+      const double spacing = prm.get_double("Piezometric surface grid spacing");
       prm.leave_subsection();
       piezometric_surface = geometry::TerrainGrid();
       if (piezometric_surface_file.empty())
@@ -426,11 +439,14 @@ namespace fdem
       AssertThrow(piezometric_line.empty(),
                   ExcMessage("Water/Piezometric surface file: give either it "
                              "or Water/Piezometric line, not both."));
+      const std::string path =
+        (std::filesystem::path(prm_directory) / piezometric_surface_file)
+          .string();
+      const std::string entry = "Water/Piezometric surface file";
       piezometric_surface =
-        geometry::terrain_grid_from_file((std::filesystem::path(prm_directory) /
-                                          piezometric_surface_file)
-                                           .string(),
-                                         "Water/Piezometric surface file");
+        geometry::is_surface_mesh_file(piezometric_surface_file) ?
+          geometry::terrain_grid_from_surface(path, entry, spacing) :
+          geometry::terrain_grid_from_file(path, entry);
     }
 
     void

@@ -823,14 +823,23 @@ def vtu_cells(path):
 
 
 def check_mpi(exe, prm, n_ranks="2"):
-    runs = []
+    runs, compressed = [], []
     for launcher in ([], ["mpirun", "-np", n_ranks, "--oversubscribe"]):
         with fdem_run.temporary_run(exe, prm, launcher=launcher) as result:
             assert result.returncode == 0, result.stdout + result.stderr
             files = sorted(os.listdir(result.output))
             cells = {f: vtu_cells(result.file(f)) for f in files if f.endswith(".vtu")}
+            # MUMPS's block low-rank statistics, one line per compressed
+            # factorisation (tests/mpi/slope_3d_block_low_rank.prm).
+            compressed.append(sum("after low-rank compression" in line
+                                  for line in open(result.file("log.txt"))))
             runs.append((result.stdout, result.summary, files, cells))
     (_, serial, serial_files, serial_cells), (log, parallel, files, cells) = runs
+    # A low-rank factorisation stays low-rank on the ranks: as many blocks
+    # compressed as serially (none where the case asks for full rank).
+    print(f"low-rank compressed factorisations: serial {compressed[0]}, "
+          f"{n_ranks} ranks {compressed[1]}")
+    assert compressed[0] == compressed[1], compressed
     assert serial["n_mpi_ranks"] == 1 and parallel["n_mpi_ranks"] == int(n_ranks)
     # Only rank 0 prints: one log, as long as the serial one.
     assert log.count("Result of ") == 1, "more than one rank printed the log"

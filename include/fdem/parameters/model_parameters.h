@@ -162,7 +162,7 @@ namespace fdem
       std::vector<std::array<double, 2>> piezometric_line;
       /**
        * The water table as a surface over x and y (3D only): elevations z
-       * on a rectangular grid, read like Geometry/Slope 3D/Terrain file
+       * on a rectangular grid or a Gmsh surface, read like the Terrain file
        * from Water/Piezometric surface file (kept here as given, relative
        * to the .prm's folder). Empty: none; not with a line.
        */

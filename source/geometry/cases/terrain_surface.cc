@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 //
-// A ground surface from a Gmsh surface (a .msh of triangles, a .geo Gmsh
-// meshes, an .stl): sampled on a rectangular grid, which the mesh
-// generator builds the ground from as for a grid file. Surveys come as
-// triangulated surfaces more often than as grids; the samples make the
-// same bilinear ground the generator already verifies.
+// A ground or water surface from a Gmsh surface (a .msh of triangles, a
+// .geo Gmsh meshes, an .stl): sampled on a rectangular grid, which the mesh
+// generator builds the ground from as for a grid file (and the water
+// pressures use as a grid file's). Surveys come as triangulated surfaces
+// more often than as grids; the samples make the same bilinear surface the
+// generator and the water already verify.
 
 #include <fdem/geometry/cases/case_input.h>
 #include <fdem/geometry/cases/terrain.h>
@@ -64,9 +65,11 @@ namespace fdem
                 const auto corner = [&](const int k) {
                   return node.at(nodes[e + k]);
                 };
-                triangles.push_back({corner(0), corner(1), corner(2)});
+                triangles.push_back(
+                  Triangle{{corner(0), corner(1), corner(2)}});
                 if (n_corners == 4)
-                  triangles.push_back({corner(0), corner(2), corner(3)});
+                  triangles.push_back(
+                    Triangle{{corner(0), corner(2), corner(3)}});
               }
           }
         return triangles;
@@ -102,7 +105,7 @@ namespace fdem
       AssertThrow(std::ifstream(file_name).good() &&
                     !std::filesystem::is_directory(file_name),
                   ExcMessage(where + " cannot be read (missing file?)."));
-      Assert(spacing > 0, ExcInternalError());
+      Assert(spacing >= 0, ExcInternalError());
       check_before_gmsh(file_name);
       std::vector<Triangle> triangles;
       {
@@ -125,7 +128,7 @@ namespace fdem
                              "quadrangles, nor surfaces Gmsh can mesh)."));
 
       // The grid spans the surface's extent in x and y, in equal steps of
-      // at most the spacing.
+      // at most the spacing (without one, 200 steps along the longer side).
       double x0 = triangles[0][0][0], x1 = x0, y0 = triangles[0][0][1], y1 = y0;
       for (const Triangle &t : triangles)
         for (const Point<3> &p : t)
@@ -137,14 +140,20 @@ namespace fdem
           }
       AssertThrow(x1 > x0 && y1 > y0,
                   ExcMessage(where + ": the surface has no extent in x or y."));
-      const double n_x = std::ceil((x1 - x0) / spacing - 1e-9),
-                   n_y = std::ceil((y1 - y0) / spacing - 1e-9);
+      const double step =
+        spacing > 0 ? spacing : std::max(x1 - x0, y1 - y0) / 200;
+      // The entry of the spacing is named after the file's ("Terrain
+      // file", "Terrain grid spacing").
+      const std::string spacing_entry =
+        entry.substr(0, entry.rfind("file")) + "grid spacing";
+      const double n_x = std::ceil((x1 - x0) / step - 1e-9),
+                   n_y = std::ceil((y1 - y0) / step - 1e-9);
       AssertThrow((n_x + 1) * (n_y + 1) <= 1e6,
                   ExcMessage(entry + ": sampling the surface every " +
-                             number_text(spacing) + " m gives " +
+                             number_text(step) + " m gives " +
                              number_text((n_x + 1) * (n_y + 1)) +
-                             " grid points (at most 1e6); give a larger "
-                             "Terrain grid spacing."));
+                             " grid points (at most 1e6); give a larger " +
+                             spacing_entry + "."));
       TerrainGrid grid;
       for (unsigned int i = 0; i <= n_x; ++i)
         grid.x.push_back(i == n_x ? x1 : x0 + i * (x1 - x0) / n_x);
@@ -217,7 +226,7 @@ namespace fdem
                              ", at x = " + number_text(px) +
                              ", y = " + number_text(py) +
                              " (an overhang or a fold); give a "
-                             "ground surface with one elevation "
+                             "surface with one elevation "
                              "at each point."));
                 found = true;
                 z     = elevation;
@@ -226,7 +235,7 @@ namespace fdem
                         ExcMessage(
                           where + ": the surface does not cover x = " +
                           number_text(px) + ", y = " + number_text(py) +
-                          " (the ground must cover the rectangle "
+                          " (the surface must cover the rectangle "
                           "of its extent in x and y, " +
                           number_text(x0) + " to " + number_text(x1) + " by " +
                           number_text(y0) + " to " + number_text(y1) + ")."));

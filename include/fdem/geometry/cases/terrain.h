@@ -94,16 +94,16 @@ namespace fdem
     is_surface_mesh_file(const std::string &file_name);
 
     /**
-     * Samples the ground surface in @p file_name, a Gmsh file (a .msh of
-     * triangles or quadrangles, a .geo whose surfaces Gmsh meshes with its
-     * own sizes, an .stl), on a rectangular grid over its extent in x and y
-     * in equal steps of at most @p spacing: each grid point takes the
-     * elevation of the surface element above or below it (linear on its
-     * flat corners). Throws a one-line message naming @p entry and the file
-     * if the file cannot be read, has no surface, does not cover a grid
-     * point (the surface must cover the rectangle of its extent), has two
-     * elevations at one (an overhang or a fold), or the grid would exceed
-     * 1e6 points.
+     * Samples the surface (ground or water) in @p file_name, a Gmsh file (a
+     * .msh of triangles or quadrangles, a .geo Gmsh meshes, an .stl), on a
+     * grid over its extent in x and y in steps of at most @p spacing (0: 200
+     * along the longer side): each grid point takes the elevation of the
+     * element above or below it (linear on its flat corners). Throws a
+     * one-line message naming @p entry and the file if the file cannot be
+     * read, has no surface, does not cover a grid point (the surface must
+     * cover the rectangle of its extent), has two elevations at one (an
+     * overhang), or the grid would exceed 1e6 points (naming the spacing's
+     * entry: @p entry with "file" replaced by "grid spacing").
      */
     TerrainGrid
     terrain_grid_from_surface(const std::string &file_name,
