@@ -63,8 +63,9 @@ namespace fdem
           const auto                      &touch  = touches[t];
           const blocks::ElasticBlock<dim> &block  = system.block(touch.block);
           const TrilinosWrappers::SparseMatrix &K = block.stiffness();
-          BlockPart                            &part = parts[t];
-          std::vector<int>                      index(K.m(), -1);
+          BlockPart                            &part  = parts[t];
+          std::vector<int>                     &index = part.dof_to_interface;
+          index.assign(K.m(), -1);
           part.interface_index.assign(touch.dofs.size(), -1);
           for (unsigned int d = 0; d < touch.dofs.size(); ++d)
             {
@@ -141,9 +142,7 @@ namespace fdem
       const std::size_t       n           = K.m();
       const unsigned int      n_vectors   = values.size();
       const unsigned int      n_interface = part.interface_dofs.size();
-      std::vector<int>        index(n, -1);
-      for (unsigned int g = 0; g < n_interface; ++g)
-        index[part.interface_dofs[g]] = g;
+      const std::vector<int> &index       = part.dof_to_interface;
 
       // K_GG v, and K_RG v as the right-hand side of K_RR (K symmetric: the
       // interface dofs' rows give both).

@@ -98,6 +98,9 @@ namespace fdem
          * fixed or roller direction: the block does not take it).
          */
         std::vector<int> interface_index;
+        /** Per dof of the block, its index in interface_dofs, or -1 (an
+         * interior dof): built once, used by every Schur product. */
+        std::vector<int> dof_to_interface;
         /** Per pair of the touch, its weight D_b. */
         std::vector<double> weights;
         /** K with the interface dofs' rows and columns fixed, factorised. */
