@@ -4,6 +4,7 @@
 #include <fdem/blocks/surface_loads.h>
 #include <fdem/checks/layout_checks.h>
 #include <fdem/geometry/make_mesh.h>
+#include <fdem/geometry/mesh_estimate.h>
 #include <fdem/linear_algebra/blas_threads.h>
 #include <fdem/model.h>
 #include <fdem/postprocess/output_files.h>
@@ -235,7 +236,8 @@ namespace fdem
                                           DirectSolverType::mumps_schur ?
                              DirectSolverType::mumps :
                              parameters.solver.direct_solver,
-                           parameters.solver.block_low_rank_tolerance);
+                           parameters.solver.block_low_rank_tolerance,
+                           geometry::memory_limit_MiB(parameters.geometry));
         }
         const std::string statistics = block->factorization_statistics();
         if (!statistics.empty())
@@ -381,14 +383,15 @@ namespace fdem
           Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ?
         contact::KrylovPreconditioner::dirichlet :
         contact::KrylovPreconditioner::pairs;
-    krylov.direct_solver = parameters.solver.direct_solver;
-    mixed_system         = std::make_unique<contact::MixedSystem<dim>>(
+    krylov.direct_solver    = parameters.solver.direct_solver;
+    krylov.memory_limit_MiB = geometry::memory_limit_MiB(parameters.geometry);
+    mixed_system            = std::make_unique<contact::MixedSystem<dim>>(
       blocks,
       external_displacements,
       interfaces,
       parameters.solver.mixed_system == "iterative" ?
-                contact::MixedSystemSolver::iterative :
-                contact::MixedSystemSolver::dense,
+                   contact::MixedSystemSolver::iterative :
+                   contact::MixedSystemSolver::dense,
       parameters.safety_factor.compute &&
         parameters.safety_factor.stiffness_check,
       bar_links,

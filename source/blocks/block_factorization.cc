@@ -48,7 +48,8 @@ namespace fdem
 
     std::unique_ptr<BlockFactorization>
     make_block_factorization(const parameters::DirectSolverType type,
-                             const double block_low_rank_tolerance)
+                             const double block_low_rank_tolerance,
+                             const double memory_limit_MiB)
     {
       using parameters::DirectSolverType;
       Assert(block_low_rank_tolerance == 0 ||
@@ -59,10 +60,14 @@ namespace fdem
         {
           case DirectSolverType::mumps_schur:
             return std::make_unique<MumpsSchurSolver>(
-              /*keep_schur_complement=*/true, block_low_rank_tolerance);
+              /*keep_schur_complement=*/true,
+              block_low_rank_tolerance,
+              memory_limit_MiB);
           case DirectSolverType::mumps:
             return std::make_unique<MumpsSchurSolver>(
-              /*keep_schur_complement=*/false, block_low_rank_tolerance);
+              /*keep_schur_complement=*/false,
+              block_low_rank_tolerance,
+              memory_limit_MiB);
           case DirectSolverType::cholmod:
             return std::make_unique<CholmodSolver>();
           case DirectSolverType::amesos_klu:

@@ -280,12 +280,14 @@ namespace fdem
     template <int dim>
     void
     ElasticBlock<dim>::factorize(const parameters::DirectSolverType solver_type,
-                                 const double block_low_rank_tolerance)
+                                 const double block_low_rank_tolerance,
+                                 const double memory_limit_MiB)
     {
       const auto start = std::chrono::steady_clock::now();
       // A new back-end: the old factors are freed before the new ones exist.
-      factorization =
-        make_block_factorization(solver_type, block_low_rank_tolerance);
+      factorization = make_block_factorization(solver_type,
+                                               block_low_rank_tolerance,
+                                               memory_limit_MiB);
       factorization->factorize(stiffness_matrix,
                                factorization->keeps_schur_complement() ?
                                  interface_schur_dofs() :

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/lac/lapack_templates.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -89,9 +90,11 @@ namespace fdem
     };
 
     MumpsSchurSolver::MumpsSchurSolver(const bool   keep_schur_complement,
-                                       const double block_low_rank_tolerance)
+                                       const double block_low_rank_tolerance,
+                                       const double memory_limit_MiB)
       : keep_schur_complement(keep_schur_complement)
       , block_low_rank_tolerance(block_low_rank_tolerance)
+      , memory_limit_MiB(memory_limit_MiB)
       , data(std::make_unique<Data>())
     {}
 
@@ -119,6 +122,43 @@ namespace fdem
                     (id.infog[0] == -10 ?
                        "): the block is not held (check its constraints)." :
                        ").")));
+    }
+
+    void
+    MumpsSchurSolver::check_memory(const unsigned int n_schur) const
+    {
+      if (memory_limit_MiB <= 0)
+        return;
+      const DMUMPS_STRUC_C &id = data->id;
+      // INFOG(17): the in-core factorisation's estimated work space, summed
+      // over the ranks, in MB of 10^6 bytes. MUMPS 5.5 allocates it from the
+      // full-rank estimate also in low-rank mode (doc/scaling.md). The
+      // Cholesky factor of the Schur complement takes MUMPS's n_S^2 array
+      // over, which the process already holds; its broadcast adds one per
+      // further rank. The message also gives the elimination's flops
+      // estimated by the analysis (RINFOG(1)): the time the refused
+      // factorisation would have taken.
+      const double mumps_MiB = infog_count(id, 17) * 1e6 / (1 << 20);
+      const double schur_MiB =
+        (n_ranks - 1) * 8.0 * n_schur * n_schur / (1 << 20);
+      Utilities::System::MemoryStats stats;
+      Utilities::System::get_memory_stats(stats);
+      const double held_MiB =
+        Utilities::MPI::sum(stats.VmRSS / 1024.0, communicator);
+      AssertThrow(
+        held_MiB + mumps_MiB + schur_MiB <= memory_limit_MiB,
+        ExcMessage(
+          "Geometry/Memory limit: the factorisation of a block stiffness "
+          "matrix of " +
+          std::to_string(id.n) + " dofs would need about " +
+          format("%.0f", mumps_MiB + schur_MiB) + " MiB (MUMPS's analysis; " +
+          format("%.2g", id.rinfog[0]) + " flops) beside the " +
+          format("%.0f", held_MiB) +
+          " MiB the run holds already, more than the " +
+          format("%.0f", memory_limit_MiB) +
+          " MiB allowed (0 is this machine's memory or ulimit -v). Use a "
+          "coarser mesh or raise the limit; a block low-rank tolerance does "
+          "not lower this need."));
     }
 
     namespace
@@ -315,7 +355,11 @@ namespace fdem
           id.listvar_schur = data->schur_list.data();
           id.schur         = host ? data->schur.data() : nullptr;
         }
-      run(4, "analysis and factorisation");
+      // Analysis, then the factorisation, once the analysis's estimate of
+      // its memory is known to fit.
+      run(1, "analysis");
+      check_memory(n_schur);
+      run(2, "factorisation");
       report = describe_factorization(id, block_low_rank_tolerance);
 
       // For a symmetric matrix MUMPS returns the lower triangle of S by rows

@@ -20,7 +20,8 @@ namespace fdem
     template <int dim>
     DirichletPreconditioner<dim>::DirichletPreconditioner(
       const MixedSystem<dim>            &system,
-      const parameters::DirectSolverType solver_type)
+      const parameters::DirectSolverType solver_type,
+      const double                       memory_limit_MiB)
       : system(system)
     {
       const auto start = std::chrono::steady_clock::now();
@@ -118,7 +119,9 @@ namespace fdem
           part.fixed_factorization = blocks::make_block_factorization(
             solver_type == parameters::DirectSolverType::mumps_schur ?
               parameters::DirectSolverType::mumps :
-              solver_type);
+              solver_type,
+            /*block_low_rank_tolerance=*/0,
+            memory_limit_MiB);
           part.fixed_factorization->factorize(part.fixed_stiffness, {});
         }
       factorization_seconds =

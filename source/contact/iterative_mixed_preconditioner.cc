@@ -95,7 +95,9 @@ namespace fdem
       if (system.krylov_control.preconditioner ==
           KrylovPreconditioner::dirichlet)
         dirichlet = std::make_unique<DirichletPreconditioner<dim>>(
-          system, system.krylov_control.direct_solver);
+          system,
+          system.krylov_control.direct_solver,
+          system.krylov_control.memory_limit_MiB);
       else
         setup_coarse_space();
     }

@@ -65,16 +65,21 @@ namespace fdem
           "Memory limit",
           "0",
           Patterns::Double(0),
-          "Largest memory the mesh of a built-in generator or a .geo file may "
-          "need, estimated before it is made (MiB; about 3 kB "
+          "Largest memory a run may need (MiB), checked twice. Before "
+          "meshing, the mesh of a built-in generator or a .geo file is "
+          "estimated (about 3 kB "
           "per degree of freedom and 1 kB per pair squared with the dense "
           "mixed system, 300 kB per pair with the iterative one, as "
-          "measured in doc/scaling.md). A finer mesh is refused with the "
-          "estimate. 0 "
+          "measured in doc/scaling.md) and a finer mesh is refused with the "
+          "estimate. Before each factorisation by MUMPS (MUMPS_Schur, MUMPS; "
+          "also the Dirichlet preconditioner's), MUMPS's analysis estimates "
+          "its memory, and a factorisation that would take the run beyond "
+          "the limit is refused. 0 "
           "means the physical memory of this machine, or the address space "
           "limit (ulimit -v) if smaller; set a larger value to override. "
           "A .geo file is estimated from Gmsh's mesh of its boundaries; a "
-          ".msh file is not (it is already meshed).");
+          ".msh file is not (it is already meshed), but its factorisations "
+          "are.");
         prm.declare_entry(
           "Time limit",
           "1800",

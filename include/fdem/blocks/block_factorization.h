@@ -112,10 +112,14 @@ namespace fdem
      * A new, not yet factorised, back-end of type @p type; with
      * @p block_low_rank_tolerance > 0 MUMPS's block low-rank factorisation
      * (MUMPS_Schur and MUMPS only; "Solver/Block low-rank tolerance").
+     * With @p memory_limit_MiB > 0 MUMPS refuses, after its analysis, a
+     * factorisation that would take the process beyond that memory
+     * (MumpsSchurSolver); the other back-ends estimate nothing.
      */
     std::unique_ptr<BlockFactorization>
     make_block_factorization(const parameters::DirectSolverType type,
-                             const double block_low_rank_tolerance = 0);
+                             const double block_low_rank_tolerance = 0,
+                             const double memory_limit_MiB         = 0);
 
     /**
      * Throws naming Solver/Direct solver = @p type if @p matrix lives on more

@@ -125,10 +125,13 @@ namespace fdem
        * Factorises the assembled K (the second half of
        * assemble_and_factorize); with @p block_low_rank_tolerance > 0 by
        * MUMPS's block low-rank factorisation (MUMPS_Schur, MUMPS only).
+       * @p memory_limit_MiB > 0: MUMPS refuses a factorisation that would
+       * not fit (make_block_factorization()).
        */
       void
       factorize(const parameters::DirectSolverType solver_type,
-                const double block_low_rank_tolerance = 0);
+                const double                       block_low_rank_tolerance = 0,
+                const double                       memory_limit_MiB = 0);
 
       /**
        * What the back-end reports of the factorisation of K (MUMPS: the

@@ -49,9 +49,14 @@ namespace fdem
        * @p keep_schur_complement: MUMPS_Schur (true) or MUMPS (false).
        * @p block_low_rank_tolerance > 0: MUMPS's block low-rank
        * factorisation with that dropping parameter (CNTL(7)).
+       * @p memory_limit_MiB > 0: after the analysis, factorize() throws if
+       * the memory MUMPS estimates for the factorisation (INFOG(17), all
+       * ranks), the Schur complement's factor and what the process's ranks
+       * hold already add up to more.
        */
       explicit MumpsSchurSolver(const bool   keep_schur_complement,
-                                const double block_low_rank_tolerance = 0);
+                                const double block_low_rank_tolerance = 0,
+                                const double memory_limit_MiB         = 0);
       ~MumpsSchurSolver() override;
       MumpsSchurSolver(const MumpsSchurSolver &) = delete;
       MumpsSchurSolver &
@@ -128,6 +133,7 @@ namespace fdem
     private:
       const bool   keep_schur_complement;
       const double block_low_rank_tolerance;
+      const double memory_limit_MiB;
       /** statistics() of the last factorisation, without "MUMPS: ". */
       std::string report;
       struct Data;
@@ -162,6 +168,13 @@ namespace fdem
       /** MUMPS solve of the interior: x_I = K_II^{-1} b_I, x_S = 0. */
       void
       solve_interior(std::vector<double> &b, const unsigned int n_rhs) const;
+
+      /**
+       * After the analysis: throws if the factorisation would take the
+       * process beyond memory_limit_MiB (when > 0), see the constructor.
+       */
+      void
+      check_memory(unsigned int n_schur) const;
 
       /** Runs one MUMPS phase and throws with INFOG(1..2) on failure. */
       void

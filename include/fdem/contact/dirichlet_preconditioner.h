@@ -48,10 +48,12 @@ namespace fdem
       /**
        * Factorises, for each block that a pair of @p system touches, its
        * stiffness with its interface dofs fixed, by the back-end
-       * @p solver_type (MUMPS_Schur stands for MUMPS).
+       * @p solver_type (MUMPS_Schur stands for MUMPS) within
+       * @p memory_limit_MiB (make_block_factorization()).
        */
       DirichletPreconditioner(const MixedSystem<dim>            &system,
-                              const parameters::DirectSolverType solver_type);
+                              const parameters::DirectSolverType solver_type,
+                              const double memory_limit_MiB = 0);
 
       ~DirichletPreconditioner();
 

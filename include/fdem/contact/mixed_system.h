@@ -141,6 +141,8 @@ namespace fdem
        */
       parameters::DirectSolverType direct_solver =
         parameters::DirectSolverType::mumps;
+      /** That back-end's memory limit (MiB; 0: none), as the blocks'. */
+      double memory_limit_MiB = 0;
     };
 
     template <int dim>
