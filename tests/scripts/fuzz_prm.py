@@ -130,11 +130,13 @@ def limit_memory():
 
 # Where summary.json may hold null by its schema (source/postprocess/summary.cc,
 # number_or_null: "not available"): no failed step (K_failed, the bracket's
-# upper end), a step that was not solved (its K_star), and what the
+# upper end), a step that was not solved (its K_star), the slope of K*
+# of a step where not every pair slips (K_star_slope), and what the
 # certificate, the stiffness check and the Hertz comparison's pressure fit
 # (contact_radius) could not compute. Everywhere else a
 # null is a NaN or an infinity that nlohmann wrote as null.
-MAY_BE_NULL = {"K_failed", "safety_factor_bracket", "K_star", "relative_difference",
+MAY_BE_NULL = {"K_failed", "safety_factor_bracket", "K_star", "K_star_slope",
+               "relative_difference",
                "relative_distance_left", "K_stiffer", "K_softer", "relative_change",
                "contact_radius", "contact_radius_error"}
 
