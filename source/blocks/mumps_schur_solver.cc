@@ -138,7 +138,7 @@ namespace fdem
       // further rank. The message also gives the elimination's flops
       // estimated by the analysis (RINFOG(1)): the time the refused
       // factorisation would have taken.
-      const double mumps_MiB = infog_count(id, 17) * 1e6 / (1 << 20);
+      const double mumps_MiB = infog(id, 17) * 1e6 / (1 << 20);
       const double schur_MiB =
         (n_ranks - 1) * 8.0 * n_schur * n_schur / (1 << 20);
       Utilities::System::MemoryStats stats;
