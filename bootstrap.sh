@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: LGPL-2.1-or-later
 # Set up, build and run fdem-slope on Debian 12 (run as root for the install).
-#   bash bootstrap.sh run [case.prm]   install, build (Release), run a case
-#                                      (default prm/paper_slope.prm)
+#   bash bootstrap.sh run [case.prm]   install, build the program (Release),
+#                                      run a case (default prm/paper_slope.prm)
 #   bash bootstrap.sh test             install, build (Release), run ctest
 #                                      (without the tests labelled heavy)
 #   bash bootstrap.sh heavy            the same, then the heavy tests only
@@ -24,7 +24,10 @@ cd "$(dirname "$0")"
 # a run's report.html (the test is skipped only where it is missing).
 # openmpi-bin: mpirun for the MPI runs and the mpi.* tests (libdeal.ii-dev
 # pulls in OpenMPI's libraries; named here so that mpirun is there for sure).
-packages=(cmake make g++ libdeal.ii-dev gmsh libgmsh-dev nlohmann-json3-dev
+# ccache: CMakeLists.txt compiles through it where it is installed, so that
+# a rebuild, a second clone or a worktree reuses what was compiled once
+# (doc/build.md).
+packages=(cmake make g++ ccache libdeal.ii-dev gmsh libgmsh-dev nlohmann-json3-dev
           libmumps-dev libsuitesparse-dev libgtest-dev numdiff python3-vtk9 python3-numpy python3-matplotlib
           libopenblas0-pthread openmpi-bin clang-format chromium)
 
@@ -59,7 +62,12 @@ case "$mode" in
     ;;
 esac
 cmake -S . -B "$build_dir" "${configure[@]}" ${CMAKE_ARGS:-} > /dev/null
-cmake --build "$build_dir" -j "$jobs"
+# A run needs the program only; the tests need everything.
+if [[ $mode == run ]]; then
+  cmake --build "$build_dir" -j "$jobs" --target fdem-slope
+else
+  cmake --build "$build_dir" -j "$jobs"
+fi
 
 case "$mode" in
   run)

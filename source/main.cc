@@ -17,7 +17,7 @@ namespace
 {
   const char *usage =
     "Usage: fdem-slope [--help] [--print-parameters] [--validate]\n"
-    "                  [--quiet | --verbose] case.prm\n"
+    "                  [--quiet | --verbose] [--no-report] case.prm\n"
     "  Computes contact forces and the safety factor of a slope with a known\n"
     "  sliding surface by the mixed FEM-DEM method (Liu et al. 2012).\n"
     "  The screen shows the case, the model, one line per safety-factor step\n"
@@ -27,6 +27,8 @@ namespace
     "  --quiet             for scripts: on success only K (17 digits) on\n"
     "                      stdout, nothing when no K is computed; errors\n"
     "                      stay one line on stderr\n"
+    "  --no-report         no report.html, whatever Output/Report says\n"
+    "                      (the run's other files are the same)\n"
     "  --print-parameters  print every parameter (for case.prm, or the\n"
     "                      default case) with its default and help text\n"
     "  --validate          read and check case.prm and the model's layout\n"
@@ -47,7 +49,7 @@ main(int argc, char *argv[])
       host = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       fdem::linear_algebra::choose_blas_threads();
       dealii::deallog.depth_console(0);
-      bool        print = false, validate = false;
+      bool        print = false, validate = false, report = true;
       auto        verbosity = fdem::postprocess::Verbosity::normal;
       std::string prm_file;
       for (int i = 1; i < argc; ++i)
@@ -62,6 +64,8 @@ main(int argc, char *argv[])
             print = true;
           else if (argument == "--validate")
             validate = true;
+          else if (argument == "--no-report")
+            report = false;
           else if (argument == "--quiet" || argument == "--verbose")
             {
               const auto level = argument == "--quiet" ?
@@ -130,7 +134,7 @@ main(int argc, char *argv[])
       nlohmann::json summary;
       try
         {
-          summary = fdem::run_case(prm_file, log);
+          summary = fdem::run_case(prm_file, log, report);
         }
       catch (...)
         {

@@ -251,9 +251,9 @@ TEST(Flexibility, SchurEqualsSolves2DConstrainedPairDof)
 TEST(Flexibility, SchurEqualsSolves3D)
 {
   auto parameters = parameters::read_parameters(
-    std::string(FDEM_SOURCE_DIR) + "/tests/three_d/block_on_plane_3d.prm");
+    fdem::test_support::source_dir() + "/tests/three_d/block_on_plane_3d.prm");
   parameters.geometry.mesh_file =
-    std::string(FDEM_SOURCE_DIR) + "/tests/data/block_on_plane_3d.geo";
+    fdem::test_support::source_dir() + "/tests/data/block_on_plane_3d.geo";
   parameters.output.directory = test_support::test_directory("flexibility-3d");
   parameters.output.write_vtu = false;
   check_flexibility<3>(parameters, true);

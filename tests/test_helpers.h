@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the fdem-slope authors
 #pragma once
 
+#include "source_dir.h"
+
 #include <fdem/model.h>
 #include <fdem/run/case_run.h>
 
@@ -36,7 +38,7 @@ namespace fdem
     case_parameters(const std::string &name)
     {
       parameters::Parameters parameters = parameters::read_parameters(
-        std::string(FDEM_SOURCE_DIR) + "/prm/" + name);
+        fdem::test_support::source_dir() + "/prm/" + name);
       parameters.output.directory = test_directory(name);
       parameters.output.write_vtu = false;
       return parameters;

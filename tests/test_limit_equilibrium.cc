@@ -5,6 +5,8 @@
 // every method against the closed form of a plane, against the published
 // values of Fredlund & Krahn (1977) on a circle, convergence with the number
 // of slices, and the model's section with its errors and refusals.
+#include "source_dir.h"
+
 #include <fdem/analyses/limit_equilibrium_model.h>
 #include <fdem/parameters/parameters.h>
 
@@ -322,7 +324,7 @@ namespace
   fdem::parameters::Parameters
   case_parameters(const std::string &name)
   {
-    return fdem::parameters::read_parameters(std::string(FDEM_SOURCE_DIR) +
+    return fdem::parameters::read_parameters(fdem::test_support::source_dir() +
                                              "/prm/" + name);
   }
 } // namespace

@@ -19,7 +19,6 @@ using namespace fdem;
 
 namespace
 {
-  constexpr double PI = numbers::PI;
 
   /**
    * The pseudo-static block on a plane of dip theta, weight W, base area
@@ -40,7 +39,7 @@ namespace
   {
     const double N = W * ((1 - kv) * std::cos(theta) - kh * std::sin(theta));
     const double T = W * ((1 - kv) * std::sin(theta) + kh * std::cos(theta));
-    return (c * A + N * std::tan(phi_degrees * PI / 180)) / T;
+    return (c * A + N * std::tan(phi_degrees * numbers::PI / 180)) / T;
   }
 
   /**
@@ -56,7 +55,7 @@ namespace
                     const double theta,
                     const double kv)
   {
-    const double t = std::tan(phi_degrees * PI / 180);
+    const double t = std::tan(phi_degrees * numbers::PI / 180);
     return (c * A / W + (1 - kv) * (std::cos(theta) * t - std::sin(theta))) /
            (std::cos(theta) + std::sin(theta) * t);
   }
@@ -122,7 +121,7 @@ TEST(Seismic, BlockOnPlanePseudoStaticK2D)
       auto               model =
         test_support::factorised_model<2>(inclined_block(c, phi), log);
       const auto  &geometry = model->get_parameters().geometry.inclined_block;
-      const double theta    = geometry.inclination * PI / 180;
+      const double theta    = geometry.inclination * numbers::PI / 180;
       const double W = 25 * geometry.block_length * geometry.block_height;
       for (const auto &[kh, kv] : coefficients)
         {
@@ -143,7 +142,7 @@ TEST(Seismic, BlockOnPlanePseudoStaticK3D)
   auto               p = test_support::case_parameters("block_on_plane_3d.prm");
   std::ostringstream log;
   auto               model = test_support::factorised_model<3>(p, log);
-  const double       W = 25.0 * 10 * 6 * 5, theta = PI / 6;
+  const double       W = 25.0 * 10 * 6 * 5, theta = numbers::PI / 6;
   for (const auto &[kh, kv] : coefficients)
     {
       const double exact = pseudo_static_K(15, 30, 60, W, theta, kh, kv);
@@ -164,7 +163,7 @@ TEST(Seismic, YieldAccelerationOfTheBlockOnPlane)
         auto               model =
           test_support::factorised_model<2>(inclined_block(c, phi), log);
         const auto  &geometry = model->get_parameters().geometry.inclined_block;
-        const double theta    = geometry.inclination * PI / 180;
+        const double theta    = geometry.inclination * numbers::PI / 180;
         const double W = 25 * geometry.block_length * geometry.block_height;
         analyses::SeismicLoad<2> load;
         std::string              from;
@@ -195,7 +194,7 @@ TEST(Seismic, YieldAccelerationOfTheBlockOnPlane)
         if (c == 0)
           {
             EXPECT_NEAR(r.k_y,
-                        (1 - kv) * std::tan((phi - 30) * PI / 180),
+                        (1 - kv) * std::tan((phi - 30) * numbers::PI / 180),
                         1e-10 * r.k_y);
           }
       }
@@ -230,8 +229,8 @@ TEST(Seismic, InvariantUnderUnitsAndRotation)
   auto         rotated            = inclined_block(10, 35);
   const double angle              = 25;
   rotated.geometry.rotation_angle = angle;
-  rotated.loads.gravity_direction = {std::sin(angle * PI / 180),
-                                     -std::cos(angle * PI / 180)};
+  rotated.loads.gravity_direction = {std::sin(angle * numbers::PI / 180),
+                                     -std::cos(angle * numbers::PI / 180)};
   for (const auto &other : {run(newton), run(rotated)})
     {
       EXPECT_NEAR(other.first, base.first, 1e-10 * base.first);

@@ -50,11 +50,11 @@ namespace
    * (0.2985 normal to it), the right end on the crest, far from any
    * crossing.
    */
-  const Line polyline = {Point<2>(19.9, 29.95),
-                         Point<2>(25, 29.15),
-                         Point<2>(32, 31.1),
-                         Point<2>(40, 31.7),
-                         Point<2>(45, 35)};
+  const Line face_to_crest = {Point<2>(19.9, 29.95),
+                              Point<2>(25, 29.15),
+                              Point<2>(32, 31.1),
+                              Point<2>(40, 31.7),
+                              Point<2>(45, 35)};
 
   void
   expect_point(const Point<2> &p, const Point<2> &q, const std::string &what)
@@ -67,8 +67,8 @@ namespace
 
 TEST(SurfaceSearch, SnapPolylineMovesWhatLiesWithinTheDistanceOnly)
 {
-  const Line snapped = snap_polyline(section(), polyline, 0.2);
-  ASSERT_EQ(snapped.size(), polyline.size());
+  const Line snapped = snap_polyline(section(), face_to_crest, 0.2);
+  ASSERT_EQ(snapped.size(), face_to_crest.size());
   // Vertex 1, 0.15 above the weak layer: onto it, straight down.
   expect_point(snapped[1], Point<2>(25, 29), "vertex 1 onto the weak layer");
   // Vertex 2, 0.0995 from the boundary: onto its nearest point, the foot of
@@ -79,7 +79,7 @@ TEST(SurfaceSearch, SnapPolylineMovesWhatLiesWithinTheDistanceOnly)
   EXPECT_NEAR(snapped[2][1], 28 + snapped[2][0] / 10, 1e-12)
     << "vertex 2 on the boundary";
   // Vertex 3, 0.2985 from the boundary: beyond the distance, not moved.
-  EXPECT_EQ(snapped[3], polyline[3]);
+  EXPECT_EQ(snapped[3], face_to_crest[3]);
   // The left end, 0.1118 from where the boundary meets the ground: moved
   // along the face to (20, 30), then its segment lengthened by 1e-6 of its
   // length (to the snapped vertex 1) beyond it, as every end of the search.
@@ -93,23 +93,23 @@ TEST(SurfaceSearch, SnapPolylineMovesWhatLiesWithinTheDistanceOnly)
               1e-6 + 0.5 * 5e-6,
               1e-12);
   // The right end, on the crest and far from any crossing: not moved.
-  EXPECT_EQ(snapped[4], polyline[4]);
+  EXPECT_EQ(snapped[4], face_to_crest[4]);
 }
 
 TEST(SurfaceSearch, SnapPolylineLeavesWhatLiesBeyondASmallerDistance)
 {
   // A distance of 0.1: only vertex 2 (0.0995 from the boundary) is within
   // it; vertex 1 (0.15) and the left end (0.1118) stay where they are.
-  const Line snapped = snap_polyline(section(), polyline, 0.1);
-  EXPECT_EQ(snapped[0], polyline[0]);
-  EXPECT_EQ(snapped[1], polyline[1]);
+  const Line snapped = snap_polyline(section(), face_to_crest, 0.1);
+  EXPECT_EQ(snapped[0], face_to_crest[0]);
+  EXPECT_EQ(snapped[1], face_to_crest[1]);
   expect_point(snapped[2],
                Point<2>(32 - 0.01 / 1.01, 31.1 + 0.1 / 1.01),
                "vertex 2 onto the boundary");
-  EXPECT_EQ(snapped[3], polyline[3]);
-  EXPECT_EQ(snapped[4], polyline[4]);
+  EXPECT_EQ(snapped[3], face_to_crest[3]);
+  EXPECT_EQ(snapped[4], face_to_crest[4]);
   // A distance of 0: nothing moves.
-  EXPECT_EQ(snap_polyline(section(), polyline, 0), polyline);
+  EXPECT_EQ(snap_polyline(section(), face_to_crest, 0), face_to_crest);
 }
 
 TEST(SurfaceSearch, SnapPolylineTakesTheNearerOfTwoLines)
@@ -117,7 +117,7 @@ TEST(SurfaceSearch, SnapPolylineTakesTheNearerOfTwoLines)
   // Vertex 1 at (30, 29.9): 0.1 above the weak layer and, the boundary at
   // x = 30 being y = 31, 1.1 / sqrt(1.01) = 1.0945 below it; with a
   // distance of 2 both are within reach, the weak layer is nearer.
-  Line line = polyline;
+  Line line = face_to_crest;
   line[1]   = Point<2>(30, 29.9);
   // 0.2 below the boundary in y, 0.199 normal to it; 2.3 from the weak
   // layer.

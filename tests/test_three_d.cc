@@ -29,10 +29,11 @@ namespace
                  const std::string &geo = "block_on_plane_3d.geo")
   {
     parameters::Parameters p;
-    p.dimension          = 3;
-    p.case_name          = "block_on_plane_3d";
-    p.geometry.source    = parameters::GeometryParameters::Source::mesh_file;
-    p.geometry.mesh_file = std::string(FDEM_SOURCE_DIR) + "/tests/data/" + geo;
+    p.dimension       = 3;
+    p.case_name       = "block_on_plane_3d";
+    p.geometry.source = parameters::GeometryParameters::Source::mesh_file;
+    p.geometry.mesh_file =
+      fdem::test_support::source_dir() + "/tests/data/" + geo;
     p.geometry.translation = {0, 0, 0};
     const double d = dip * PI / 180, a = dip_direction * PI / 180;
     // Gravity in the frame of the slab: the slab's plane dips by d towards a.

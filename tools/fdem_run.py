@@ -147,8 +147,18 @@ class Run:
         return os.path.join(self.output, name)
 
 
+def makes_report(report):
+    """Whether a run makes its report.html: @p report if given, else the
+    case's own Output/Report, unless FDEM_RUN_NO_REPORT=1 is set (the tests
+    set it, tests/CMakeLists.txt: only the report's own tests look at the
+    report, which costs about a second a run)."""
+    if report is not None:
+        return report
+    return os.environ.get("FDEM_RUN_NO_REPORT", "0") != "1"
+
+
 def run(exe, prm, workdir, settings=None, files=None, args=(), launcher=(), env=None,
-        timeout=600):
+        timeout=600, report=None):
     """Runs the case @p prm (see case_path) in @p workdir, with the entries
     of @p settings (see prm_settings) set after the case's own; @p files maps
     names to texts written into workdir first (e.g. a refined .geo; a
@@ -156,7 +166,9 @@ def run(exe, prm, workdir, settings=None, files=None, args=(), launcher=(), env=
     to the program before the .prm file (e.g. --validate), @p launcher
     before the program (e.g. mpirun -np 2). The output folder is the one of
     Output/Directory in @p settings (relative to workdir), else the
-    program's default, workdir/<case>-output."""
+    program's default, workdir/<case>-output. With @p report False (or, by
+    default, FDEM_RUN_NO_REPORT=1: see makes_report) the program runs with
+    --no-report."""
     for name, text in (files or {}).items():
         with open(os.path.join(workdir, name), "w") as f:
             f.write(text)
@@ -177,6 +189,8 @@ def run(exe, prm, workdir, settings=None, files=None, args=(), launcher=(), env=
     # depend on it (a bare name is looked up on PATH).
     if os.sep in exe:
         exe = os.path.abspath(exe)
+    if not makes_report(report):
+        args = ("--no-report", *args)
     start = time.perf_counter()
     try:
         result = subprocess.run([*launcher, exe, *args, path], cwd=workdir, capture_output=True,

@@ -35,9 +35,19 @@ namespace fdem
   nlohmann::json
   run_case(const std::string &prm_file, postprocess::RunLog &log)
   {
+    return run_case(prm_file, log, true);
+  }
+
+  nlohmann::json
+  run_case(const std::string   &prm_file,
+           postprocess::RunLog &log,
+           const bool           make_report)
+  {
     std::string            expanded;
     parameters::Parameters parameters =
       parameters::read_parameters(prm_file, &expanded);
+    if (!make_report)
+      parameters.output.report = false;
     // The run writes into a partial folder that becomes the results folder
     // only when the run ends (postprocess/results_folder.h).
     postprocess::ResultsFolder folder(parameters.output_directory(),

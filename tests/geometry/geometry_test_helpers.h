@@ -6,6 +6,8 @@
 // must pass.
 #pragma once
 
+#include "../source_dir.h"
+
 #include <fdem/geometry/block_mesh.h>
 #include <fdem/geometry/cases/block_on_plane.h>
 #include <fdem/geometry/cases/hertz.h>
@@ -43,7 +45,8 @@ namespace geometry_test
   using Parameters = parameters::GeometryParameters;
   using Edge       = std::pair<unsigned int, unsigned int>;
 
-  inline const std::string data_directory = FDEM_GEOMETRY_TEST_DATA;
+  inline const std::string data_directory =
+    fdem::test_support::source_dir() + "/tests/geometry/data";
 
   /** Geometry parameters from the entries of the subsection "Geometry". */
   inline Parameters

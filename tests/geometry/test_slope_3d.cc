@@ -266,7 +266,7 @@ namespace
       slope_entries(surface, "19.61, 20, 46.32", 21.32, 15, 40, 2);
     entries.insert(entries.rfind("end"),
                    "set Element shape = tetrahedron\nset Terrain file = " +
-                     std::string(FDEM_GEOMETRY_TEST_DATA) +
+                     fdem::test_support::source_dir() + "/tests/geometry/data" +
                      "/../../three_d/data/uneven_terrain.csv\n");
     const Parameters         geometry = parse(entries);
     const geometry::Slope3D &s        = geometry.slope_3d;

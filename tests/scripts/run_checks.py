@@ -397,12 +397,14 @@ def check_deterministic(exe, prm):
 def check_threads(exe, prm, *settings):
     """The BLAS's threads (doc/theory.md, "Threads"): with OpenBLAS's
     threads the dense solves split their products between the cores, which
-    reorders sums inside a product but not from run to run. So two runs
-    with 2 threads must agree byte for byte (as `deterministic`), and a run
-    with 1 thread must take the same steps to the same statuses and K to
-    1e-10 relative: round-off of the LU's sums, carried through about a
-    hundred status iterations (measured 2.3e-13 on prm/slope_3d.prm at
-    Mesh size 1.25 m)."""
+    reorders sums inside a product. OpenBLAS does not promise that the order
+    is the same from run to run (it was on most machines; not on one where
+    OPENBLAS_CORETYPE was set), so what is checked is what round-off
+    allows: two runs with 2 threads and a run with 1 thread take the same
+    steps to the same statuses and K to 1e-10 relative, the round-off of
+    the LU's sums carried through about a hundred status iterations
+    (measured 2.3e-13 between 1 and 2 threads on prm/slope_3d.prm at Mesh
+    size 1.25 m)."""
     settings = dict(s.split("=", 1) for s in settings)
 
     def run(n_threads):
@@ -417,15 +419,15 @@ def check_threads(exe, prm, *settings):
 
     two = [run(2), run(2)]
     one = run(1)
-    texts = [json.dumps(fdem_run.result_part(s), sort_keys=True) for s in two]
-    assert texts[0] == texts[1], "two runs with 2 BLAS threads differ"
-    K2, K1 = two[0]["safety_factor"], one["safety_factor"]
-    print(f"K with 2 threads {K2!r}, with 1 thread {K1!r}: relative difference "
-          f"{K2 / K1 - 1:.2e} (tolerance 1e-10)")
-    assert abs(K2 / K1 - 1) <= 1e-10, (K2, K1)
-    steps = [[(s["n_stick"], s["n_slip"], s["n_open"]) for s in summary["iterations"]]
-             for summary in (two[0], one)]
-    assert steps[0] == steps[1], steps
+    K1 = one["safety_factor"]
+    steps_one = [(s["n_stick"], s["n_slip"], s["n_open"]) for s in one["iterations"]]
+    for label, summary in (("first", two[0]), ("second", two[1])):
+        K2 = summary["safety_factor"]
+        print(f"K with 2 threads ({label} run) {K2!r}, with 1 thread {K1!r}: "
+              f"relative difference {K2 / K1 - 1:.2e} (tolerance 1e-10)")
+        assert abs(K2 / K1 - 1) <= 1e-10, (label, K2, K1)
+        steps = [(s["n_stick"], s["n_slip"], s["n_open"]) for s in summary["iterations"]]
+        assert steps == steps_one, (label, steps, steps_one)
     # With neither variable set, one thread (per rank under mpirun).
     environment = {k: v for k, v in os.environ.items()
                    if k not in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")}

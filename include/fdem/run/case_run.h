@@ -92,6 +92,15 @@ namespace fdem
   run_case(const std::string &prm_file, postprocess::RunLog &log);
 
   /**
+   * The same with Output/Report switched off whatever the .prm file says
+   * (the command line's --no-report) when @p make_report is false.
+   */
+  nlohmann::json
+  run_case(const std::string   &prm_file,
+           postprocess::RunLog &log,
+           bool                 make_report);
+
+  /**
    * Reads the .prm file and makes the model up to its node pairs, with the
    * layout checks (Model::validate()); throws at the first error, returns
    * the warnings.
