@@ -5,6 +5,7 @@
 #                                      run a case (default prm/paper_slope.prm)
 #   bash bootstrap.sh test             install, build (Release), run ctest
 #                                      (without the tests labelled heavy)
+#   bash bootstrap.sh quick            the same, the tests labelled quick only
 #   bash bootstrap.sh heavy            the same, then the heavy tests only
 #   bash bootstrap.sh sanitize         install, build with AddressSanitizer and
 #                                      UndefinedBehaviorSanitizer (Debug, -O1)
@@ -45,7 +46,7 @@ fi
 mode=${1:-run}
 jobs=${JOBS:-$(nproc)}
 case "$mode" in
-  run|test|heavy)
+  run|test|quick|heavy)
     build_dir=${BUILD_DIR:-build}
     configure=(-DCMAKE_BUILD_TYPE=Release)
     ;;
@@ -57,7 +58,7 @@ case "$mode" in
     configure=(-DCMAKE_BUILD_TYPE=Debug -DFDEM_SANITIZE=ON)
     ;;
   *)
-    echo "usage: bash bootstrap.sh run [case.prm] | test | heavy | sanitize" >&2
+    echo "usage: bash bootstrap.sh run [case.prm] | test | quick | heavy | sanitize" >&2
     exit 2
     ;;
 esac
@@ -75,6 +76,9 @@ case "$mode" in
     ;;
   test)
     cd "$build_dir" && ctest --output-on-failure -j "$jobs" -LE heavy
+    ;;
+  quick)
+    cd "$build_dir" && ctest --output-on-failure -j "$jobs" -L quick
     ;;
   heavy)
     cd "$build_dir" && ctest --output-on-failure -j "$jobs" -L heavy

@@ -1,30 +1,34 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""Writes tests/quick_tests.txt, the tests labelled quick (`ctest -L quick`,
-the edit-build-test loop), from the times of a whole default run:
+"""Writes tests/test_times.txt from the times of a whole default run: each
+test's seconds, which tests/CMakeLists.txt gives ctest as the test's COST
+(so that a fresh build folder, as in CI, starts the long tests first), and
+the word quick on the tests labelled quick (`ctest -L quick`, the
+edit-build-test loop):
 
     cd build && ctest -j2 -LE heavy
     /usr/bin/python3 ../tests/scripts/quick_label.py Testing/Temporary/CTestCostData.txt
 
-The rule: every test that took under LIMIT seconds (default 4), and in each
+The rule: every test that took under LIMIT seconds (default 3), and in each
 family of tests (the part of the name before the first dot: unit,
 three_d, invariance, ...) at least its fastest one, so that every kind of
 claim is checked at its smallest size. Left out: the families `threads`
 (runs alone, holding both cores) and `benchmarks` (smoke runs of the
-benchmark scripts, no claim). tests/CMakeLists.txt reads the file; a name
-no longer in the suite is ignored there."""
+benchmark scripts, no claim). A name no longer in the suite is ignored by
+tests/CMakeLists.txt; a new test has no cost (ctest then guesses) and is
+not quick until the file is written again."""
 import argparse
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-OUTPUT = os.path.join(HERE, "..", "quick_tests.txt")
+OUTPUT = os.path.normpath(os.path.join(HERE, "..", "test_times.txt"))
 LEFT_OUT = ("threads", "benchmarks")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("cost_data", help="ctest's Testing/Temporary/CTestCostData.txt")
-    parser.add_argument("--limit", type=float, default=4.0, help="seconds (default 4)")
+    parser.add_argument("--limit", type=float, default=3.0, help="seconds (default 3)")
     args = parser.parse_args()
     times = {}
     with open(args.cost_data) as f:
@@ -42,10 +46,12 @@ def main():
              if seconds < args.limit}
     quick |= {min(tests)[1] for tests in families.values()}
     with open(OUTPUT, "w") as f:
-        f.write("# The tests labelled quick: written by tests/scripts/quick_label.py\n"
-                f"# (every test under {args.limit:g} s and each family's fastest).\n")
-        for name in sorted(quick):
-            f.write(name + "\n")
+        f.write("# Seconds of each test in one `ctest -j2 -LE heavy` run on 2 cores, and the\n"
+                "# tests labelled quick (every test under "
+                f"{args.limit:g} s and each family's fastest):\n"
+                "# written by tests/scripts/quick_label.py.\n")
+        for name in sorted(times):
+            f.write(f"{name} {times[name]:.1f}{' quick' if name in quick else ''}\n")
     total = sum(times[name] for name in quick)
     print(f"{len(quick)} of {len(times)} tests, {total:.0f} s of the run's "
           f"{sum(times.values()):.0f} s (serial) -> {OUTPUT}")
