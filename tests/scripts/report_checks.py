@@ -136,6 +136,24 @@ def check_no_python(exe, prm):
         assert {"summary.json", "interfaces.csv", "parameters.prm"} <= files, files
 
 
+def check_report_off(exe, prm):
+    """--no-report (fdem_run's report=False): no report.html and no pictures,
+    no warning about the report, and otherwise the files of a run with the
+    report, the same K."""
+    with fdem_run.temporary_run(exe, prm, report=True) as run:
+        assert run.ok, run.failure()
+        with_report = set(os.listdir(run.output))
+        K = run.summary["safety_factor"]
+    assert "report.html" in with_report, with_report
+    with fdem_run.temporary_run(exe, prm, report=False) as run:
+        assert run.ok, run.failure()
+        files = set(os.listdir(run.output))
+        assert files == with_report - {"report.html", *PICTURES}, (files, with_report)
+        assert run.summary["safety_factor"] == K, (run.summary["safety_factor"], K)
+        assert not run.summary.get("report", {}).get("made", False), run.summary["report"]
+        assert not any("no-report" in w for w in run.summary["warnings"]), run.summary["warnings"]
+
+
 def read_rows(path):
     rows = list(csv.DictReader(open(path)))
     interfaces = {}
@@ -217,7 +235,8 @@ def check_installed(build_dir, case):
 
 
 if __name__ == "__main__":
-    checks = {"report": check_report, "no_python": check_no_python, "csv_order": check_csv_order,
+    checks = {"report": check_report, "no_python": check_no_python, "off": check_report_off,
+              "csv_order": check_csv_order,
               "my_first_slope": check_my_first_slope, "installed": check_installed}
     if len(sys.argv) != 4 or sys.argv[1] not in checks:
         print(f"usage: report_checks.py {{{'|'.join(checks)}}} EXE PRM (installed: BUILD_DIR CASE)")
