@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/anchor_parameters.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -73,7 +74,7 @@ namespace fdem
         if (text.empty())
           return std::vector<double>(n_bars, if_empty);
         const std::vector<double> values =
-          Utilities::string_to_double(Utilities::split_string_list(text, ','));
+          parameters::finite_numbers(Utilities::split_string_list(text, ','));
         AssertThrow(values.size() == n_bars,
                     ExcMessage("Reinforcement/" + entry + ": " +
                                std::to_string(values.size()) + " values for " +
@@ -205,7 +206,7 @@ namespace fdem
       forces.clear();
       const std::string force_text = Utilities::trim(prm.get("Anchor forces"));
       if (!force_text.empty())
-        forces = Utilities::string_to_double(
+        forces = parameters::finite_numbers(
           Utilities::split_string_list(force_text, ','));
       reduced_by_K = prm.get_bool("Anchor force reduced by K");
       AssertThrow(

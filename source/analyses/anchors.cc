@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/anchors.h>
 #include <fdem/analyses/reinforcement_geometry.h>
+#include <fdem/postprocess/output_file.h>
 
 #include <cmath>
 #include <filesystem>
@@ -177,8 +178,8 @@ namespace fdem
       const std::string directory = model.get_parameters().output_directory();
       if (model.writes_files() && std::filesystem::is_directory(directory))
         {
-          std::ofstream out(directory + "/anchors.csv");
-          const char   *axes[] = {"x", "y", "z"};
+          postprocess::OutputFile out(directory + "/anchors.csv");
+          const char             *axes[] = {"x", "y", "z"};
           out << "anchor";
           for (const std::string what : {"head", "bond", "crossing"})
             for (unsigned int d = 0; d < dim; ++d)
@@ -198,6 +199,7 @@ namespace fdem
                   << (reduced ? a.shear_force / K : a.shear_force) << ','
                   << a.interface << '\n';
             }
+          out.close();
         }
       return nlohmann::json{{"convention", convention},
                             {"reduced_by_K", reduced},

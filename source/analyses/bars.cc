@@ -5,6 +5,7 @@
 // of the mixed system (contact/bar_link.h), and their forces written out.
 #include <fdem/analyses/bars.h>
 #include <fdem/analyses/reinforcement_geometry.h>
+#include <fdem/postprocess/output_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -213,8 +214,8 @@ namespace fdem
       const std::string directory = model.get_parameters().output_directory();
       if (model.writes_files() && std::filesystem::is_directory(directory))
         {
-          std::ofstream out(directory + "/bars.csv");
-          const char   *axes[] = {"x", "y", "z"};
+          postprocess::OutputFile out(directory + "/bars.csv");
+          const char             *axes[] = {"x", "y", "z"};
           out << "bar";
           for (const std::string what : {"head", "end", "crossing"})
             for (unsigned int d = 0; d < dim; ++d)
@@ -234,6 +235,7 @@ namespace fdem
                   << values[k][0] << ',' << values[k][2] << ',' << values[k][1]
                   << ',' << statuses[k] << ',' << b.interface << '\n';
             }
+          out.close();
         }
       return nlohmann::json{{"capacity_reduced_by_K", reduced},
                             {"K_of_state", K},

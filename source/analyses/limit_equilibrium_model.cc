@@ -4,6 +4,7 @@
 // The model's own section for limit equilibrium, every method on it, and
 // how the answers are reported (summary.json and the screen).
 #include <fdem/analyses/limit_equilibrium_model.h>
+#include <fdem/postprocess/json_number.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -377,13 +378,6 @@ namespace fdem
 
     namespace
     {
-      nlohmann::json
-      number_or_null(const double value)
-      {
-        return std::isfinite(value) ? nlohmann::json(value) :
-                                      nlohmann::json(nullptr);
-      }
-
       std::string
       label(const le::Method method)
       {
@@ -432,9 +426,10 @@ namespace fdem
                   entry.method == le::Method::morgenstern_price_constant ||
                   entry.method == le::Method::morgenstern_price_half_sine)
                 {
-                  m["lambda"] = number_or_null(entry.result.lambda);
+                  m["lambda"] =
+                    postprocess::number_or_null(entry.result.lambda);
                   if (entry.method != le::Method::morgenstern_price_half_sine)
-                    m["theta_degrees"] = number_or_null(
+                    m["theta_degrees"] = postprocess::number_or_null(
                       std::atan(entry.result.lambda) * 180 / M_PI);
                 }
               if (entry.method == le::Method::janbu_corrected)

@@ -14,6 +14,11 @@ namespace fdem
   {
     using namespace dealii;
 
+    namespace
+    {
+      constexpr double max_acceleration = 100 * standard_gravity; // m/s^2
+      constexpr double max_duration     = 86400;                  // s
+    }                                                             // namespace
 
     AccelerationRecord
     read_acceleration_record(const std::string &file, const std::string &unit)
@@ -45,8 +50,24 @@ namespace fdem
             ExcMessage(
               at + "the time " + fields[0] +
               " is not after the time before it; times must increase."));
+          // Checked again in m/s^2: 1e308 g is finite, its product not. An
+          // acceleration beyond 100 g, or a record longer than a day, is a
+          // unit or column mistake, not an earthquake (the strongest
+          // recorded ground motions are below 5 g).
+          const double acceleration = a * scale;
+          AssertThrow(std::isfinite(acceleration) &&
+                        std::abs(acceleration) <= max_acceleration,
+                      ExcMessage(at + "the acceleration " + fields[1] + " " +
+                                 unit +
+                                 " is beyond 100 g; check the record's unit "
+                                 "(Acceleration unit) and columns."));
+          AssertThrow(record.time.empty() ||
+                        t - record.time.front() <= max_duration,
+                      ExcMessage(at + "the record runs longer than a day (" +
+                                 fields[0] +
+                                 " s); check the time column's unit."));
           record.time.push_back(t);
-          record.acceleration.push_back(a * scale);
+          record.acceleration.push_back(acceleration);
         });
       AssertThrow(record.time.size() >= 2,
                   ExcMessage(where +

@@ -6,6 +6,8 @@
 #include <fdem/analyses/probabilistic_strengths.h>
 #include <fdem/analyses/safety_factor_iteration.h>
 #include <fdem/analyses/sample_iteration.h>
+#include <fdem/postprocess/json_number.h>
+#include <fdem/postprocess/output_file.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -24,13 +26,6 @@ namespace fdem
   {
     namespace
     {
-      /** A JSON number, or null where it is not finite. */
-      nlohmann::json
-      number(const double x)
-      {
-        return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
-      }
-
       /** K of one set of strengths, and what it cost. */
       struct Evaluation
       {
@@ -243,9 +238,11 @@ namespace fdem
         return {{"computed", true},
                 {"K_mean", K_mean},
                 {"K_std", std_dev},
-                {"beta_normal", number((K_mean - 1) / std_dev)},
+                {"beta_normal",
+                 postprocess::number_or_null((K_mean - 1) / std_dev)},
                 {"P_failure_normal",
-                 number(probability::normal_cdf(-(K_mean - 1) / std_dev))},
+                 postprocess::number_or_null(
+                   probability::normal_cdf(-(K_mean - 1) / std_dev))},
                 {"gradient", gradient},
                 {"n_safety_factors", 2 * n}};
       }
@@ -287,7 +284,8 @@ namespace fdem
         return {{"computed", true},
                 {"K_mean", m1},
                 {"K_std", std_dev},
-                {"beta_normal", number((m1 - 1) / std_dev)},
+                {"beta_normal",
+                 postprocess::number_or_null((m1 - 1) / std_dev)},
                 {"n_safety_factors", 1u << n}};
       }
     } // namespace
@@ -320,9 +318,9 @@ namespace fdem
       Timer        mean_timer;
       const Result at_means     = evaluator.set_start(means);
       const double mean_seconds = mean_timer.wall_time();
-      result["K_at_means"] =
-        number(at_means.converged ? at_means.safety_factor :
-                                    std::numeric_limits<double>::quiet_NaN());
+      result["K_at_means"]      = postprocess::number_or_null(
+        at_means.converged ? at_means.safety_factor :
+                             std::numeric_limits<double>::quiet_NaN());
       result["K_at_means_steps"]   = at_means.steps.size();
       result["K_at_means_seconds"] = mean_seconds;
       AssertThrow(
@@ -463,7 +461,7 @@ namespace fdem
       result["seed"] = p.seed;
       result["sampling"] =
         p.latin_hypercube ? "Latin hypercube" : "Monte Carlo";
-      result["deterministic_K"] = number(deterministic_K);
+      result["deterministic_K"] = postprocess::number_or_null(deterministic_K);
       nlohmann::json variables  = nlohmann::json::array();
       for (unsigned int v = 0; v < n_variables; ++v)
         variables.push_back({{"target", p.variables[v].target},
@@ -503,8 +501,8 @@ namespace fdem
 
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
-          std::ofstream out(model.get_parameters().output_directory() +
-                            "/samples.csv");
+          postprocess::OutputFile out(
+            model.get_parameters().output_directory() + "/samples.csv");
           out << "sample";
           for (const RandomVariable &v : p.variables)
             out << ",\"" << v.target << "\"";
@@ -520,6 +518,7 @@ namespace fdem
               out << "," << status_name(status[s]) << ","
                   << gathered[n_per_sample * s + 2] << "\n";
             }
+          out.close();
         }
       model.log << "Probabilistic: " << p.n_samples << " samples, "
                 << result["n_certified"]

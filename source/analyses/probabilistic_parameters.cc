@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/probabilistic_parameters.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -27,7 +28,7 @@ namespace fdem
         double value = std::numeric_limits<double>::quiet_NaN();
         try
           {
-            value = Utilities::string_to_double(Utilities::trim(text));
+            value = parameters::finite_number(Utilities::trim(text));
           }
         catch (...)
           {}

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/probabilistic.h>
 #include <fdem/analyses/probabilistic_sampling.h>
+#include <fdem/postprocess/json_number.h>
 
 #include <algorithm>
 #include <cmath>
@@ -32,13 +33,6 @@ namespace fdem
 
     namespace
     {
-      /** A JSON number, or null where it is not finite. */
-      nlohmann::json
-      number(const double x)
-      {
-        return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
-      }
-
       /** Failure: no certified K, or K < 1. */
       bool
       fails(const double K, const SampleStatus status)
@@ -92,22 +86,23 @@ namespace fdem
         sum_squares += (k - mean) * (k - mean);
       const double std_dev = n > 1 ? std::sqrt(sum_squares / (n - 1)) :
                                      std::numeric_limits<double>::quiet_NaN();
-      result["K_mean"]     = number(mean);
-      result["K_std"]      = number(std_dev);
-      result["K_mean_standard_error"] = number(std_dev / std::sqrt(n));
-      result["beta_normal"]           = number((mean - 1) / std_dev);
-      const double V                  = std_dev / mean;
-      result["beta_lognormal"] = number(std::log(mean / std::sqrt(1 + V * V)) /
-                                        std::sqrt(std::log1p(V * V)));
-      result["P_failure_normal"] =
-        number(probability::normal_cdf(-(mean - 1) / std_dev));
+      result["K_mean"]     = postprocess::number_or_null(mean);
+      result["K_std"]      = postprocess::number_or_null(std_dev);
+      result["K_mean_standard_error"] =
+        postprocess::number_or_null(std_dev / std::sqrt(n));
+      result["beta_normal"] = postprocess::number_or_null((mean - 1) / std_dev);
+      const double V        = std_dev / mean;
+      result["beta_lognormal"] = postprocess::number_or_null(
+        std::log(mean / std::sqrt(1 + V * V)) / std::sqrt(std::log1p(V * V)));
+      result["P_failure_normal"] = postprocess::number_or_null(
+        probability::normal_cdf(-(mean - 1) / std_dev));
 
       const double                p = n_evaluated > 0 ?
                                         double(n_failures) / n_evaluated :
                                         std::numeric_limits<double>::quiet_NaN();
       const probability::Interval interval =
         probability::wilson_interval(n_failures, n_evaluated);
-      result["P_failure"]          = number(p);
+      result["P_failure"]          = postprocess::number_or_null(p);
       result["P_failure_interval"] = {{"lower", interval.lower},
                                       {"upper", interval.upper},
                                       {"confidence", 0.95},

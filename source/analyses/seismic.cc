@@ -3,6 +3,7 @@
 #include <fdem/analyses/newmark.h>
 #include <fdem/analyses/seismic.h>
 #include <fdem/analyses/yield_acceleration.h>
+#include <fdem/postprocess/output_file.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -86,22 +87,24 @@ namespace fdem
       write_curve_csv(const std::string             &file,
                       const YieldAccelerationResult &yield)
       {
-        std::ofstream out(file);
+        postprocess::OutputFile out(file);
         out << "kh,K,certified\n" << std::setprecision(12);
         for (const auto &point : yield.curve)
           out << point.kh << ',' << point.K << ',' << (point.certified ? 1 : 0)
               << '\n';
+        out.close();
       }
 
       void
       write_newmark_csv(const std::string &file, const NewmarkResult &newmark)
       {
-        std::ofstream out(file);
+        postprocess::OutputFile out(file);
         out << "time_s,acceleration_m_s2,velocity_m_s,displacement_m\n"
             << std::setprecision(12);
         for (unsigned int i = 0; i < newmark.time.size(); ++i)
           out << newmark.time[i] << ',' << newmark.acceleration[i] << ','
               << newmark.velocity[i] << ',' << newmark.displacement[i] << '\n';
+        out.close();
       }
     } // namespace
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/seismic_results.h>
+#include <fdem/postprocess/json_number.h>
 
 #include <cmath>
 #include <iomanip>
@@ -12,13 +13,6 @@ namespace fdem
   {
     namespace
     {
-      /** JSON has no infinity or NaN: null. */
-      nlohmann::json
-      number_or_null(const double x)
-      {
-        return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
-      }
-
       std::string
       digits(const double x, const int significant)
       {
@@ -54,12 +48,13 @@ namespace fdem
             curve.push_back(
               {{"kh", p.kh}, {"K", p.K}, {"certified", p.certified}});
           json["yield_acceleration"] = {
-            {"k_y", number_or_null(y.k_y)},
+            {"k_y", postprocess::number_or_null(y.k_y)},
             {"found", y.not_found.empty()},
             {"not_found", y.not_found},
             {"bracket",
-             {number_or_null(y.bracket_low), number_or_null(y.bracket_high)}},
-            {"k_y_backward", number_or_null(y.k_y_backward)},
+             {postprocess::number_or_null(y.bracket_low),
+              postprocess::number_or_null(y.bracket_high)}},
+            {"k_y_backward", postprocess::number_or_null(y.k_y_backward)},
             {"curve", curve},
             {"n_evaluations", y.curve.size()},
             {"csv", "yield_acceleration.csv"},

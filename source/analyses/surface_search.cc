@@ -140,13 +140,13 @@ namespace fdem
         return text.str();
       }
 
-      /** The first words of a status, to count skipped circles by reason. */
-      std::string
-      reason(const std::string &status)
-      {
-        return status.substr(0, status.find(':'));
-      }
     } // namespace
+
+    std::string
+    skip_reason(const std::string &status)
+    {
+      return status.substr(0, status.find(':'));
+    }
 
     bool
     inside_search_region(const SurfaceSearchParameters &s,
@@ -284,7 +284,7 @@ namespace fdem
                     }
                 }
               else
-                ++result.n_skipped[reason(s.status)];
+                ++result.n_skipped[skip_reason(s.status)];
             }
       result.seconds_screening = timer.wall_time();
       if (result.n_valid == 0)

@@ -5,6 +5,8 @@
 // circle), critical_surface.prm (the entries to rerun the critical circle)
 // and summary.json's "surface_search".
 #include <fdem/analyses/surface_search.h>
+#include <fdem/postprocess/json_number.h>
+#include <fdem/postprocess/output_file.h>
 #include <fdem/postprocess/output_files.h>
 
 #include <cmath>
@@ -19,13 +21,6 @@ namespace fdem
     namespace
     {
       nlohmann::json
-      number_or_null(const double value)
-      {
-        return std::isfinite(value) ? nlohmann::json(value) :
-                                      nlohmann::json(nullptr);
-      }
-
-      nlohmann::json
       circle_json(const SearchedSurface &s)
       {
         if (!s.polyline.empty())
@@ -38,16 +33,16 @@ namespace fdem
                     {"centre", nullptr},
                     {"radius", nullptr},
                     {"stage", s.stage},
-                    {"le_K", number_or_null(s.le_K)},
-                    {"contact_K", number_or_null(s.contact_K)},
+                    {"le_K", postprocess::number_or_null(s.le_K)},
+                    {"contact_K", postprocess::number_or_null(s.contact_K)},
                     {"status", s.status}};
           }
         return {{"shape", "circular"},
                 {"centre", {s.centre[0], s.centre[1]}},
                 {"radius", s.radius},
                 {"stage", s.stage},
-                {"le_K", number_or_null(s.le_K)},
-                {"contact_K", number_or_null(s.contact_K)},
+                {"le_K", postprocess::number_or_null(s.le_K)},
+                {"contact_K", postprocess::number_or_null(s.contact_K)},
                 {"status", s.status}};
       }
 
@@ -209,10 +204,8 @@ namespace fdem
                          const std::string         &directory,
                          nlohmann::json            &summary)
     {
-      summary["surface_search"] = to_json(result, summary);
-      postprocess::write_json(directory + "/summary.json", summary);
-
-      std::ofstream csv(directory + "/search.csv");
+      // summary.json last: it says the run's files are complete.
+      postprocess::OutputFile csv(directory + "/search.csv");
       csv << std::setprecision(12);
       csv
         << "stage,centre_x,centre_y,radius,le_K,contact_K,certified,status,contact_seconds,polyline\n";
@@ -229,8 +222,10 @@ namespace fdem
             << s.status << "\"," << s.contact_seconds << ",\""
             << points_text(s.polyline, " ") << "\"\n";
 
-      const SearchedSurface &c = result.surfaces[result.critical];
-      std::ofstream          prm(directory + "/critical_surface.prm");
+      csv.close();
+
+      const SearchedSurface  &c = result.surfaces[result.critical];
+      postprocess::OutputFile prm(directory + "/critical_surface.prm");
       prm << std::setprecision(12);
       if (c.polyline.empty())
         prm
@@ -276,6 +271,10 @@ namespace fdem
               << "  end\n"
               << "end\n";
         }
+      prm.close();
+
+      summary["surface_search"] = to_json(result, summary);
+      postprocess::write_json(directory + "/summary.json", summary);
     }
   } // namespace analyses
 } // namespace fdem

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/analyses/limit_equilibrium_parameters.h>
 #include <fdem/analyses/surface_search_parameters.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -28,8 +29,8 @@ namespace fdem
                     ExcMessage(path + entry +
                                ": expected 'x, y' (two numbers), not '" + text +
                                "'."));
-        return Point<2>(Utilities::string_to_double(xy[0]),
-                        Utilities::string_to_double(xy[1]));
+        return Point<2>(parameters::finite_number(xy[0]),
+                        parameters::finite_number(xy[1]));
       }
 
       /**
@@ -49,8 +50,8 @@ namespace fdem
                         ExcMessage(entry +
                                    ": a range is 'from : to : count', not '" +
                                    text + "'."));
-            const double from  = Utilities::string_to_double(parts[0]);
-            const double to    = Utilities::string_to_double(parts[1]);
+            const double from  = parameters::finite_number(parts[0]);
+            const double to    = parameters::finite_number(parts[1]);
             const int    count = Utilities::string_to_int(parts[2]);
             AssertThrow(
               count >= 1 && count <= 10000 && (count == 1 || from != to),
@@ -65,7 +66,7 @@ namespace fdem
         else
           for (const std::string &value :
                Utilities::split_string_list(text, ','))
-            values.push_back(Utilities::string_to_double(value));
+            values.push_back(parameters::finite_number(value));
         for (const double v : values)
           AssertThrow(std::isfinite(v),
                       ExcMessage(entry + ": not a number in '" + text + "'."));

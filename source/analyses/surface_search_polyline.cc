@@ -180,12 +180,6 @@ namespace fdem
         return crossings;
       }
 
-      std::string
-      reason(const std::string &status)
-      {
-        return status.substr(0, status.find(':'));
-      }
-
       /**
        * @p line with its end segments lengthened by 1e-6 of their length
        * beyond the ends on the ground: the ends then lie just above it, as
@@ -312,7 +306,7 @@ namespace fdem
         if (s.valid)
           ++result.n_polyline_valid;
         else
-          ++result.n_polyline_skipped[reason(s.status)];
+          ++result.n_polyline_skipped[skip_reason(s.status)];
         result.surfaces.push_back(s);
         if (s.valid && (result.polyline_minimum < 0 ||
                         s.le_K < result.surfaces[result.polyline_minimum].le_K))

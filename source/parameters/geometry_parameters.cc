@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 
 #include <fdem/parameters/geometry_parameters.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/utilities.h>
 
@@ -82,11 +83,14 @@ namespace fdem
           "are.");
         prm.declare_entry(
           "Time limit",
-          "1800",
+          "600",
           Patterns::Double(0),
           "Longest time making the mesh may take (s): Gmsh reading a .geo "
           "file (a loop that does not end) or meshing. Past it the run ends "
-          "with an error. 0 means no limit.");
+          "with an error. The default, 10 minutes, is about twice the mesh and "
+          "setup of the largest model of doc/scaling.md (4.1 million dofs, "
+          "288 s); raise it for a mesh known to take longer. 0 means no "
+          "limit.");
         prm.declare_entry(
           "Scale factor",
           "1",
@@ -139,10 +143,10 @@ namespace fdem
         time_limit     = prm.get_double("Time limit");
         rotation_angle = prm.get_double("Rotation angle");
 
-        const std::vector<double> axis = Utilities::string_to_double(
+        const std::vector<double> axis = parameters::finite_numbers(
           Utilities::split_string_list(prm.get("Rotation axis"), ','));
         rotation_axis = Tensor<1, 3>({axis[0], axis[1], axis[2]});
-        translation   = Utilities::string_to_double(
+        translation   = parameters::finite_numbers(
           Utilities::split_string_list(prm.get("Translation"), ','));
 
         case_input::require(

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/parameters/material_parameters.h>
 #include <fdem/parameters/model_parameters.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
@@ -118,7 +119,7 @@ namespace fdem
           bool number = true;
           try
             {
-              friction_angle = Utilities::string_to_double(phi);
+              friction_angle = parameters::finite_number(phi);
             }
           catch (...)
             {

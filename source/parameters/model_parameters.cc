@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/parameters/model_parameters.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/function_parser.h>
@@ -61,16 +62,9 @@ namespace fdem
       std::vector<double> values;
       for (const std::string &item : Utilities::split_string_list(text, ','))
         {
-          try
-            {
-              values.push_back(Utilities::string_to_double(item));
-            }
-          catch (...)
-            {
-              AssertThrow(false,
-                          ExcMessage(path + ": '" + item +
-                                     "' is not a number."));
-            }
+          const std::string problem = number_problem(item);
+          AssertThrow(problem.empty(), ExcMessage(path + ": " + problem + "."));
+          values.push_back(finite_number(item));
         }
       AssertThrow(values.size() == n_components,
                   ExcMessage(path + ": expected " +
@@ -343,7 +337,7 @@ namespace fdem
         double value = 0;
         try
           {
-            value = Utilities::string_to_double(prm.get(entry));
+            value = parameters::finite_number(prm.get(entry));
           }
         catch (...)
           {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/postprocess/hertz_sphere.h>
+#include <fdem/postprocess/json_number.h>
 
 #include <deal.II/base/numbers.h>
 
@@ -83,9 +84,6 @@ namespace fdem
 
       const double a_fit  = contact_radius_from_pressure_fit(results, centre);
       const double a_area = std::sqrt(4 * closed_area / pi);
-      const auto   number_or_null = [](const double x) {
-        return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
-      };
       return {{"load", load},
               {"contact_radius_exact", a_exact},
               {"max_pressure_exact", p_exact},

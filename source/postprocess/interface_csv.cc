@@ -4,6 +4,7 @@
 // interfaces.csv: the pairs of each interface along the surface, so that a
 // plot against the arc length needs no sorting.
 #include <fdem/postprocess/interface_csv.h>
+#include <fdem/postprocess/output_file.h>
 
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -126,8 +127,7 @@ namespace fdem
       const std::vector<std::vector<PairResult<dim>>> &results,
       const Tensor<1, dim>                            &up)
     {
-      std::ofstream out(filename);
-      AssertThrow(out.good(), ExcMessage("Cannot write '" + filename + "'."));
+      OutputFile out(filename);
       out
         << "interface,pair," << (dim == 2 ? "arc_length" : "down_dip_distance")
         << ",x,y" << (dim == 3 ? ",z" : "") << ",normal_force,"
@@ -159,6 +159,7 @@ namespace fdem
               out << ',' << r.cohesion << ',' << r.friction_angle << '\n';
             }
         }
+      out.close();
     }
 
 #define FDEM_INSTANTIATE(dim)                                      \

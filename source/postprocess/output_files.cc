@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/postprocess/output_file.h>
 #include <fdem/postprocess/output_files.h>
 
 #include <deal.II/base/exceptions.h>
@@ -31,9 +32,7 @@ namespace fdem
     void
     write_pvd(const std::string &filename, const std::vector<PvdEntry> &entries)
     {
-      std::ofstream out(filename);
-      AssertThrow(out.good(),
-                  dealii::ExcMessage("Cannot write '" + filename + "'."));
+      OutputFile out(filename);
       out << "<?xml version=\"1.0\"?>\n"
           << "<VTKFile type=\"Collection\" version=\"0.1\" "
              "byte_order=\"LittleEndian\">\n  <Collection>\n";
@@ -45,6 +44,7 @@ namespace fdem
             << xml_escaped(entry.name) << "\" file=\"" << entry.file
             << "\"/>\n";
       out << "  </Collection>\n</VTKFile>\n";
+      out.close();
     }
 
     void
@@ -52,15 +52,14 @@ namespace fdem
     {
       const std::string temporary = filename + ".part";
       {
-        std::ofstream out(temporary);
-        AssertThrow(out.good(),
-                    dealii::ExcMessage("Cannot write '" + filename + "'."));
+        OutputFile out(temporary);
         out << std::setw(2) << summary << '\n';
-        AssertThrow(out.good(),
-                    dealii::ExcMessage("Cannot write '" + filename + "'."));
+        out.close();
       }
       AssertThrow(std::rename(temporary.c_str(), filename.c_str()) == 0,
-                  dealii::ExcMessage("Cannot write '" + filename + "'."));
+                  dealii::ExcMessage("cannot write the output file '" +
+                                     filename + "': " + std::strerror(errno) +
+                                     "."));
     }
 
     std::string

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/postprocess/output_file.h>
 #include <fdem/postprocess/results_folder.h>
+#include <fdem/postprocess/run_log.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -14,7 +16,11 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
 
 namespace fdem
 {
@@ -41,6 +47,136 @@ namespace fdem
       }
 
       constexpr int signals[] = {SIGINT, SIGTERM, SIGHUP};
+
+      std::string
+      host_name()
+      {
+        char name[256] = "";
+        if (gethostname(name, sizeof name - 1) != 0)
+          return "unknown";
+        return name;
+      }
+
+      /// The absolute, normalised form of @p path, without a trailing '/'.
+      fs::path
+      absolute_path(const std::string &path)
+      {
+        fs::path result = fs::absolute(fs::path(path)).lexically_normal();
+        if (result.filename().empty() && result.has_parent_path() &&
+            result != result.root_path())
+          result = result.parent_path();
+        return result;
+      }
+
+      /// Whether @p folder is @p path or one of the folders above it, once
+      /// symbolic links are resolved.
+      bool
+      contains_or_is(const fs::path &folder, const fs::path &path)
+      {
+        std::error_code error;
+        const fs::path  a = fs::weakly_canonical(folder, error);
+        const fs::path  b = fs::weakly_canonical(path, error);
+        if (error)
+          return false;
+        auto i = a.begin(), j = b.begin();
+        for (; i != a.end() && j != b.end(); ++i, ++j)
+          if (*i != *j)
+            break;
+        // An empty last component is the trailing '/' of "/".
+        return i == a.end() || (std::next(i) == a.end() && i->empty());
+      }
+
+      /// The entries of the marker file of @p folder ("key: value" lines);
+      /// empty if it has none.
+      std::map<std::string, std::string>
+      read_marker(const fs::path &folder)
+      {
+        std::map<std::string, std::string> entries;
+        std::ifstream                      in(folder / results_marker);
+        std::string                        line;
+        while (std::getline(in, line))
+          if (const auto colon = line.find(": "); colon != std::string::npos)
+            entries[line.substr(0, colon)] = line.substr(colon + 2);
+        return entries;
+      }
+
+      bool
+      has_marker(const fs::path &folder)
+      {
+        std::error_code error;
+        return fs::is_regular_file(
+                 fs::symlink_status(folder / results_marker, error)) &&
+               read_marker(folder).count("program") == 1;
+      }
+
+      /**
+       * Refuses @p path, the results folder or its `.previous` (@p role says
+       * which, for the message), unless it is absent, an empty folder or a
+       * folder with the marker.
+       */
+      void
+      check_replaceable(const fs::path &path, const std::string &role)
+      {
+        std::error_code       error;
+        const fs::file_status status = fs::symlink_status(path, error);
+        if (!fs::exists(status))
+          return;
+        const std::string name =
+          "Output/Directory: " + role + "'" + path.string() + "'";
+        AssertThrow(!fs::is_symlink(status),
+                    dealii::ExcMessage(
+                      name + " is a symbolic link; name the folder itself "
+                             "(fdem-slope replaces a results folder by "
+                             "renaming, which would move the link)."));
+        AssertThrow(fs::is_directory(status),
+                    dealii::ExcMessage(
+                      name + " is a file, not a results folder of "
+                             "fdem-slope; choose another Directory or move "
+                             "the file."));
+        AssertThrow(
+          has_marker(path) || fs::is_empty(path, error),
+          dealii::ExcMessage(
+            name + " holds files that fdem-slope did not write (it has no " +
+            results_marker +
+            "); fdem-slope replaces only its own results folders: choose "
+            "another Directory, or move or remove this folder yourself."));
+      }
+
+      /// Holds an exclusive lock on a folder (flock) while it lives.
+      class FolderLock
+      {
+      public:
+        explicit FolderLock(const fs::path &folder)
+          : descriptor(open(folder.c_str(), O_RDONLY | O_DIRECTORY))
+        {
+          AssertThrow(descriptor >= 0 && flock(descriptor, LOCK_EX) == 0,
+                      dealii::ExcMessage("Output/Directory: cannot lock '" +
+                                         folder.string() +
+                                         "': " + std::strerror(errno) + "."));
+        }
+        ~FolderLock()
+        {
+          flock(descriptor, LOCK_UN);
+          close(descriptor);
+        }
+        FolderLock(const FolderLock &) = delete;
+        FolderLock &
+        operator=(const FolderLock &) = delete;
+
+      private:
+        int descriptor;
+      };
+
+      /// Whether no process of this host has the number @p pid.
+      bool
+      process_is_gone(const std::string &pid)
+      {
+        if (pid.empty() ||
+            pid.find_first_not_of("0123456789") != std::string::npos ||
+            pid.size() > 9)
+          return false;
+        return kill(std::stoi(pid), 0) != 0 && errno == ESRCH;
+      }
     } // namespace
 
 
@@ -100,31 +236,81 @@ namespace fdem
 
 
 
-    ResultsFolder::ResultsFolder(const std::string &target_name,
-                                 const bool         writes_files)
-      : writes_files(writes_files)
+    void
+    check_results_target(const std::string &target_name,
+                         const std::string &prm_file)
     {
-      // "out/" and "out" are one folder; the partial one goes beside it.
+      const fs::path target = absolute_path(target_name);
+      const fs::path prm_folder =
+        absolute_path(prm_file.empty() ? "." : prm_file).parent_path();
+      // A link first: its folder would be judged, not the link.
+      check_replaceable(target.string() + ".previous", "the previous results ");
+      std::error_code error;
+      if (!fs::is_symlink(fs::symlink_status(target, error)))
+        {
+          AssertThrow(!contains_or_is(target, fs::current_path()),
+                      dealii::ExcMessage(
+                        "Output/Directory: '" + target_name +
+                        "' is the working folder or a folder above it; give "
+                        "the results a folder of their own (an empty "
+                        "Directory means '<case name>-output')."));
+          AssertThrow(!contains_or_is(target, prm_folder),
+                      dealii::ExcMessage(
+                        "Output/Directory: '" + target_name +
+                        "' is the folder of " + prm_file +
+                        " or a folder above it; give the results a folder "
+                        "of their own (an empty Directory means '<case "
+                        "name>-output')."));
+        }
+      check_replaceable(target, "");
+    }
+
+
+
+    ResultsFolder::ResultsFolder(const std::string &target_name,
+                                 const std::string &prm_file,
+                                 const bool         writes_files)
+      : target(absolute_path(target_name).string())
+      , prm_file(prm_file)
+      , writes_files(writes_files)
+    {
+      check_results_target(target_name, prm_file);
+      // The partial folder goes beside the target; errors name it as the
+      // user wrote it.
       fs::path path = fs::path(target_name).lexically_normal();
       if (path.filename().empty())
         path = path.parent_path();
-      target            = path.string();
-      staging_directory = target + ".partial-" + std::to_string(getpid());
+      staging_directory =
+        path.string() + ".partial-" + std::to_string(getpid());
       if (!writes_files)
         return;
-      std::error_code error;
-      fs::remove_all(staging_directory, error); // of a dead run with this pid
-      fs::create_directories(staging_directory, error);
-      AssertThrow(!error,
-                  dealii::ExcMessage("Output/Directory: cannot create '" +
-                                     staging_directory + "' beside '" + target +
-                                     "': " + error.message() + "."));
       AssertThrow(staging_directory.size() < sizeof partial_folder,
                   dealii::ExcMessage(
                     "Output/Directory: the path is too long."));
+      remove_stale_partial_folders();
+      std::error_code error;
+      fs::create_directories(staging_directory, error);
+      AssertThrow(!error && fs::is_empty(staging_directory, error),
+                  dealii::ExcMessage(
+                    "Output/Directory: cannot create '" + staging_directory +
+                    "' beside '" + target_name + "': " +
+                    (error ? error.message() : "it exists and is not empty") +
+                    "."));
       std::strcpy(partial_folder, staging_directory.c_str());
       for (const int s : signals)
         std::signal(s, remove_partial_folder_and_die);
+      const std::time_t now = std::time(nullptr);
+      char              started[32];
+      std::strftime(started,
+                    sizeof started,
+                    "%Y-%m-%dT%H:%M:%SZ",
+                    std::gmtime(&now));
+      write_text_file(staging_directory + "/" + results_marker,
+                      "program: fdem-slope\nhost: " + host_name() + "\npid: " +
+                        std::to_string(getpid()) + "\nstarted: " + started +
+                        "\ncase: " + absolute_path(prm_file).string() +
+                        "\nnote: fdem-slope replaces or removes only folders "
+                        "that hold this file.\n");
     }
 
 
@@ -136,11 +322,74 @@ namespace fdem
       for (const int s : signals)
         std::signal(s, SIG_DFL);
       partial_folder[0] = '\0';
-      if (!committed)
+      if (!keep_staging)
         {
           std::error_code error;
-          fs::remove_all(staging_directory, error);
+          if (has_marker(staging_directory))
+            fs::remove_all(staging_directory, error);
         }
+    }
+
+
+
+    void
+    ResultsFolder::remove_stale_partial_folders() const
+    {
+      const fs::path    path   = target;
+      const fs::path    parent = path.parent_path();
+      const std::string prefix = path.filename().string() + ".partial-";
+      std::error_code   error;
+      for (fs::directory_iterator entry(parent, error), end;
+           !error && entry != end;
+           entry.increment(error))
+        {
+          const std::string name = entry->path().filename().string();
+          if (name.rfind(prefix, 0) != 0 ||
+              !fs::is_directory(fs::symlink_status(entry->path(), error)))
+            continue;
+          // A folder with this process's number is a dead run's too: this
+          // run has not made its own yet.
+          const std::string pid = name.substr(prefix.size());
+          const bool        gone =
+            process_is_gone(pid) || pid == std::to_string(getpid());
+          const auto marker = read_marker(entry->path());
+          const bool made_here =
+            marker.count("program") == 1 && marker.count("pid") == 1 &&
+            marker.at("pid") == pid && marker.count("host") == 1 &&
+            marker.at("host") == host_name();
+          std::error_code ignored;
+          if (gone && made_here)
+            fs::remove_all(entry->path(), ignored);
+          else if (gone)
+            fs::remove(entry->path(), ignored); // only if empty: killed
+                                                // before its marker
+        }
+    }
+
+
+
+    void
+    ResultsFolder::swap_into_place() const
+    {
+      const fs::path path     = target;
+      const fs::path previous = target + ".previous";
+      // symlink_status() of a missing path is an error too: its own code.
+      std::error_code missing, error;
+      if (fs::exists(fs::symlink_status(previous, missing)))
+        fs::remove_all(previous, error);
+      if (!error && fs::exists(fs::symlink_status(path, missing)))
+        {
+          if (has_marker(path))
+            fs::rename(path, previous, error);
+          else
+            fs::remove(path, error); // an empty folder
+        }
+      if (!error)
+        fs::rename(staging_directory, path, error);
+      AssertThrow(!error,
+                  dealii::ExcMessage(
+                    "Output/Directory: cannot move the results into '" +
+                    path.string() + "': " + error.message() + "."));
     }
 
 
@@ -150,46 +399,25 @@ namespace fdem
     {
       if (!writes_files)
         return;
-      // The lock file goes once the swap is done, without reopening the race
-      // it closes: a run that waited on the lock of a file that has since
-      // been removed holds a lock nobody else respects, so after locking it
-      // checks that its file is still the one at that path, and otherwise
-      // starts again with the new file. Only the holder removes the file,
-      // while it holds the lock, so the file at the path and its lock holder
-      // are always one.
-      const std::string lock_file = target + ".lock";
-      int               lock      = -1;
-      for (;;)
+      // The swap happens under a lock on the folder that holds the target,
+      // so that runs into one folder take turns; the checks are made again
+      // under it, since the user may have put files there during the run.
+      try
         {
-          lock = open(lock_file.c_str(), O_RDWR | O_CREAT, 0644);
-          AssertThrow(lock >= 0,
-                      dealii::ExcMessage("Output/Directory: cannot create '" +
-                                         lock_file +
-                                         "': " + std::strerror(errno) + "."));
-          flock(lock, LOCK_EX);
-          struct stat locked, named;
-          if (fstat(lock, &locked) == 0 &&
-              stat(lock_file.c_str(), &named) == 0 &&
-              locked.st_dev == named.st_dev && locked.st_ino == named.st_ino)
-            break;
-          close(lock);
+          const FolderLock lock(fs::path(target).parent_path());
+          check_results_target(target, prm_file);
+          swap_into_place();
         }
-      std::error_code   error;
-      const std::string previous = target + ".previous";
-      fs::remove_all(previous, error);
-      if (fs::exists(target))
-        fs::rename(target, previous, error);
-      if (!error)
-        fs::rename(staging_directory, target, error);
-      unlink(lock_file.c_str());
-      flock(lock, LOCK_UN);
-      close(lock);
-      AssertThrow(!error,
-                  dealii::ExcMessage(
-                    "Output/Directory: cannot move the results into '" +
-                    target + "': " + error.message() + " (they are in '" +
-                    staging_directory + "')."));
-      committed         = true;
+      catch (const std::exception &error)
+        {
+          keep_staging      = true;
+          partial_folder[0] = '\0';
+          AssertThrow(false,
+                      dealii::ExcMessage(one_line(error) +
+                                         " This run's results are in '" +
+                                         staging_directory + "'."));
+        }
+      keep_staging      = true;
       partial_folder[0] = '\0';
     }
   } // namespace postprocess

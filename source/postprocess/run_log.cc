@@ -4,6 +4,9 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <regex>
 
@@ -23,7 +26,9 @@ namespace fdem
       if (traits_type::eq_int_type(c, traits_type::eof()))
         return traits_type::not_eof(c);
       for (std::streambuf *target : targets)
-        target->sputc(traits_type::to_char_type(c));
+        if (traits_type::eq_int_type(
+              target->sputc(traits_type::to_char_type(c)), traits_type::eof()))
+          failed_targets.push_back(target);
       return c;
     }
 
@@ -31,8 +36,16 @@ namespace fdem
     TeeBuffer::xsputn(const char *text, const std::streamsize n)
     {
       for (std::streambuf *target : targets)
-        target->sputn(text, n);
+        if (target->sputn(text, n) != n)
+          failed_targets.push_back(target);
       return n;
+    }
+
+    bool
+    TeeBuffer::wrote_all_to(const std::streambuf *target) const
+    {
+      return std::find(failed_targets.begin(), failed_targets.end(), target) ==
+             failed_targets.end();
     }
 
     int
@@ -71,6 +84,24 @@ namespace fdem
                     "."));
       brief_buffer.add(file.rdbuf());
       detail_buffer.add(file.rdbuf());
+      file_name = path;
+    }
+
+    void
+    RunLog::check_file()
+    {
+      if (!prints || !file.is_open())
+        return;
+      brief_stream.flush();
+      detail_stream.flush();
+      errno              = 0;
+      const bool flushed = file.rdbuf()->pubsync() == 0;
+      AssertThrow(flushed && brief_buffer.wrote_all_to(file.rdbuf()) &&
+                    detail_buffer.wrote_all_to(file.rdbuf()),
+                  dealii::ExcMessage(
+                    "cannot write the output file '" + file_name + "': " +
+                    (errno != 0 ? std::strerror(errno) : "the write failed") +
+                    "."));
     }
 
     std::string

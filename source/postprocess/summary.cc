@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/linear_algebra/blas_threads.h>
+#include <fdem/postprocess/json_number.h>
 #include <fdem/postprocess/summary.h>
 
 #include <algorithm>
@@ -13,12 +14,6 @@ namespace fdem
   {
     namespace
     {
-      nlohmann::json
-      number_or_null(const double x)
-      {
-        return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
-      }
-
       nlohmann::json
       certificate_json(const analyses::Certificate &c)
       {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
+#include <fdem/postprocess/output_file.h>
 #include <fdem/postprocess/vtu_writer.h>
 
 #include <deal.II/base/exceptions.h>
@@ -208,14 +209,11 @@ namespace fdem
       header += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
                 "  <AppendedData encoding=\"raw\">\n_";
 
-      std::ofstream out(filename, std::ios::binary);
-      AssertThrow(out.good(),
-                  dealii::ExcMessage("Cannot write '" + filename + "'."));
+      OutputFile out(filename, std::ios::binary);
       out << header;
       out.write(appended.data(), appended.size());
       out << "\n  </AppendedData>\n</VTKFile>\n";
-      AssertThrow(out.good(),
-                  dealii::ExcMessage("Cannot write '" + filename + "'."));
+      out.close();
     }
 
     void

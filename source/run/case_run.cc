@@ -11,6 +11,7 @@
 #include <fdem/analyses/seismic.h>
 #include <fdem/postprocess/hertz_reference.h>
 #include <fdem/postprocess/interface_csv.h>
+#include <fdem/postprocess/output_file.h>
 #include <fdem/postprocess/run_cost.h>
 #include <fdem/postprocess/summary.h>
 #include <fdem/run/case_run.h>
@@ -43,8 +44,8 @@ namespace fdem
         std::filesystem::create_directories(directory);
         // A summary.json left from an earlier run must not pass for this one.
         std::filesystem::remove(directory + "/summary.json");
-        std::ofstream out(directory + "/parameters.prm");
-        out << expanded_parameters;
+        postprocess::write_text_file(directory + "/parameters.prm",
+                                     expanded_parameters);
       }
 
     // A progress line at the start of each phase: on a long run the screen

@@ -4,6 +4,7 @@
 // The two ways main() runs a case: validate it (up to its node pairs, with
 // the layout checks) or run it into its results folder.
 #include <fdem/analyses/anchors.h>
+#include <fdem/analyses/newmark.h>
 #include <fdem/analyses/surface_search.h>
 #include <fdem/postprocess/report.h>
 #include <fdem/postprocess/result_block.h>
@@ -12,6 +13,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <filesystem>
+
 namespace fdem
 {
   std::vector<std::string>
@@ -19,6 +22,15 @@ namespace fdem
   {
     const parameters::Parameters parameters =
       parameters::read_parameters(prm_file);
+    postprocess::check_results_target(parameters.output_directory(), prm_file);
+    // The files the analyses read after the model: the record.
+    const auto &yield = parameters.yield_acceleration;
+    if (!yield.acceleration_record.empty())
+      analyses::read_acceleration_record((std::filesystem::path(
+                                            parameters.prm_directory) /
+                                          yield.acceleration_record)
+                                           .string(),
+                                         yield.acceleration_unit);
     if (parameters.dimension == 2)
       {
         Model<2> model(parameters, log);
@@ -51,6 +63,7 @@ namespace fdem
     // The run writes into a partial folder that becomes the results folder
     // only when the run ends (postprocess/results_folder.h).
     postprocess::ResultsFolder folder(parameters.output_directory(),
+                                      prm_file,
                                       Utilities::MPI::this_mpi_process(
                                         MPI_COMM_WORLD) == 0);
     const std::string          results = parameters.output_directory();
@@ -97,13 +110,16 @@ namespace fdem
                       << summary["warnings"].back().get<std::string>()
                       << std::endl;
       }
-    folder.commit();
+    // The result block goes into log.txt before the swap, and the log is
+    // checked, so that a committed folder has its whole log.
     std::string folder_name = results;
     while (folder_name.size() > 1 && folder_name.back() == '/')
       folder_name.pop_back();
     for (const std::string &line :
          postprocess::result_block(summary, folder_name, log_file))
       log.brief() << line << std::endl;
+    log.check_file();
+    folder.commit();
     return summary;
   }
 } // namespace fdem

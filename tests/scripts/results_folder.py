@@ -16,9 +16,27 @@
       runs stopped by SIGINT and by SIGTERM after 0.2 to 1.5 s: no partial
       folder remains, and the results folder is absent or a whole earlier
       run
+  results_folder.py owned EXE CASE.prm
+      Output/Directory naming what the program did not make (a folder of
+      the user's files, a file, the .prm's folder, the working folder, a
+      folder above it, '/', a dangling link, a link to a folder, a
+      '.previous' of the user's): two runs and --validate each refuse it in
+      one line naming Output/Directory, and every file, folder and link the
+      user had is still there byte for byte; an empty folder is accepted,
+      and the program's own folders are replaced run after run
+  results_folder.py sigkill EXE CASE.prm
+      a run killed by SIGKILL leaves its partial folder; the next run into
+      the same folder removes it and ends with the results complete
+  results_folder.py disk_full EXE CASE.prm
+      runs into a small tmpfs (mounted here: needs root, else skipped with
+      exit code 77) of sizes from 8 KiB to 1 MiB: each ends either with
+      exit 0 and a whole results folder, or with one error line naming the
+      file it could not write, a non-zero exit and no summary.json that says
+      completed anywhere on the tmpfs
 """
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -144,6 +162,156 @@ def check_names(exe, prm):
         assert all(os.path.exists(os.path.join(out, f)) for f in files)
 
 
+def tree(root):
+    """Every file (with its bytes), folder and link under root."""
+    found = {}
+    for folder, dirs, files in os.walk(root):
+        for name in dirs + files:
+            path = os.path.join(folder, name)
+            rel = os.path.relpath(path, root)
+            if os.path.islink(path):
+                found[rel] = ("link", os.readlink(path))
+            elif os.path.isdir(path):
+                found[rel] = ("folder",)
+            else:
+                found[rel] = ("file", open(path, "rb").read())
+    return found
+
+
+def case_into(prm, folder, directory, mesh_size=2.0):
+    text = open(prm).read().replace("@PRM_DIR@", os.path.abspath(PRM_DIR))
+    path = os.path.join(folder, "case.prm")
+    with open(path, "w") as f:
+        f.write(f"include {os.path.abspath(prm)}\n" if "@PRM_DIR@" not in text else text)
+        f.write("subsection Geometry\n  subsection Slope\n"
+                f"    set Mesh size = {mesh_size}\n  end\nend\n"
+                f"subsection Output\n  set Directory = {directory}\n  set Write VTU = false\nend\n")
+    return path
+
+
+def refused(exe, args, cwd, name):
+    p = subprocess.run([exe] + args, cwd=cwd, capture_output=True, text=True, timeout=600)
+    lines = p.stderr.strip().splitlines()
+    assert p.returncode == 1 and len(lines) == 1 and \
+        lines[0].startswith("fdem-slope: error: Output/Directory: ") and name in lines[0], \
+        (args, p.returncode, p.stderr, p.stdout)
+    return lines[0]
+
+
+def check_owned(exe, prm):
+    with tempfile.TemporaryDirectory() as top:
+        project = os.path.join(top, "proj")
+        os.makedirs(os.path.join(project, "mine", "sub"))
+        for rel, text in (("notes.txt", "my notes\n"), ("mine/data.csv", "1,2\n"),
+                          ("mine/sub/deep.txt", "deep\n"), ("afile", "a file\n"),
+                          ("out.previous/keep.txt", "mine too\n")):
+            os.makedirs(os.path.dirname(os.path.join(project, rel)), exist_ok=True)
+            with open(os.path.join(project, rel), "w") as f:
+                f.write(text)
+        os.symlink(os.path.join(project, "nowhere"), os.path.join(project, "dangling"))
+        os.symlink(os.path.join(project, "mine"), os.path.join(project, "tomine"))
+        for directory, name in (("mine", "mine"), ("mine/", "mine"), ("afile", "afile"),
+                                ("../proj", "../proj"), (".", "'.'"), ("./", "./"),
+                                ("..", ".."), ("/", "'/'"), (project, project),
+                                ("dangling", "dangling"), ("tomine", "tomine"),
+                                ("out", "out.previous")):
+            run = case_into(prm, project, directory)
+            before = tree(top)
+            for attempt in (1, 2):
+                line = refused(exe, [run], project, name)
+            refused(exe, ["--validate", run], project, name)
+            assert tree(top) == before, f"Output/Directory = {directory}: the user's files changed"
+            print(f"Output/Directory = {directory!r}: refused, nothing touched: {line}")
+        # An empty folder holds nothing to lose; the program's own folders
+        # are replaced run after run, the previous kept once.
+        os.makedirs(os.path.join(project, "empty"))
+        run = case_into(prm, project, "empty")
+        for attempt in (1, 2, 3):
+            p = subprocess.run([exe, run], cwd=project, capture_output=True, text=True,
+                               timeout=600)
+            assert p.returncode == 0, p.stderr
+        for folder in ("empty", "empty.previous"):
+            marker = open(os.path.join(project, folder, ".fdem-slope-results")).read()
+            assert marker.startswith("program: fdem-slope\n"), marker
+            assert json.load(open(os.path.join(project, folder, "summary.json")))["status"] \
+                == "completed"
+        assert leftovers(project) == [], leftovers(project)
+        print("an empty folder: accepted; three runs: the folder and .previous are whole runs")
+
+
+def check_sigkill(exe, prm):
+    with tempfile.TemporaryDirectory() as workdir:
+        run = case_into(prm, workdir, "out", mesh_size=0.7)
+        start = time.time()
+        subprocess.run([exe, run], cwd=workdir, capture_output=True, check=True, timeout=600)
+        duration = time.time() - start
+        whole = sorted(os.listdir(os.path.join(workdir, "out")))
+        killed = 0
+        for fraction in (0.3, 0.6):
+            p = subprocess.Popen([exe, run], cwd=workdir, stdout=subprocess.DEVNULL,
+                                 stderr=subprocess.DEVNULL)
+            time.sleep(fraction * duration)
+            p.kill()
+            p.wait(timeout=60)
+            killed += len(leftovers(workdir))
+        assert killed > 0, "no run was killed while it ran (the case is too short)"
+        print(f"SIGKILL left {killed} partial folders: {leftovers(workdir)}")
+        p = subprocess.run([exe, run], cwd=workdir, capture_output=True, text=True, timeout=600)
+        assert p.returncode == 0, p.stderr
+        assert leftovers(workdir) == [], leftovers(workdir)
+        out = os.path.join(workdir, "out")
+        assert sorted(os.listdir(out)) == whole, (sorted(os.listdir(out)), whole)
+        assert json.load(open(os.path.join(out, "summary.json")))["status"] == "completed"
+        print("the next run removed them and its results are complete")
+
+
+def check_disk_full(exe, prm):
+    if os.geteuid() != 0 or shutil.which("mount") is None:
+        print("skipped: mounting a tmpfs needs root")
+        sys.exit(77)
+    with tempfile.TemporaryDirectory() as workdir:
+        disk = os.path.join(workdir, "disk")
+        os.makedirs(disk)
+        run = case_into(prm, workdir, os.path.join(disk, "out"))
+        failed = completed = 0
+        # parameters.prm (the expanded .prm) fills about 70 KiB; the sizes
+        # after it cut the log, the CSV tables and summary.json.
+        hit = set()
+        for size_kib in (8, 64) + tuple(range(72, 132, 4)) + (1024,):
+            if subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size_kib}k", "tmpfs", disk],
+                              capture_output=True).returncode != 0:
+                print("skipped: this machine does not let the test mount a tmpfs")
+                sys.exit(77)
+            try:
+                p = subprocess.run([exe, "--no-report", run], cwd=workdir, capture_output=True,
+                                   text=True, timeout=600)
+                summaries = [os.path.join(f, n) for f, _, names in os.walk(disk)
+                             for n in names if n == "summary.json"]
+                said_completed = [s for s in summaries
+                                  if '"completed"' in open(s, errors="replace").read()]
+                if p.returncode == 0:
+                    out = os.path.join(disk, "out")
+                    assert json.load(open(os.path.join(out, "summary.json")))["status"] \
+                        == "completed" and leftovers(disk) == []
+                    completed += 1
+                    print(f"{size_kib} KiB: completed")
+                else:
+                    lines = p.stderr.strip().splitlines()
+                    assert len(lines) == 1 and lines[0].startswith("fdem-slope: error: ") and \
+                        "No space left on device" in lines[0], p.stderr
+                    assert said_completed == [], said_completed
+                    assert leftovers(disk) == [], leftovers(disk)
+                    failed += 1
+                    hit.add(os.path.basename(lines[0].split("'")[1]))
+                    print(f"{size_kib} KiB: exit {p.returncode}: {lines[0]}")
+            finally:
+                subprocess.run(["umount", disk], check=True)
+        print("files whose write failed:", sorted(hit))
+        assert failed > 0 and completed > 0, (failed, completed)
+        assert len(hit) >= 3, f"the sizes cut too few of the files: {sorted(hit)}" 
+
+
 if __name__ == "__main__":
     {"concurrent": check_concurrent, "interrupt": check_interrupt, "names": check_names,
-     "stale": check_stale}[sys.argv[1]](*sys.argv[2:])
+     "stale": check_stale, "owned": check_owned, "sigkill": check_sigkill,
+     "disk_full": check_disk_full}[sys.argv[1]](*sys.argv[2:])

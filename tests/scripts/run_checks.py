@@ -224,21 +224,30 @@ def check_vtu(exe, prm, cells="any"):
 
 
 def check_bad_input(exe, prm):
-    expect = None
+    """The run fails with one line holding the '# expect:' text, and writes
+    no summary.json; with '# validate: same', --validate fails with the same
+    line (it reads every file the run would read)."""
+    expect, validate = None, False
     for line in open(prm):
         if line.startswith("# expect:"):
             expect = line[len("# expect:"):].strip()
+        validate = validate or line.strip() == "# validate: same"
     assert expect, f"{prm} has no '# expect:' line"
-    with fdem_run.temporary_run(exe, prm) as result:
-        lines = result.stderr.strip().splitlines()
-        print("stderr:", result.stderr.strip())
-        assert result.returncode != 0, "the run did not fail"
-        assert result.returncode < 128, f"the run crashed (exit {result.returncode})"
-        assert len(lines) == 1, f"expected one line on stderr, got {len(lines)}"
-        assert lines[0].startswith("fdem-slope: error: "), lines[0]
-        assert expect in lines[0], f"'{expect}' not in the message"
-        for root, _, files in os.walk(result.workdir):
-            assert "summary.json" not in files, "a summary.json was written"
+    runs = [[], ["--validate"]] if validate else [[]]
+    stderr = []
+    for args in runs:
+        with fdem_run.temporary_run(exe, prm, args=args) as result:
+            lines = result.stderr.strip().splitlines()
+            print(" ".join(args + ["stderr:"]), result.stderr.strip())
+            assert result.returncode != 0, "the run did not fail"
+            assert result.returncode < 128, f"the run crashed (exit {result.returncode})"
+            assert len(lines) == 1, f"expected one line on stderr, got {len(lines)}"
+            assert lines[0].startswith("fdem-slope: error: "), lines[0]
+            assert expect in lines[0], f"'{expect}' not in the message"
+            for root, _, files in os.walk(result.workdir):
+                assert "summary.json" not in files, "a summary.json was written"
+            stderr.append(result.stderr)
+    assert len(set(stderr)) == 1, "--validate and the run say different things"
 
 
 def check_bad_layout(exe, prm):

@@ -274,6 +274,11 @@ namespace fdem
                   const double                      radius,
                   const SurfaceSearchParameters    &settings);
 
+    /** The first words of a candidate's status, to count skipped ones by
+     * reason. */
+    std::string
+    skip_reason(const std::string &status);
+
     /**
      * Whether the circle (x_c, y_c, R) lies in the search region of
      * @p settings: its centre in the grid's rectangle and, by tangent

@@ -10,26 +10,51 @@ namespace fdem
   namespace postprocess
   {
     /**
+     * The name of the marker file that every folder fdem-slope makes for
+     * results carries (it names the program, the host, the process and the
+     * case). A folder without it is the user's: it is never moved or
+     * removed.
+     */
+    inline constexpr char results_marker[] = ".fdem-slope-results";
+
+    /**
+     * Refuses, with one line naming Output/Directory, a results folder
+     * @p target that a run of @p prm_file may not replace: the working
+     * folder, the .prm's folder or a folder above either; a symbolic link;
+     * a file; a folder with files but without the marker; and the same for
+     * `<target>.previous`. An empty folder is accepted (nothing in it can be
+     * lost). Read-only: every MPI rank can call it.
+     */
+    void
+    check_results_target(const std::string &target,
+                         const std::string &prm_file);
+
+    /**
      * The results folder of one run, so that a folder is always the output
-     * of exactly one run: the run writes into a fresh folder beside the
-     * target, `<target>.partial-<pid>`, and commit() renames it into place
-     * at the end, the previous results becoming `<target>.previous` (an
-     * older `.previous` is removed). The swap happens under a lock on
-     * `<target>.lock`, so that two runs into one folder cannot interleave:
-     * the last to finish wins, whole. The lock file is removed by its
-     * holder before it unlocks; a run that got the lock of a removed file
-     * sees that the path names another file (or none) and locks again, so
-     * removing it reopens no race. A run that fails (an exception) or is
-     * stopped by SIGINT, SIGTERM or SIGHUP removes its partial folder and
-     * leaves the target as it was.
+     * of exactly one run and only folders the program made are replaced.
+     * The run writes into a fresh folder beside the target,
+     * `<target>.partial-<pid>`, which gets the marker first; commit() renames
+     * it into place at the end, the previous results becoming
+     * `<target>.previous` (an older `.previous` is removed). Both are
+     * checked by check_results_target() when the run starts and again at the
+     * swap, which happens under a lock on the folder that holds them, so
+     * that two runs into one folder cannot interleave: the last to finish
+     * wins, whole. A run that fails (an exception) or is stopped by SIGINT,
+     * SIGTERM or SIGHUP removes its partial folder and leaves the target as
+     * it was; the partial folders of runs on this host that were killed
+     * (SIGKILL, a power cut) are removed by the next run into the target.
+     * If the swap itself fails, the partial folder stays and the error names
+     * it.
      *
      * Only the process that writes files (rank 0 under MPI) touches the
-     * disk; on the others the object only names the folder.
+     * disk; on the others the object only checks and names the folder.
      */
     class ResultsFolder
     {
     public:
-      ResultsFolder(const std::string &target, bool writes_files);
+      ResultsFolder(const std::string &target,
+                    const std::string &prm_file,
+                    bool               writes_files);
       ~ResultsFolder();
       ResultsFolder(const ResultsFolder &) = delete;
       ResultsFolder &
@@ -47,10 +72,17 @@ namespace fdem
       commit();
 
     private:
+      void
+      remove_stale_partial_folders() const;
+
+      void
+      swap_into_place() const;
+
       std::string target;
+      std::string prm_file;
       std::string staging_directory;
       bool        writes_files;
-      bool        committed = false;
+      bool        keep_staging = false;
     };
 
     /**

@@ -38,6 +38,10 @@ namespace fdem
       void
       add(std::streambuf *target);
 
+      /** Whether every write to @p target so far took all it was given. */
+      bool
+      wrote_all_to(const std::streambuf *target) const;
+
     protected:
       int_type
       overflow(int_type c) override;
@@ -47,7 +51,8 @@ namespace fdem
       sync() override;
 
     private:
-      std::vector<std::streambuf *> targets;
+      std::vector<std::streambuf *>       targets;
+      std::vector<const std::streambuf *> failed_targets;
     };
 
     /**
@@ -69,6 +74,14 @@ namespace fdem
       /** From now on both levels also go to the file @p path (truncated). */
       void
       open_file(const std::string &path);
+
+      /**
+       * Flushes the log file and throws, naming it, if any write to it
+       * failed (a full disk): a run whose log was cut does not end as
+       * completed. The file stays open.
+       */
+      void
+      check_file();
 
       /** The lines an engineer reads: the default screen. */
       std::ostream &
@@ -95,6 +108,7 @@ namespace fdem
       Verbosity     screen_verbosity;
       bool          prints;
       std::ofstream file;
+      std::string   file_name;
       TeeBuffer     brief_buffer, detail_buffer;
       std::ostream  brief_stream, detail_stream;
     };

@@ -3,6 +3,7 @@
 
 #include <fdem/geometry/cases/case_input.h>
 #include <fdem/geometry/cases/polyline_segment.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
@@ -12,6 +13,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -88,7 +90,7 @@ namespace fdem
       parse_point(const std::string &text)
       {
         const std::vector<double> xy =
-          Utilities::string_to_double(Utilities::split_string_list(text, ','));
+          parameters::finite_numbers(Utilities::split_string_list(text, ','));
         return Point<2>(xy[0], xy[1]);
       }
 
@@ -162,7 +164,7 @@ namespace fdem
       parse_orientation(const std::string &text)
       {
         const std::vector<double> values =
-          Utilities::string_to_double(Utilities::split_string_list(text, ','));
+          parameters::finite_numbers(Utilities::split_string_list(text, ','));
         PlaneOrientation orientation;
         orientation.dip           = values[0];
         orientation.dip_direction = values[1];
@@ -248,10 +250,7 @@ namespace fdem
       bool
       parse_number(const std::string &text, double &value)
       {
-        char *end = nullptr;
-        errno     = 0;
-        value     = std::strtod(text.c_str(), &end);
-        return end != text.c_str() && *end == '\0' && errno == 0;
+        return parameters::read_finite_number(text, value);
       }
 
 
@@ -264,6 +263,8 @@ namespace fdem
                                  const std::string              &at,
                                  const std::vector<std::string> &fields)> &row)
       {
+        AssertThrow(!std::filesystem::is_directory(file_name),
+                    ExcMessage(where + " is a folder, not a file."));
         std::ifstream in(file_name);
         AssertThrow(in, ExcMessage(where + " cannot be read (missing file?)."));
         std::string  line;
@@ -272,6 +273,9 @@ namespace fdem
         while (std::getline(in, line))
           {
             ++line_number;
+            // A spreadsheet's UTF-8 byte order mark before the first field.
+            if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+              line.erase(0, 3);
             const std::size_t comment = line.find('#');
             if (comment != std::string::npos)
               line.erase(comment);

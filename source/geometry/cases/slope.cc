@@ -5,6 +5,7 @@
 #include <fdem/geometry/cases/slope.h>
 #include <fdem/geometry/cases/slope_interslices.h>
 #include <fdem/geometry/gmsh_mesh.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -189,7 +190,7 @@ namespace fdem
         for (const std::string &angle :
              Utilities::split_string_list(prm.get("Interslice inclinations"),
                                           ','))
-          interslice_inclinations.push_back(Utilities::string_to_double(angle));
+          interslice_inclinations.push_back(parameters::finite_number(angle));
         tension_crack_depth       = prm.get_double("Tension crack depth");
         tension_crack_water_depth = prm.get_double("Tension crack water depth");
         parse_layer_parameters(prm);

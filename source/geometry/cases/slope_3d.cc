@@ -4,6 +4,7 @@
 #include <fdem/geometry/cases/gmsh_3d.h>
 #include <fdem/geometry/cases/slope_3d.h>
 #include <fdem/geometry/gmsh_mesh.h>
+#include <fdem/parameters/numbers.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
@@ -182,7 +183,7 @@ namespace fdem
                                   (shape == "sphere")    ? Surface::sphere :
                                   (shape == "capsule")   ? Surface::capsule :
                                                            Surface::cylinder;
-        const std::vector<double> c = Utilities::string_to_double(
+        const std::vector<double> c = parameters::finite_numbers(
           Utilities::split_string_list(prm.get("Surface centre"), ','));
         centre           = Point<3>(c[0], c[1], c[2]);
         radius           = prm.get_double("Surface radius");

@@ -116,7 +116,7 @@ namespace fdem
                   AssertThrow(false,
                               ExcMessage(entry + ": '" + line +
                                          "' is not a list of points 'x,y; "
-                                         "x,y; ...'."));
+                                         "x,y; ...' of finite numbers."));
                 }
               boundaries.push_back(points);
             }
