@@ -13,4 +13,18 @@ shift 2
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$source_dir}"
 export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
+# Making a precompiled header: remove the old one first. CMake compiles it
+# with `-include <header>`, and ccache hashes a .gch it finds beside that
+# header as one in use: a stale one would store the new header under a key
+# that no fresh build folder computes, so that every clone missed the cache
+# for the files that use it (doc/build.md).
+previous=
+for argument in "$@"; do
+  if [ "$previous" = "-o" ]; then
+    case "$argument" in
+      *.gch) rm -f "$argument" ;;
+    esac
+  fi
+  previous=$argument
+done
 exec "$ccache" "$@"
