@@ -5,6 +5,7 @@
 // the plain FE model of a case (every block's cells in one mesh, nodes
 // shared, gravity loads) with the case's direct solver. Prints one JSON
 // line: n_dofs, assembly, factorization, solve (wall seconds).
+#include <fdem/linear_algebra/mpi_start.h>
 #include <fdem/model.h>
 #include <fdem/parameters/parameters.h>
 
@@ -21,7 +22,7 @@ namespace
   {
     using namespace fdem;
     std::ostringstream log;
-    Model<dim> model(parameters, log);
+    Model<dim>         model(parameters, log);
     model.make_geometry();
 
     std::vector<unsigned int>                              all_blocks;
@@ -31,21 +32,25 @@ namespace
         all_blocks.push_back(b);
         materials[b] = parameters.materials.at(model.get_mesh().block_names[b]);
       }
-    blocks::ElasticBlock<dim> merged("merged", model.get_mesh(), all_blocks, materials,
-                                     parameters.fe_degree);
-    std::map<dealii::types::boundary_id, parameters::BoundaryParameters> conditions;
+    blocks::ElasticBlock<dim> merged(
+      "merged", model.get_mesh(), all_blocks, materials, parameters.fe_degree);
+    std::map<dealii::types::boundary_id, parameters::BoundaryParameters>
+                conditions;
     const auto &groups = model.get_mesh().face_group_names;
     for (const std::string &name : parameters.boundary_names)
-      conditions[std::find(groups.begin(), groups.end(), name) - groups.begin()] =
-        parameters.boundaries.at(name);
+      conditions[std::find(groups.begin(), groups.end(), name) -
+                 groups.begin()] = parameters.boundaries.at(name);
     merged.setup_constraints(conditions, {});
     merged.find_free_rigid_modes();
-    merged.assemble_and_factorize(parameters.loads, parameters.solver.direct_solver);
-    const auto start = std::chrono::steady_clock::now();
-    const dealii::Vector<double> u = merged.solve(merged.load_vector);
-    const double solve =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    AssertThrow(std::isfinite(u.l2_norm()), dealii::ExcMessage("The solve failed."));
+    merged.assemble_and_factorize(parameters.loads,
+                                  parameters.solver.direct_solver);
+    const auto                   start = std::chrono::steady_clock::now();
+    const dealii::Vector<double> u     = merged.solve(merged.load_vector);
+    const double                 solve =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    AssertThrow(std::isfinite(u.l2_norm()),
+                dealii::ExcMessage("The solve failed."));
     std::cout << "{\"n_dofs\": " << merged.dof_handler.n_dofs()
               << ", \"free_rigid_modes\": " << merged.n_free_rigid_modes()
               << ", \"assembly\": " << merged.assembly_seconds
@@ -59,8 +64,10 @@ main(int argc, char *argv[])
 {
   try
     {
+      fdem::linear_algebra::isolate_mpi_singleton();
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      AssertThrow(argc == 2, dealii::ExcMessage("usage: fdem-fe-solve-time case.prm"));
+      AssertThrow(argc == 2,
+                  dealii::ExcMessage("usage: fdem-fe-solve-time case.prm"));
       const auto parameters = fdem::parameters::read_parameters(argv[1]);
       if (parameters.dimension == 2)
         time_fe_solve<2>(parameters);

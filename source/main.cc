@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Copyright (C) 2026 the fdem-slope authors
 #include <fdem/linear_algebra/blas_threads.h>
+#include <fdem/linear_algebra/mpi_start.h>
 #include <fdem/parameters/parameters.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>
@@ -45,6 +46,7 @@ main(int argc, char *argv[])
   std::set_new_handler(fdem::postprocess::exit_out_of_memory);
   try
     {
+      fdem::linear_algebra::isolate_mpi_singleton();
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       host = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       fdem::linear_algebra::choose_blas_threads();

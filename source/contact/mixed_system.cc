@@ -524,9 +524,14 @@ namespace fdem
       solution.elastic_displacements  = std::move(elastic);
       solution.relative_displacements = external_gap;
       solution.relative_displacements -= solution.elastic_displacements;
-      Vector<double> product(n_forces);
-      rigid_coupling.vmult(product, solution.rigid_motions);
-      solution.relative_displacements += product;
+      // No rigid motions (every block held): deal.II's vmult asserts on
+      // the empty coupling matrix in a Debug build.
+      if (n_rigid > 0)
+        {
+          Vector<double> product(n_forces);
+          rigid_coupling.vmult(product, solution.rigid_motions);
+          solution.relative_displacements += product;
+        }
       return solution;
     }
 

@@ -333,7 +333,8 @@ namespace fdem
     {
       // Rigid relative motion far beyond the elastic scale.
       Vector<double> rigid(solution.forces.size());
-      system.rigid_coupling.vmult(rigid, solution.rigid_motions);
+      if (!system.rigid_coupling.empty()) // every block held: no motion
+        system.rigid_coupling.vmult(rigid, solution.rigid_motions);
       const bool finite =
         std::all_of(solution.forces.begin(),
                     solution.forces.end(),
