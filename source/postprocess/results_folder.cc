@@ -111,8 +111,8 @@ namespace fdem
 
       /**
        * Refuses @p path, the results folder or its `.previous` (@p role says
-       * which, for the message), unless it is absent, an empty folder or a
-       * folder with the marker.
+       * which, for the message), unless it is absent or a folder with the
+       * marker: a folder without it is the user's, even an empty one.
        */
       void
       check_replaceable(const fs::path &path, const std::string &role)
@@ -134,9 +134,9 @@ namespace fdem
                              "fdem-slope; choose another Directory or move "
                              "the file."));
         AssertThrow(
-          has_marker(path) || fs::is_empty(path, error),
+          has_marker(path),
           dealii::ExcMessage(
-            name + " holds files that fdem-slope did not write (it has no " +
+            name + " is a folder that fdem-slope did not make (it has no " +
             results_marker +
             "); fdem-slope replaces only its own results folders: choose "
             "another Directory, or move or remove this folder yourself."));
@@ -360,9 +360,6 @@ namespace fdem
           std::error_code ignored;
           if (gone && made_here)
             fs::remove_all(entry->path(), ignored);
-          else if (gone)
-            fs::remove(entry->path(), ignored); // only if empty: killed
-                                                // before its marker
         }
     }
 
@@ -379,10 +376,7 @@ namespace fdem
         fs::remove_all(previous, error);
       if (!error && fs::exists(fs::symlink_status(path, missing)))
         {
-          if (has_marker(path))
-            fs::rename(path, previous, error);
-          else
-            fs::remove(path, error); // an empty folder
+          fs::rename(path, previous, error); // checked: it has the marker
         }
       if (!error)
         fs::rename(staging_directory, path, error);

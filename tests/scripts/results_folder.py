@@ -22,8 +22,8 @@
       folder above it, '/', a dangling link, a link to a folder, a
       '.previous' of the user's): two runs and --validate each refuse it in
       one line naming Output/Directory, and every file, folder and link the
-      user had is still there byte for byte; an empty folder is accepted,
-      and the program's own folders are replaced run after run
+      user had is still there byte for byte (an empty folder of the user's
+      too); the program's own folders are replaced run after run
   results_folder.py sigkill EXE CASE.prm
       a run killed by SIGKILL leaves its partial folder; the next run into
       the same folder removes it and ends with the results complete
@@ -203,6 +203,7 @@ def check_owned(exe, prm):
     with tempfile.TemporaryDirectory() as top:
         project = os.path.join(top, "proj")
         os.makedirs(os.path.join(project, "mine", "sub"))
+        os.makedirs(os.path.join(project, "empty"))
         for rel, text in (("notes.txt", "my notes\n"), ("mine/data.csv", "1,2\n"),
                           ("mine/sub/deep.txt", "deep\n"), ("afile", "a file\n"),
                           ("out.previous/keep.txt", "mine too\n")):
@@ -214,7 +215,7 @@ def check_owned(exe, prm):
         for directory, name in (("mine", "mine"), ("mine/", "mine"), ("afile", "afile"),
                                 ("../proj", "../proj"), (".", "'.'"), ("./", "./"),
                                 ("..", ".."), ("/", "'/'"), (project, project),
-                                ("dangling", "dangling"), ("tomine", "tomine"),
+                                ("dangling", "dangling"), ("tomine", "tomine"), ("empty", "empty"),
                                 ("out", "out.previous")):
             run = case_into(prm, project, directory)
             before = tree(top)
@@ -223,21 +224,20 @@ def check_owned(exe, prm):
             refused(exe, ["--validate", run], project, name)
             assert tree(top) == before, f"Output/Directory = {directory}: the user's files changed"
             print(f"Output/Directory = {directory!r}: refused, nothing touched: {line}")
-        # An empty folder holds nothing to lose; the program's own folders
-        # are replaced run after run, the previous kept once.
-        os.makedirs(os.path.join(project, "empty"))
-        run = case_into(prm, project, "empty")
+        # The program's own folders are replaced run after run, the
+        # previous kept once.
+        run = case_into(prm, project, "results")
         for attempt in (1, 2, 3):
             p = subprocess.run([exe, "--no-report", run], cwd=project, capture_output=True,
                                text=True, timeout=600)
             assert p.returncode == 0, p.stderr
-        for folder in ("empty", "empty.previous"):
+        for folder in ("results", "results.previous"):
             marker = open(os.path.join(project, folder, ".fdem-slope-results")).read()
             assert marker.startswith("program: fdem-slope\n"), marker
             assert json.load(open(os.path.join(project, folder, "summary.json")))["status"] \
                 == "completed"
         assert leftovers(project) == [], leftovers(project)
-        print("an empty folder: accepted; three runs: the folder and .previous are whole runs")
+        print("three runs into a new folder: it and its .previous are whole runs")
 
 
 def check_sigkill(exe, prm):

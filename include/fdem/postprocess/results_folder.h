@@ -21,9 +21,9 @@ namespace fdem
      * Refuses, with one line naming Output/Directory, a results folder
      * @p target that a run of @p prm_file may not replace: the working
      * folder, the .prm's folder or a folder above either; a symbolic link;
-     * a file; a folder with files but without the marker; and the same for
-     * `<target>.previous`. An empty folder is accepted (nothing in it can be
-     * lost). Read-only: every MPI rank can call it.
+     * a file; a folder without the marker (even an empty one: it is the
+     * user's); and the same for `<target>.previous`. Read-only: every MPI
+     * rank can call it.
      */
     void
     check_results_target(const std::string &target,
