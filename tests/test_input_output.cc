@@ -3,11 +3,16 @@
 //
 // The input's one number reader refuses what is not a finite number, the
 // table reader takes a spreadsheet's byte order mark and names a folder,
-// and an output file whose write fails says so (issue: never lose a
-// user's file, never accept a number that is not one).
+// an output file whose write fails or that would hold a nan says so, and
+// work the input makes too large is refused before it starts (issue: never
+// lose a user's file, never accept a number that is not one).
 #include <fdem/analyses/newmark.h>
+#include <fdem/analyses/probabilistic.h>
+#include <fdem/analyses/surface_search.h>
 #include <fdem/parameters/numbers.h>
+#include <fdem/parameters/work_estimate.h>
 #include <fdem/postprocess/output_file.h>
+#include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_log.h>
 
 #include <gtest/gtest.h>
@@ -17,6 +22,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace
@@ -98,4 +104,117 @@ TEST(OutputFiles, FailedWriteIsAnError)
                                                  "a");
             }).find("cannot create the output file"),
             std::string::npos);
+}
+
+TEST(OutputFiles, ValueThatIsNotFiniteIsAnError)
+{
+  // A nan or inf among the results is a bug: the file says where it is
+  // rather than passing it on (a CSV cell "nan", a null in JSON that reads
+  // as a missing value).
+  const std::string folder =
+    std::filesystem::temp_directory_path() /
+    ("fdem-output-files-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  const std::string csv     = folder + "/table.csv";
+  const std::string message = io_error_message([&] {
+    fdem::postprocess::OutputFile out(csv);
+    out << "x,K\n" << 1.0 << ',' << 1.25 << '\n';
+    out << 2.0 << ',' << std::numeric_limits<double>::quiet_NaN() << '\n';
+    out << 3.0 << ',' << std::numeric_limits<double>::infinity() << '\n';
+    out.close();
+  });
+  EXPECT_NE(message.find("the output file '" + csv +
+                         "' would hold the value nan on line 3"),
+            std::string::npos)
+    << message;
+  EXPECT_EQ(io_error_message([&] {
+              fdem::postprocess::OutputFile out(csv);
+              out << 1.0 << ',' << -1e308 << ',' << 0.0 << '\n';
+              out.close();
+            }),
+            "");
+
+  nlohmann::json summary;
+  summary["status"]          = "completed";
+  summary["methods"]         = nlohmann::json::array();
+  summary["methods"][0]["K"] = 1.5;
+  summary["methods"][1]["K"] = -std::numeric_limits<double>::infinity();
+  summary["safety_factor"]   = nullptr;
+  const std::string json     = folder + "/summary.json";
+  const std::string json_message =
+    io_error_message([&] { fdem::postprocess::write_json(json, summary); });
+  EXPECT_NE(json_message.find("would hold a value that is not finite at "
+                              "/methods/1/K"),
+            std::string::npos)
+    << json_message;
+  EXPECT_FALSE(std::filesystem::exists(json));
+  summary["methods"][1]["K"] = nullptr;
+  EXPECT_EQ(io_error_message(
+              [&] { fdem::postprocess::write_json(json, summary); }),
+            "");
+  EXPECT_TRUE(std::filesystem::exists(json));
+  std::filesystem::remove_all(folder);
+}
+
+TEST(WorkEstimates, RefusedWithTheEntryTheEstimateAndTheOverride)
+{
+  // A search of 1000 x 1000 centres and 1000 tangent elevations: 1e9
+  // circles of 50 slices, far beyond a day and any memory.
+  fdem::analyses::SurfaceSearchParameters search;
+  search.n_x = search.n_y = 1000;
+  search.tangent_elevations.assign(1000, 1.0);
+  const fdem::parameters::WorkEstimate circles =
+    fdem::analyses::search_work_estimate(search);
+  EXPECT_EQ(circles.what, "1e+09 circles");
+  EXPECT_GT(circles.seconds, 86400);
+  EXPECT_GT(circles.memory_MiB, 1e5);
+  const std::string memory = io_error_message(
+    [&] { fdem::parameters::check_work_estimate(circles, 24576, 86400); });
+  EXPECT_EQ(memory.rfind("Surface search/Centre grid counts: 1e+09 circles "
+                         "would need about ",
+                         0),
+            0u)
+    << memory;
+  EXPECT_NE(memory.find("more than the 24 GiB allowed (Geometry/Memory limit"),
+            std::string::npos)
+    << memory;
+  // With memory enough, the time: the override is named.
+  const std::string time = io_error_message(
+    [&] { fdem::parameters::check_work_estimate(circles, 1e12, 86400); });
+  EXPECT_NE(time.find("would take about "), std::string::npos) << time;
+  EXPECT_NE(time.find("days, longer than Geometry/Time budget (24 h): ask for "
+                      "fewer, or raise Geometry/Time budget (0: no limit)"),
+            std::string::npos)
+    << time;
+  EXPECT_EQ(io_error_message(
+              [&] { fdem::parameters::check_work_estimate(circles, 1e12, 0); }),
+            "");
+  // The default grid, 10 x 10 centres and three elevations, passes.
+  search.n_x = search.n_y = 10;
+  search.tangent_elevations.assign(3, 1.0);
+  EXPECT_EQ(io_error_message([&] {
+              fdem::parameters::check_work_estimate(
+                fdem::analyses::search_work_estimate(search), 1024, 600);
+            }),
+            "");
+
+  // 1e8 samples of four variables at 0.5 s each: years, and gigabytes.
+  fdem::analyses::ProbabilisticParameters samples;
+  samples.n_samples = 100000000;
+  samples.variables.resize(4);
+  const fdem::parameters::WorkEstimate work =
+    fdem::analyses::sample_work_estimate(samples, 0.5, 0);
+  EXPECT_EQ(work.what, "1e+08 samples");
+  EXPECT_DOUBLE_EQ(work.seconds, 5e7);
+  // 2 x 8 x 4 + 2 x 5 x 8 + 12 bytes per sample.
+  EXPECT_NEAR(work.memory_MiB, 1e8 * 156 / 1048576., 1e-6);
+  EXPECT_NE(io_error_message(
+              [&] { fdem::parameters::check_work_estimate(work, 4096, 86400); })
+              .find("Probabilistic/Number of samples: 1e+08 samples would "
+                    "need about 14.5 GiB of memory"),
+            std::string::npos);
+  EXPECT_EQ(fdem::parameters::duration_text(40), "40 s");
+  EXPECT_EQ(fdem::parameters::duration_text(720), "12 min");
+  EXPECT_EQ(fdem::parameters::duration_text(5 * 3600), "5 h");
+  EXPECT_EQ(fdem::parameters::duration_text(5e7), "579 days");
 }

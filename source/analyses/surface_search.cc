@@ -186,6 +186,33 @@ namespace fdem
       return std::abs(y_t - *low) < slack || std::abs(y_t - *high) < slack;
     }
 
+    parameters::WorkEstimate
+    search_work_estimate(const SurfaceSearchParameters &settings)
+    {
+      const double n_circles =
+        double(settings.n_x) * settings.n_y *
+        (settings.radii == SurfaceSearchParameters::Radii::through_point ?
+           1 :
+           std::max<std::size_t>(settings.tangent_elevations.size(), 1));
+      // The screening of a valid circle took 1.6e-4 s and 1.4e-6 s per
+      // slice (doc/benchmarks.md, "Work estimates"); each circle's record
+      // (SearchedSurface) stays in memory, in a vector that may hold twice
+      // as many while it grows.
+      constexpr double seconds_per_circle = 1.6e-4, seconds_per_slice = 1.4e-6;
+      parameters::WorkEstimate work;
+      work.entry = "Surface search/Centre grid counts";
+      work.what  = parameters::count_text(n_circles) + " circles";
+      work.seconds =
+        n_circles * (seconds_per_circle +
+                     std::max(settings.n_slices, settings.min_n_slices) *
+                       seconds_per_slice);
+      work.memory_MiB =
+        n_circles * 2 * sizeof(SearchedSurface) / (1024. * 1024.);
+      return work;
+    }
+
+
+
     SurfaceSearchResult
     screen_surfaces(const le::Section             &section,
                     const double                   base_elevation,

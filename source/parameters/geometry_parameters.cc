@@ -92,6 +92,18 @@ namespace fdem
           "288 s); raise it for a mesh known to take longer. 0 means no "
           "limit.");
         prm.declare_entry(
+          "Time budget",
+          "86400",
+          Patterns::Double(0),
+          "Longest time the work of an analysis whose size the input sets may "
+          "be estimated to take (s), checked before that work starts: the "
+          "circles of Surface search (from the screening's measured time per "
+          "slice) and the samples of Probabilistic (from the time of the "
+          "safety factor at the variables' means). Work estimated to take "
+          "longer, or to need more memory than Geometry/Memory limit, is "
+          "refused with the estimate. The default is a day; 0 means no "
+          "limit.");
+        prm.declare_entry(
           "Scale factor",
           "1",
           Patterns::Double(0),
@@ -141,6 +153,7 @@ namespace fdem
         scale_factor   = prm.get_double("Scale factor");
         memory_limit   = prm.get_double("Memory limit");
         time_limit     = prm.get_double("Time limit");
+        time_budget    = prm.get_double("Time budget");
         rotation_angle = prm.get_double("Rotation angle");
 
         const std::vector<double> axis = parameters::finite_numbers(

@@ -189,7 +189,7 @@ namespace fdem
       if (mechanism_J != nullptr)
         writer.add_point_data("mechanism_displacement", 3, mechanism_out);
       for (unsigned int i = 0; i < fields.size(); ++i)
-        writer.add_point_data(names[i], 1, fields[i]);
+        writer.add_point_data_with_blanks(names[i], fields[i]);
       writer.add_point_data("status", status);
       writer.add_point_data("paired", paired);
       add_common_field_data(writer, interface.name, state);

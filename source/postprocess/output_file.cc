@@ -5,8 +5,10 @@
 #include <deal.II/base/exceptions.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <locale>
 
 namespace fdem
 {
@@ -19,7 +21,73 @@ namespace fdem
       {
         return error != 0 ? std::strerror(error) : "the write failed";
       }
+
+
+
+      /// The line of @p filename that holds byte @p offset.
+      unsigned long
+      line_at(const std::string &filename, const long long offset)
+      {
+        std::ifstream file(filename, std::ios_base::binary);
+        unsigned long line = 1;
+        char          c;
+        for (long long i = 0; i < offset && file.get(c); ++i)
+          line += c == '\n' ? 1 : 0;
+        return line;
+      }
     } // namespace
+
+
+
+    /**
+     * The classic number formatting, which notes the first value that is
+     * not finite (and its line) before writing it as usual.
+     */
+    class OutputFile::FiniteNumberPut : public std::num_put<char>
+    {
+    public:
+      FiniteNumberPut(NonFinite &record, Buffer &buffer)
+        : std::num_put<char>(0)
+        , record(record)
+        , buffer(buffer)
+      {}
+
+    protected:
+      iter_type
+      do_put(iter_type      out,
+             std::ios_base &format,
+             char           fill,
+             const double   x) const override
+      {
+        note(std::isfinite(x), x);
+        return std::num_put<char>::do_put(out, format, fill, x);
+      }
+
+      iter_type
+      do_put(iter_type         out,
+             std::ios_base    &format,
+             char              fill,
+             const long double x) const override
+      {
+        note(std::isfinite(x), static_cast<double>(x));
+        return std::num_put<char>::do_put(out, format, fill, x);
+      }
+
+    private:
+      void
+      note(const bool finite, const double x) const
+      {
+        if (!finite && record.offset < 0)
+          {
+            record.offset = static_cast<long long>(
+              buffer.pubseekoff(0, std::ios_base::cur, std::ios_base::out));
+            record.text = std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
+          }
+      }
+
+      NonFinite &record;
+      Buffer    &buffer;
+    };
 
 
 
@@ -74,6 +142,8 @@ namespace fdem
       , filename(filename)
     {
       rdbuf(&buffer);
+      imbue(std::locale(std::locale::classic(),
+                        new FiniteNumberPut(non_finite, buffer)));
       errno = 0;
       AssertThrow(buffer.open(filename, mode | std::ios_base::out) != nullptr,
                   dealii::ExcMessage("cannot create the output file '" +
@@ -109,6 +179,13 @@ namespace fdem
                   dealii::ExcMessage("cannot write the output file '" +
                                      filename +
                                      "': " + reason(buffer.first_error) + "."));
+      AssertThrow(non_finite.offset < 0,
+                  dealii::ExcMessage(
+                    "the output file '" + filename + "' would hold the value " +
+                    non_finite.text + " on line " +
+                    std::to_string(line_at(filename, non_finite.offset)) +
+                    ", which is not a result: this is a bug of fdem-slope; "
+                    "please report it with the parameter file."));
     }
 
 

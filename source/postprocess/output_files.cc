@@ -5,7 +5,10 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 
@@ -47,9 +50,48 @@ namespace fdem
       out.close();
     }
 
+    namespace
+    {
+      /// The path of the first number in @p value that is not finite ("" if
+      /// none): JSON would write it as null, the form of a missing value, so
+      /// a NaN that reached the summary would pass for one.
+      std::string
+      non_finite_entry(const nlohmann::json &value, const std::string &path)
+      {
+        if (value.is_number_float())
+          return std::isfinite(value.get<double>()) ? "" : path;
+        if (value.is_object())
+          for (const auto &entry : value.items())
+            {
+              const std::string found =
+                non_finite_entry(entry.value(), path + "/" + entry.key());
+              if (!found.empty())
+                return found;
+            }
+        if (value.is_array())
+          for (std::size_t i = 0; i < value.size(); ++i)
+            {
+              const std::string found =
+                non_finite_entry(value[i], path + "/" + std::to_string(i));
+              if (!found.empty())
+                return found;
+            }
+        return "";
+      }
+    } // namespace
+
+
+
     void
     write_json(const std::string &filename, const nlohmann::json &summary)
     {
+      const std::string non_finite = non_finite_entry(summary, "");
+      AssertThrow(non_finite.empty(),
+                  dealii::ExcMessage(
+                    "the output file '" + filename + "' would hold a value " +
+                    "that is not finite at " + non_finite +
+                    ", which is not a result: this is a bug of fdem-slope; "
+                    "please report it with the parameter file."));
       const std::string temporary = filename + ".part";
       {
         OutputFile out(temporary);

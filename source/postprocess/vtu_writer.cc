@@ -8,6 +8,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 
@@ -25,6 +26,14 @@ namespace fdem
         if (!values.empty())
           std::memcpy(bytes.data(), values.data(), bytes.size());
         return bytes;
+      }
+
+      bool
+      all_finite(const std::vector<double> &values)
+      {
+        return std::all_of(values.begin(), values.end(), [](const double x) {
+          return std::isfinite(x);
+        });
       }
 
       /**
@@ -98,6 +107,8 @@ namespace fdem
     std::uint64_t
     VtuWriter::add_point(const double x, const double y, const double z)
     {
+      if (first_non_finite.empty() && !all_finite({x, y, z}))
+        first_non_finite = "Points";
       points.insert(points.end(), {x, y, z});
       return n_points() - 1;
     }
@@ -119,6 +130,8 @@ namespace fdem
     {
       Assert(values.size() == n_points() * n_components,
              dealii::ExcInternalError());
+      if (first_non_finite.empty() && !all_finite(values))
+        first_non_finite = name;
       if (single)
         point_data.push_back(
           {name,
@@ -127,6 +140,19 @@ namespace fdem
            bytes_of(std::vector<float>(values.begin(), values.end()))});
       else
         point_data.push_back({name, "Float64", n_components, bytes_of(values)});
+    }
+
+    void
+    VtuWriter::add_point_data_with_blanks(const std::string         &name,
+                                          const std::vector<double> &values)
+    {
+      Assert(values.size() == n_points(), dealii::ExcInternalError());
+      if (first_non_finite.empty() &&
+          std::any_of(values.begin(), values.end(), [](const double x) {
+            return std::isinf(x);
+          }))
+        first_non_finite = name;
+      point_data.push_back({name, "Float64", 1, bytes_of(values)});
     }
 
     void
@@ -148,6 +174,17 @@ namespace fdem
     void
     VtuWriter::add_field_data(const std::string &name, const double value)
     {
+      if (first_non_finite.empty() && !std::isfinite(value))
+        first_non_finite = name;
+      field_numbers.emplace_back(name, value);
+    }
+
+    void
+    VtuWriter::add_field_data_or_blank(const std::string &name,
+                                       const double       value)
+    {
+      if (first_non_finite.empty() && std::isinf(value))
+        first_non_finite = name;
       field_numbers.emplace_back(name, value);
     }
 
@@ -160,6 +197,12 @@ namespace fdem
     void
     VtuWriter::write(const std::string &filename) const
     {
+      AssertThrow(first_non_finite.empty(),
+                  dealii::ExcMessage(
+                    "the output file '" + filename + "' would hold a value " +
+                    "that is not finite in its array '" + first_non_finite +
+                    "', which is not a result: this is a bug of fdem-slope; "
+                    "please report it with the parameter file."));
       std::string header, appended;
       const auto  array = [&](const std::string       &tag,
                              const std::string       &type,
@@ -223,7 +266,7 @@ namespace fdem
     {
       writer.add_field_data("name", name);
       writer.add_field_data("K", state.K);
-      writer.add_field_data("K_star", state.K_star);
+      writer.add_field_data_or_blank("K_star", state.K_star);
       writer.add_field_data("state", state.description);
       writer.add_field_data(
         "units",

@@ -5,7 +5,9 @@
 // the layout checks) or run it into its results folder.
 #include <fdem/analyses/anchors.h>
 #include <fdem/analyses/newmark.h>
+#include <fdem/analyses/probabilistic.h>
 #include <fdem/analyses/surface_search.h>
+#include <fdem/geometry/mesh_estimate.h>
 #include <fdem/postprocess/report.h>
 #include <fdem/postprocess/result_block.h>
 #include <fdem/postprocess/results_folder.h>
@@ -17,12 +19,39 @@
 
 namespace fdem
 {
+  namespace
+  {
+    /**
+     * The work estimates that need the parameters alone, made before
+     * anything is meshed or written: the search's grid, and the memory of
+     * the samples (their time is estimated from K at the means,
+     * probabilistic_safety_factor()).
+     */
+    void
+    check_work_estimates(const parameters::Parameters &parameters)
+    {
+      const double limit  = geometry::memory_limit_MiB(parameters.geometry);
+      const double budget = parameters.geometry.time_budget;
+      if (parameters.surface_search.enabled)
+        parameters::check_work_estimate(analyses::search_work_estimate(
+                                          parameters.surface_search),
+                                        limit,
+                                        budget);
+      if (parameters.probabilistic.compute)
+        parameters::check_work_estimate(
+          analyses::sample_work_estimate(parameters.probabilistic, 0, 0),
+          limit,
+          budget);
+    }
+  } // namespace
+
   std::vector<std::string>
   validate_case(const std::string &prm_file, std::ostream &log)
   {
     const parameters::Parameters parameters =
       parameters::read_parameters(prm_file);
     postprocess::check_results_target(parameters.output_directory(), prm_file);
+    check_work_estimates(parameters);
     // The files the analyses read after the model: the record.
     const auto &yield = parameters.yield_acceleration;
     if (!yield.acceleration_record.empty())
@@ -60,6 +89,7 @@ namespace fdem
       parameters::read_parameters(prm_file, &expanded);
     if (!make_report)
       parameters.output.report = false;
+    check_work_estimates(parameters);
     // The run writes into a partial folder that becomes the results folder
     // only when the run ends (postprocess/results_folder.h).
     postprocess::ResultsFolder folder(parameters.output_directory(),

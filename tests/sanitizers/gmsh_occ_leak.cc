@@ -2,7 +2,9 @@
 // Copyright (C) 2026 the fdem-slope authors
 //
 // Gmsh alone: a rectangle cut by a disk and by a layer line, as the slope
-// generator cuts its model, meshed, then finalized. Whatever LeakSanitizer
+// generator cuts its model; its 3D section extruded and cut by a sphere;
+// a layered section extruded and cut by a cylinder; each meshed, then
+// finalized. Whatever LeakSanitizer
 // reports here is Gmsh's own (tests/sanitizers/lsan.supp).
 #include <gmsh.h>
 
@@ -56,6 +58,63 @@ main()
     if (dim_tag.first == 3)
       solids.push_back(dim_tag);
   gmsh::model::occ::fragment(solids, {{3, ball}}, pieces, origin);
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 4.0);
+  gmsh::model::mesh::generate(3);
+  gmsh::finalize();
+  // The 3D generator with layers: the sliding mass cut out of the
+  // extruded section by a cylinder, then split by slabs, one per layer (an
+  // extruded strip wider than the model), the slabs' rest removed.
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::model::add("m3l");
+  const auto extruded_polygon =
+    [](const std::vector<std::pair<double, double>> &outline) {
+      std::vector<int> corners, sides;
+      for (const auto &[x, z] : outline)
+        corners.push_back(gmsh::model::occ::addPoint(x, -5, z));
+      for (unsigned int i = 0; i < corners.size(); ++i)
+        sides.push_back(
+          gmsh::model::occ::addLine(corners[i],
+                                    corners[(i + 1) % corners.size()]));
+      gmsh::vectorpair out;
+      gmsh::model::occ::extrude({{2,
+                                  gmsh::model::occ::addPlaneSurface(
+                                    {gmsh::model::occ::addCurveLoop(sides)})}},
+                                0,
+                                30,
+                                0,
+                                out);
+      for (const auto &dim_tag : out)
+        if (dim_tag.first == 3)
+          return dim_tag;
+      return gmsh::vectorpair::value_type{};
+    };
+  const auto body =
+    extruded_polygon({{0, 0}, {30, 0}, {30, 20}, {15, 20}, {5, 10}, {0, 10}});
+  const int roller = gmsh::model::occ::addCylinder(15, -5, 25, 0, 30, 0, 18);
+  mass.clear();
+  gmsh::model::occ::intersect(
+    {body}, {{3, roller}}, mass, origin, -1, false, true);
+  gmsh::model::occ::fragment({body}, mass, pieces, origin);
+  gmsh::vectorpair volumes;
+  for (const auto &dim_tag : pieces)
+    volumes.push_back(dim_tag);
+  const auto upper =
+    extruded_polygon({{-10, 12}, {40, 13}, {40, 40}, {-10, 40}});
+  const auto lower =
+    extruded_polygon({{-10, -10}, {40, -10}, {40, 13}, {-10, 12}});
+  gmsh::model::occ::fragment(volumes, {upper, lower}, pieces, origin);
+  gmsh::model::occ::synchronize();
+  gmsh::vectorpair outside;
+  for (const auto &dim_tag : pieces)
+    {
+      double x0, y0, z0, x1, y1, z1;
+      gmsh::model::getBoundingBox(3, dim_tag.second, x0, y0, z0, x1, y1, z1);
+      if (x0 < -1 || x1 > 31 || z0 < -1)
+        outside.push_back(dim_tag);
+    }
+  gmsh::model::occ::remove(outside, true);
   gmsh::model::occ::synchronize();
   gmsh::option::setNumber("Mesh.MeshSizeMax", 4.0);
   gmsh::model::mesh::generate(3);

@@ -23,6 +23,14 @@ with --keep DIR the mutants that failed are copied there. The last line of
 the output is the table of counts for doc/verification.md; the exit code is
 1 if any run failed.
 
+Besides the shipped files, the bases hold cases of the tests that carry
+what the shipped files do not (EXTRA): the analyses' sections (a surface
+search, probabilistic samples with a random water level, the yield
+acceleration with a Newmark record), point lists (piezometric, perched and
+weak-layer lines, layer boundaries) and the data files they read (a
+terrain grid, an acceleration record), which are copied beside each
+mutant and mutated in about a third of the mutants instead of the .prm.
+
 The runs are made cheap without changing what is tested: the slowest cases
 get coarser meshes (COARSER), VTU files are off
 and Geometry/Memory limit is 2000 MiB (both appended to every base file
@@ -69,6 +77,26 @@ COARSER = {
     "rock_wedge.prm": [("Mesh size    = 4", "Mesh size    = 8")],
 }
 
+# Cases of the tests, as bases beside prm/*.prm: each file (its @PRM_DIR@
+# and @DATA_DIR@ filled in) and the data files it reads.
+RECORD = "".join(f"{0.01 * i:.2f},{0.3 * math.sin(2 * math.pi * i / 50):.6f}\n"
+                 for i in range(301))
+YIELD_WITH_RECORD = """include @PRM_DIR@/paper_slope.prm
+subsection Yield acceleration
+  set Compute             = true
+  set Acceleration record = record.csv
+  set Acceleration unit   = g
+end
+"""
+EXTRA = {
+    "search_cohesionless.prm": ("tests/surface_search/cohesionless_slope.prm", {}),
+    "probabilistic_block_water.prm": ("tests/probabilistic/block_water.prm", {}),
+    "layered_interslices.prm": ("tests/certificate/layered_interslices.prm", {}),
+    "perched_interslices.prm": ("tests/certificate/perched_interslices.prm", {}),
+    "kinked_water_table.prm": ("tests/limit_equilibrium/kinked_water_table.prm", {}),
+    "yield_with_record.prm": (YIELD_WITH_RECORD, {"record.csv": RECORD}),
+}
+
 EXTREME = ["0", "-0", "-1", "1e308", "-1e308", "1e-308", "5e-324", "1e20", "-1e20",
            "1e-20", "nan", "inf", "-inf", "1e400", "4294967297", "-2147483649",
            "18446744073709551617", "0x10", "1/0", "0/0", "1e-9", "1e9", "3.", ".5e",
@@ -88,6 +116,42 @@ def mutate_bytes(text, rng):
         else:
             data.insert(position, byte)
     return data.decode("latin-1")
+
+
+def mutate_table(text, rng):
+    """One mutation of a data file (comma-separated numbers), and its name."""
+    lines = text.split("\n")
+    kind = rng.choice(["truncate", "delete lines", "duplicate line", "random bytes",
+                       "extreme number", "extreme number"])
+    if kind == "truncate":
+        return text[:rng.randrange(max(1, len(text)))], "table " + kind
+    if kind == "delete lines":
+        start = rng.randrange(len(lines))
+        del lines[start:start + rng.choice([1, 1, 2, 10])]
+    elif kind == "duplicate line":
+        lines.insert(rng.randrange(len(lines) + 1), rng.choice(lines))
+    elif kind == "random bytes":
+        return mutate_bytes(text, rng), "table " + kind
+    else:
+        rows = [i for i, l in enumerate(lines) if NUMBER.search(l)]
+        if not rows:
+            return mutate_bytes(text, rng), "table random bytes"
+        i = rng.choice(rows)
+        m = rng.choice(list(NUMBER.finditer(lines[i])))
+        lines[i] = lines[i][:m.start()] + rng.choice(EXTREME) + lines[i][m.end():]
+    return "\n".join(lines), "table " + kind
+
+
+def extra_bases():
+    """EXTRA's cases: name -> (text, {data file: text})."""
+    bases = {}
+    for name, (source, data) in EXTRA.items():
+        text = open(os.path.join(ROOT, source)).read() if source.endswith(".prm") else source
+        bases[name] = (text.replace("@PRM_DIR@", PRM_DIR), dict(data))
+    # The terrain grid of the shipped 3D terrain case, mutated like the others.
+    bases["slope_3d_terrain.prm"] = (None, {"slope_3d_terrain.csv": open(
+        os.path.join(PRM_DIR, "slope_3d_terrain.csv")).read()})
+    return bases
 
 
 def mutate(text, rng):
@@ -163,13 +227,16 @@ def bad_number(_):
     raise ValueError("NaN or infinity in summary.json")
 
 
-def run_one(exe, case, data, validate, timeout, keep):
-    """Runs one mutant; returns (outcome, detail), outcome in 'error',
-    'result' or 'failure: <kind>'."""
+def run_one(exe, case, data, files, validate, timeout, keep):
+    """Runs one mutant (its .prm @p data and its data @p files); returns
+    (outcome, detail), outcome in 'error', 'result' or 'failure: <kind>'."""
     workdir = tempfile.mkdtemp(prefix="fdem-fuzz-")
     try:
         for geo in glob.glob(os.path.join(PRM_DIR, "*.geo")):
             shutil.copy(geo, workdir)
+        for name, text in files.items():
+            with open(os.path.join(workdir, name), "wb") as f:
+                f.write(text)
         prm = os.path.join(workdir, case)
         with open(prm, "wb") as f:
             f.write(data)
@@ -253,23 +320,33 @@ def main():
         for old, new in COARSER.get(name, []):
             assert old in text, f"{name}: '{old}' not found (update COARSER)"
             text = text.replace(old, new)
-        bases[name] = text + FAST
+        bases[name] = (text + FAST, {})
+    for name, (text, files) in extra_bases().items():
+        bases[name] = (bases[name][0] if text is None else text + FAST, files)
     rng = random.Random(args.seed)
     mutants = []
     for i in range(args.n):
         case = rng.choice(sorted(bases))
-        data, kinds = bases[case], []
+        (data, files), kinds = bases[case], []
+        files = dict(files)
         for _ in range(rng.choice([1, 1, 1, 2, 3])):
-            data, kind = mutate(data, rng)
+            if files and rng.random() < 1 / 3:
+                name = rng.choice(sorted(files))
+                files[name], kind = mutate_table(files[name], rng)
+            else:
+                data, kind = mutate(data, rng)
             kinds.append(kind)
-        mutants.append((i, case, data.encode("latin-1"), rng.random() < args.validate_share, "+".join(kinds)))
+        mutants.append((i, case, data.encode("latin-1"),
+                        {k: v.encode("latin-1") for k, v in files.items()},
+                        rng.random() < args.validate_share, "+".join(kinds)))
 
     counts = collections.Counter()
     failures = []
     start = time.time()
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        futures = {pool.submit(run_one, args.exe, case, data, validate, args.timeout, args.keep):
-                   (i, case, validate, kinds) for i, case, data, validate, kinds in mutants}
+        futures = {pool.submit(run_one, args.exe, case, data, files, validate, args.timeout,
+                               args.keep):
+                   (i, case, validate, kinds) for i, case, data, files, validate, kinds in mutants}
         for n, future in enumerate(concurrent.futures.as_completed(futures), 1):
             i, case, validate, kinds = futures[future]
             outcome, detail, kept = future.result()

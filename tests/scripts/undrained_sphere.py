@@ -48,10 +48,11 @@ the central section's integrals to the spheroid's.
 
     /usr/bin/python3 tests/scripts/undrained_sphere.py XC YC ZC R C GAMMA [B [N [L]]]
 """
+import functools
 import sys
 
 import numpy as np
-from numpy.polynomial.legendre import leggauss
+from numpy.polynomial.legendre import leggauss as numpy_leggauss
 
 X_TOE, X_CREST, Z_TOE, HEIGHT = 10.0, 30.0, 25.0, 10.0
 
@@ -59,6 +60,13 @@ X_TOE, X_CREST, Z_TOE, HEIGHT = 10.0, 30.0, 25.0, 10.0
 def ground(x):
     return np.where(x <= X_TOE, Z_TOE,
                     np.where(x >= X_CREST, Z_TOE + HEIGHT, Z_TOE + HEIGHT * (x - X_TOE) / (X_CREST - X_TOE)))
+
+
+@functools.lru_cache(maxsize=None)
+def leggauss(n):
+    """numpy's Gauss-Legendre points and weights, computed once per n (an
+    eigenvalue problem each time otherwise: most of the time of a run)."""
+    return numpy_leggauss(n)
 
 
 def sign_changes(f, a, b, n=400):

@@ -39,12 +39,21 @@ heavier mass.
 
     /usr/bin/python3 tests/scripts/undrained_sphere_terrain.py TERRAIN XC YC ZC R C GAMMA [N [WATER GAMMA_SAT]]
 """
+import bisect
+import functools
 import sys
 
 import numpy as np
-from numpy.polynomial.legendre import leggauss
+from numpy.polynomial.legendre import leggauss as numpy_leggauss
 
 from undrained_sphere import sign_changes as roots  # the sign changes of f on [a, b]
+
+
+@functools.lru_cache(maxsize=None)
+def leggauss(n):
+    """numpy's Gauss-Legendre points and weights, computed once per n (an
+    eigenvalue problem each time otherwise: most of the time of a run)."""
+    return numpy_leggauss(n)
 
 
 class Terrain:
@@ -66,6 +75,8 @@ class Terrain:
             self.z[np.searchsorted(self.y, y), np.searchsorted(self.x, x)] = z
 
     def __call__(self, x, y):
+        if isinstance(x, float) and isinstance(y, float):
+            return self.at_point(x, y)
         x = np.clip(np.asarray(x, dtype=float), self.x[0], self.x[-1])
         y = np.clip(np.asarray(y, dtype=float), self.y[0], self.y[-1])
         i = np.clip(np.searchsorted(self.x, x, side='right') - 1, 0, len(self.x) - 2)
@@ -75,6 +86,21 @@ class Terrain:
         z = self.z
         return ((1 - s) * (1 - t) * z[j, i] + s * (1 - t) * z[j, i + 1] + (1 - s) * t * z[j + 1, i]
                 + s * t * z[j + 1, i + 1])
+
+    def at_point(self, x, y):
+        """__call__ at one point, the same operations on Python floats (the
+        same numbers, far fewer calls into numpy)."""
+        if not hasattr(self, "_lists"):
+            self._lists = (self.x.tolist(), self.y.tolist(), self.z.tolist())
+        xs, ys, z = self._lists
+        x = min(max(x, xs[0]), xs[-1])
+        y = min(max(y, ys[0]), ys[-1])
+        i = min(max(bisect.bisect_right(xs, x) - 1, 0), len(xs) - 2)
+        j = min(max(bisect.bisect_right(ys, y) - 1, 0), len(ys) - 2)
+        s = (x - xs[i]) / (xs[i + 1] - xs[i])
+        t = (y - ys[j]) / (ys[j + 1] - ys[j])
+        return ((1 - s) * (1 - t) * z[j][i] + s * (1 - t) * z[j][i + 1] + (1 - s) * t * z[j + 1][i]
+                + s * t * z[j + 1][i + 1])
 
 
 def pieces(a, b, breaks, n):

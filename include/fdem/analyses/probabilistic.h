@@ -5,6 +5,7 @@
 #include <fdem/analyses/probabilistic_parameters.h>
 #include <fdem/analyses/seismic_results.h>
 #include <fdem/model.h>
+#include <fdem/parameters/work_estimate.h>
 
 #include <nlohmann/json.hpp>
 
@@ -73,6 +74,17 @@ namespace fdem
      * @p deterministic_K, the model's own K, beside the samples' statistics.
      * @p seismic is the model's seismic load (seismic_analyses()).
      */
+    /**
+     * The work of the samples of @p p (parameters/work_estimate.h): each
+     * takes @p seconds_per_sample (0 where not yet known: the memory
+     * alone), and holds its values, its results and, where the water level
+     * is random, @p bytes_per_water_case for its load case.
+     */
+    parameters::WorkEstimate
+    sample_work_estimate(const ProbabilisticParameters &p,
+                         double                         seconds_per_sample,
+                         double                         bytes_per_water_case);
+
     template <int dim>
     nlohmann::json
     probabilistic_safety_factor(Model<dim>           &model,

@@ -5,6 +5,7 @@
 #include <fdem/analyses/limit_equilibrium.h>
 #include <fdem/analyses/surface_search_parameters.h>
 #include <fdem/parameters/parameters.h>
+#include <fdem/parameters/work_estimate.h>
 
 #include <deal.II/base/point.h>
 
@@ -293,6 +294,14 @@ namespace fdem
     bool
     on_search_region_edge(const SurfaceSearchParameters &settings,
                           const std::array<double, 3>   &circle);
+
+    /**
+     * The work of the search's grid, from its parameters alone: circles
+     * times slices at the screening's measured time per slice, and the
+     * memory of every circle's record (parameters/work_estimate.h).
+     */
+    parameters::WorkEstimate
+    search_work_estimate(const SurfaceSearchParameters &settings);
 
     /**
      * The limit-equilibrium part of the search, no model needed: the grid

@@ -74,7 +74,10 @@ namespace fdem
       /// Memory a built-in mesh may need (MiB); 0: the machine's memory.
       double memory_limit = 0;
       /// Time making the mesh may take (s); 0: no limit.
-      double time_limit = 1800;
+      double time_limit = 600;
+      /// Time the work of a search or of the samples may be estimated to
+      /// take (s); 0: no limit (parameters/work_estimate.h).
+      double time_budget = 86400;
       /** Angle of R (degrees), about z in 2D and about rotation_axis in 3D. */
       double rotation_angle = 0;
       /** Axis of R in 3D (a unit vector after parsing). */

@@ -18,6 +18,11 @@ namespace fdem
      * writer of the program writes through it and ends with close(); a file
      * destroyed without close() (an exception on the way) is removed, so
      * that no cut file looks like a result.
+     *
+     * A number that is not finite (nan, inf) is never a result: every
+     * floating-point value written with operator<< passes a number facet
+     * that counts them, and close() refuses the file with the first one's
+     * line, since such a value is a bug of the program, not the user's.
      */
     class OutputFile : public std::ostream
     {
@@ -41,6 +46,18 @@ namespace fdem
       }
 
     private:
+      /// The first value that was not finite, and where in the file it
+      /// went (-1: none).
+      struct NonFinite
+      {
+        long long   offset = -1;
+        std::string text;
+      };
+
+      /// The stream's number formatting, with a count of the values that
+      /// are not finite.
+      class FiniteNumberPut;
+
       /// A file buffer that keeps the errno of its first failed write (the
       /// stream's state says only that one failed).
       class Buffer : public std::filebuf
@@ -63,6 +80,7 @@ namespace fdem
 
       std::string filename;
       Buffer      buffer;
+      NonFinite   non_finite;
       bool        closed = false;
     };
 

@@ -65,6 +65,15 @@ namespace fdem
                      const std::vector<double> &values,
                      const bool                 single = false);
 
+      /**
+       * A point array of one component (Float64) where NaN marks a point
+       * without a value (an interface node with no pair: ParaView shows
+       * it in its NaN colour); every other value must be finite.
+       */
+      void
+      add_point_data_with_blanks(const std::string         &name,
+                                 const std::vector<double> &values);
+
       /** A point array of integers (Int32). */
       void
       add_point_data(const std::string               &name,
@@ -78,6 +87,13 @@ namespace fdem
       /** A field-data number (one Float64 tuple). */
       void
       add_field_data(const std::string &name, const double value);
+
+      /**
+       * As add_field_data(), where NaN says the value is not available
+       * (K* of a state that has none); an infinity is refused all the same.
+       */
+      void
+      add_field_data_or_blank(const std::string &name, const double value);
 
       /** A field-data text (one String tuple). */
       void
@@ -95,6 +111,9 @@ namespace fdem
         std::vector<char> bytes;
       };
 
+      /// The first array given a value that is not finite ("" if none):
+      /// write() refuses the file, since such a value is a bug.
+      std::string                first_non_finite;
       std::vector<double>        points;
       std::vector<std::uint64_t> connectivity, offsets;
       std::vector<std::uint8_t>  types;
