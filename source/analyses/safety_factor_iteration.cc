@@ -253,7 +253,7 @@ namespace fdem
         const double t_two = -g[0] / d1;
         if (n < 3 || disc < 0)
           return {K[0] + t_two,
-                  K[0] + h[0] * (K[0] - K[1]) / (h[1] - h[0]),
+                  K[0] + h[0] * ((K[0] - K[1]) / (h[1] - h[0])),
                   false};
         // The smaller positive root, in the form without cancellation.
         const double limit = K[0] + 2 * g[0] / (-beta + std::sqrt(disc));
@@ -300,9 +300,11 @@ namespace fdem
         if (previous != nullptr)
           {
             const double previous_h = previous->K_star - previous->K;
+            // The secant's step as h times a ratio: h (K - K_prev) itself
+            // overflows where K is large (1e198 with a cohesion of 1e200).
             if (previous->K < K && previous_h > h && h > 0)
               next =
-                std::max(next, K + h * (K - previous->K) / (previous_h - h));
+                std::max(next, K + h * ((K - previous->K) / (previous_h - h)));
           }
         if (fold.aim > next)
           next = fold.aim;

@@ -34,11 +34,16 @@ namespace fdem
         return object[key].get<double>();
       }
 
+      /// @p x with @p decimals decimals; from a million on in exponent form
+      /// (a cohesion of 1e200 gives K near 4e198: 199 digits otherwise).
       std::string
       fixed(const double x, const int decimals)
       {
         std::ostringstream text;
-        text << std::fixed << std::setprecision(decimals) << x;
+        if (std::abs(x) >= 1e6)
+          text << std::setprecision(decimals + 2) << x;
+        else
+          text << std::fixed << std::setprecision(decimals) << x;
         return text.str();
       }
 

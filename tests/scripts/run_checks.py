@@ -825,6 +825,28 @@ def check_invariance(exe, reference, *others):
     assert not failures, "\n".join(failures)
 
 
+def check_cohesion_scale(exe, prm, *cohesions):
+    """@p prm with the sliding surface's cohesion set to each of
+    @p cohesions, so large that friction adds nothing a double holds (the
+    friction share is below 1e-90 from 1e100 on): K is proportional to the
+    cohesion, K/c the same to 1e-8 (the invariance tests' tolerance) in the
+    same steps, certified, at every magnitude up to 1e300. The secant of
+    the iteration once overflowed there: h (K - K_prev) at K = 4e198 gave
+    K = inf, and the run ended in "no static equilibrium"."""
+    ratios = []
+    for c in cohesions:
+        summary = completed_run(exe, prm, settings={
+            "Interfaces/sliding surface/Cohesion": c}).summary
+        assert summary["converged"] and summary["certificate"]["holds"], summary["certificate"]
+        steps = [(s["n_stick"], s["n_slip"], s["n_open"]) for s in summary["iterations"]]
+        ratios.append((summary["safety_factor"] / float(c), steps))
+        print(f"cohesion {c}: K = {summary['safety_factor']!r}, K/c = {ratios[-1][0]!r}, "
+              f"{len(steps)} steps")
+    for c, (ratio, steps) in zip(cohesions[1:], ratios[1:]):
+        assert abs(ratio / ratios[0][0] - 1) <= 1e-8, (c, ratio, ratios[0][0])
+        assert steps == ratios[0][1], (c, steps, ratios[0][1])
+
+
 def vtu_cells(path):
     import vtk
     reader = vtk.vtkXMLUnstructuredGridReader()
@@ -938,5 +960,6 @@ if __name__ == "__main__":
          "certified": check_certified, "fe-stress": check_fe_stress,
          "mesh-convergence": check_mesh_convergence,
          "stiffness-consistency": check_stiffness_consistency,
-         "invariance": check_invariance}[command](exe, path, *sys.argv[4:])
+         "invariance": check_invariance,
+         "cohesion-scale": check_cohesion_scale}[command](exe, path, *sys.argv[4:])
     print("passed")
