@@ -180,12 +180,21 @@ namespace fdem
                                      filename +
                                      "': " + reason(buffer.first_error) + "."));
       AssertThrow(non_finite.offset < 0,
-                  dealii::ExcMessage(
-                    "the output file '" + filename + "' would hold the value " +
-                    non_finite.text + " on line " +
-                    std::to_string(line_at(filename, non_finite.offset)) +
-                    ", which is not a result: this is a bug of fdem-slope; "
-                    "please report it with the parameter file."));
+                  dealii::ExcMessage(non_finite_output_error(
+                    filename,
+                    "the value " + non_finite.text + " on line " +
+                      std::to_string(line_at(filename, non_finite.offset)))));
+    }
+
+
+
+    std::string
+    non_finite_output_error(const std::string &filename,
+                            const std::string &what)
+    {
+      return "the output file '" + filename + "' would hold " + what +
+             ", which is not a result: this is a bug of fdem-slope; please "
+             "report it with the parameter file.";
     }
 
 

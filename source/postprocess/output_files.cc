@@ -30,28 +30,9 @@ namespace fdem
                             std::string(1, c);
         return out;
       }
-    } // namespace
 
-    void
-    write_pvd(const std::string &filename, const std::vector<PvdEntry> &entries)
-    {
-      OutputFile out(filename);
-      out << "<?xml version=\"1.0\"?>\n"
-          << "<VTKFile type=\"Collection\" version=\"0.1\" "
-             "byte_order=\"LittleEndian\">\n  <Collection>\n";
-      // K to 12 digits: steps of the iteration closer than that are one time.
-      out << std::setprecision(12);
-      for (const PvdEntry &entry : entries)
-        out << "    <DataSet timestep=\"" << entry.time
-            << "\" group=\"\" part=\"" << entry.part << "\" name=\""
-            << xml_escaped(entry.name) << "\" file=\"" << entry.file
-            << "\"/>\n";
-      out << "  </Collection>\n</VTKFile>\n";
-      out.close();
-    }
 
-    namespace
-    {
+
       /// The path of the first number in @p value that is not finite ("" if
       /// none): JSON would write it as null, the form of a missing value, so
       /// a NaN that reached the summary would pass for one.
@@ -80,6 +61,24 @@ namespace fdem
       }
     } // namespace
 
+    void
+    write_pvd(const std::string &filename, const std::vector<PvdEntry> &entries)
+    {
+      OutputFile out(filename);
+      out << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"Collection\" version=\"0.1\" "
+             "byte_order=\"LittleEndian\">\n  <Collection>\n";
+      // K to 12 digits: steps of the iteration closer than that are one time.
+      out << std::setprecision(12);
+      for (const PvdEntry &entry : entries)
+        out << "    <DataSet timestep=\"" << entry.time
+            << "\" group=\"\" part=\"" << entry.part << "\" name=\""
+            << xml_escaped(entry.name) << "\" file=\"" << entry.file
+            << "\"/>\n";
+      out << "  </Collection>\n</VTKFile>\n";
+      out.close();
+    }
+
 
 
     void
@@ -87,11 +86,8 @@ namespace fdem
     {
       const std::string non_finite = non_finite_entry(summary, "");
       AssertThrow(non_finite.empty(),
-                  dealii::ExcMessage(
-                    "the output file '" + filename + "' would hold a value " +
-                    "that is not finite at " + non_finite +
-                    ", which is not a result: this is a bug of fdem-slope; "
-                    "please report it with the parameter file."));
+                  dealii::ExcMessage(non_finite_output_error(
+                    filename, "a value that is not finite at " + non_finite)));
       const std::string temporary = filename + ".part";
       {
         OutputFile out(temporary);

@@ -198,11 +198,10 @@ namespace fdem
     VtuWriter::write(const std::string &filename) const
     {
       AssertThrow(first_non_finite.empty(),
-                  dealii::ExcMessage(
-                    "the output file '" + filename + "' would hold a value " +
-                    "that is not finite in its array '" + first_non_finite +
-                    "', which is not a result: this is a bug of fdem-slope; "
-                    "please report it with the parameter file."));
+                  dealii::ExcMessage(non_finite_output_error(
+                    filename,
+                    "a value that is not finite in its array '" +
+                      first_non_finite + "'")));
       std::string header, appended;
       const auto  array = [&](const std::string       &tag,
                              const std::string       &type,

@@ -84,6 +84,15 @@ namespace fdem
       bool        closed = false;
     };
 
+    /**
+     * The error of an output file that would hold a number that is not
+     * finite, @p what saying which and where ("the value nan on line 3"):
+     * a bug of the program, said so in one line.
+     */
+    std::string
+    non_finite_output_error(const std::string &filename,
+                            const std::string &what);
+
     /// Writes @p text to @p filename through an OutputFile.
     void
     write_text_file(const std::string &filename, const std::string &text);
