@@ -65,7 +65,6 @@ namespace fdem
                               parameters.output_directory() + "/mesh.msh" :
                               "";
     mesh                  = geometry::make_mesh<dim>(parameters.geometry,
-                                    parameters.prm_directory,
                                     msh,
                                     parameters.fe_degree,
                                     parameters.material_names,

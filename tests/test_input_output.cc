@@ -4,26 +4,36 @@
 // The input's one number reader refuses what is not a finite number, the
 // table reader takes a spreadsheet's byte order mark and names a folder,
 // an output file whose write fails or that would hold a nan says so, and
-// work the input makes too large is refused before it starts (issue: never
-// lose a user's file, never accept a number that is not one).
+// work the input makes too large is refused before it starts, and files
+// name other files relative to themselves (issue: never lose a user's file,
+// never accept a number that is not one).
 #include <fdem/analyses/newmark.h>
 #include <fdem/analyses/probabilistic.h>
 #include <fdem/analyses/surface_search.h>
 #include <fdem/parameters/numbers.h>
+#include <fdem/parameters/parameter_file.h>
+#include <fdem/parameters/parameters.h>
 #include <fdem/parameters/work_estimate.h>
 #include <fdem/postprocess/output_file.h>
 #include <fdem/postprocess/output_files.h>
 #include <fdem/postprocess/run_log.h>
 
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -217,4 +227,223 @@ TEST(WorkEstimates, RefusedWithTheEntryTheEstimateAndTheOverride)
   EXPECT_EQ(fdem::parameters::duration_text(720), "12 min");
   EXPECT_EQ(fdem::parameters::duration_text(5 * 3600), "5 h");
   EXPECT_EQ(fdem::parameters::duration_text(5e7), "579 days");
+}
+
+namespace
+{
+  /// A folder of its own under the temporary folder, removed at the end.
+  struct TemporaryTree
+  {
+    std::filesystem::path root = std::filesystem::temp_directory_path() /
+                                 ("fdem-paths-" + std::to_string(getpid()));
+
+    TemporaryTree()
+    {
+      std::filesystem::create_directories(root / "case" / "shared");
+    }
+    ~TemporaryTree()
+    {
+      std::filesystem::remove_all(root);
+    }
+    void
+    write(const std::string &name, const std::string &text) const
+    {
+      std::ofstream(root / name) << text;
+    }
+  };
+
+  /// The four file entries in their subsections, as the program has them.
+  void
+  declare_file_entries(dealii::ParameterHandler &prm)
+  {
+    for (const std::string &entry : fdem::parameters::input_file_entries())
+      {
+        const auto parts = dealii::Utilities::split_string_list(entry, '/');
+        for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+          prm.enter_subsection(parts[i]);
+        prm.declare_entry(parts.back(), "", dealii::Patterns::FileName());
+        for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+          prm.leave_subsection();
+      }
+  }
+
+  std::string
+  entry(dealii::ParameterHandler &prm, const std::string &path)
+  {
+    const auto parts = dealii::Utilities::split_string_list(path, '/');
+    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+      prm.enter_subsection(parts[i]);
+    const std::string value = prm.get(parts.back());
+    for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+      prm.leave_subsection();
+    return value;
+  }
+
+  /// An entry's name as ParameterHandler's JSON output mangles it ("_20"
+  /// for a blank) read back.
+  std::string
+  demangled(const std::string &key)
+  {
+    std::string name;
+    for (std::size_t i = 0; i < key.size(); ++i)
+      if (key[i] == '_' && i + 2 < key.size())
+        {
+          name += char(std::stoi(key.substr(i + 1, 2), nullptr, 16));
+          i += 2;
+        }
+      else
+        name += key[i];
+    return name;
+  }
+
+  /// Runs @p action with the working directory @p folder.
+  void
+  in_folder(const std::filesystem::path &folder,
+            const std::function<void()> &action)
+  {
+    const std::filesystem::path before = std::filesystem::current_path();
+    std::filesystem::current_path(folder);
+    try
+      {
+        action();
+      }
+    catch (...)
+      {
+        std::filesystem::current_path(before);
+        throw;
+      }
+    std::filesystem::current_path(before);
+  }
+} // namespace
+
+TEST(ParameterFiles, PathsRelativeToTheFileThatNamesThem)
+{
+  const TemporaryTree tree;
+  // An include and a file entry over two lines in the top file; in the
+  // included file, one in another folder, two entries of its own.
+  tree.write("case/main.prm",
+             "include shared/base.prm\n"
+             "subsection Geometry\n"
+             "  set Mesh file = \\\n"
+             "      meshes/a.msh\n"
+             "end\n");
+  tree.write("case/shared/base.prm",
+             "subsection Water\n"
+             "  set Piezometric surface file = water.csv\n"
+             "end\n"
+             "subsection Yield acceleration\n"
+             "  set Acceleration record = records/quake.csv # a comment\n"
+             "end\n"
+             "subsection Geometry\n"
+             "  subsection Slope 3D\n"
+             "    set Terrain file = /data/terrain.csv\n"
+             "  end\n"
+             "end\n");
+  // From a working directory that is neither file's folder.
+  fdem::parameters::FileRelativeParameterHandler prm(
+    fdem::parameters::input_file_entries());
+  declare_file_entries(prm);
+  const std::filesystem::path root = tree.root;
+  in_folder("/", [&] {
+    fdem::parameters::parse_parameter_file(prm,
+                                           (root / "case/main.prm").string(),
+                                           false);
+  });
+  EXPECT_EQ(entry(prm, "Geometry/Mesh file"),
+            (root / "case/meshes/a.msh").string());
+  EXPECT_EQ(entry(prm, "Water/Piezometric surface file"),
+            (root / "case/shared/water.csv").string());
+  EXPECT_EQ(entry(prm, "Yield acceleration/Acceleration record"),
+            (root / "case/shared/records/quake.csv").string());
+  EXPECT_EQ(entry(prm, "Geometry/Slope 3D/Terrain file"), "/data/terrain.csv");
+
+  // The top file named relative to the working directory: the names stay
+  // relative to it.
+  fdem::parameters::FileRelativeParameterHandler relative(
+    fdem::parameters::input_file_entries());
+  declare_file_entries(relative);
+  in_folder(root, [&] {
+    fdem::parameters::parse_parameter_file(relative, "case/main.prm", false);
+  });
+  EXPECT_EQ(entry(relative, "Geometry/Mesh file"), "case/meshes/a.msh");
+  EXPECT_EQ(entry(relative, "Water/Piezometric surface file"),
+            "case/shared/water.csv");
+
+  // deal.II's line numbers are the file's own after the two-line entry.
+  tree.write("case/typo.prm",
+             "subsection Geometry\n"
+             "  set Mesh file = \\\n"
+             "      a.msh\n"
+             "end\n"
+             "set No such entry = 1\n");
+  fdem::parameters::FileRelativeParameterHandler typo(
+    fdem::parameters::input_file_entries());
+  declare_file_entries(typo);
+  const std::string message = io_error_message([&] {
+    fdem::parameters::parse_parameter_file(typo,
+                                           (root / "case/typo.prm").string(),
+                                           false);
+  });
+  EXPECT_NE(message.find("Line <5>"), std::string::npos) << message;
+
+  // A missing include is named as the program looked for it.
+  tree.write("case/shared/missing.prm", "include neighbour.prm\n");
+  const std::string missing = io_error_message([&] {
+    fdem::parameters::parse_parameter_file(
+      typo, (root / "case/shared/missing.prm").string(), false);
+  });
+  EXPECT_NE(missing.find("the included file '" +
+                         (root / "case/shared/neighbour.prm").string() +
+                         "': no such file."),
+            std::string::npos)
+    << missing;
+}
+
+TEST(ParameterFiles, FileEntriesOfAJsonFile)
+{
+  const TemporaryTree tree;
+  tree.write("case/main.json",
+             R"({"Geometry": {"Mesh file": "meshes/a.msh"}})");
+  fdem::parameters::FileRelativeParameterHandler prm(
+    fdem::parameters::input_file_entries());
+  declare_file_entries(prm);
+  fdem::parameters::parse_parameter_file(
+    prm, (tree.root / "case/main.json").string(), false);
+  EXPECT_EQ(entry(prm, "Geometry/Mesh file"),
+            (tree.root / "case/meshes/a.msh").string());
+}
+
+TEST(ParameterFiles, EveryFileEntryIsResolved)
+{
+  // Every entry whose pattern is a file name is in the list the handler
+  // resolves, and every listed entry is one: a new file entry cannot be
+  // read relative to the working directory by mistake.
+  dealii::ParameterHandler prm;
+  fdem::parameters::Parameters::declare_parameters(
+    prm, {"block"}, {"boundary"}, {"interface"}, {"material"});
+  std::ostringstream json;
+  prm.print_parameters(json, dealii::ParameterHandler::JSON);
+  std::vector<std::string>                                               found;
+  const std::function<void(const nlohmann::json &, const std::string &)> visit =
+    [&](const nlohmann::json &node, const std::string &path) {
+      for (const auto &[key, value] : node.items())
+        {
+          if (!value.is_object())
+            continue;
+          const std::string name = path + demangled(key);
+          if (value.contains("pattern_description"))
+            {
+              if (value["pattern_description"].get<std::string>().find(
+                    "FileName") != std::string::npos)
+                found.push_back(name);
+            }
+          else
+            visit(value, name + "/");
+        }
+    };
+  visit(nlohmann::json::parse(json.str()), "");
+  std::vector<std::string> listed = fdem::parameters::input_file_entries();
+  std::sort(found.begin(), found.end());
+  std::sort(listed.begin(), listed.end());
+  EXPECT_EQ(found, listed);
 }

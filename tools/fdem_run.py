@@ -26,6 +26,10 @@ VOLATILE_KEYS = ("timings", "peak_memory_MiB")
 
 PLACEHOLDERS = ("@PRM_DIR@", "@DATA_DIR@")
 INCLUDE = re.compile(r"^(\s*include\s+)(\S.*?)\s*$", re.MULTILINE)
+# The entries that name input files (parameters::input_file_entries()): the
+# program reads them, as includes, relative to the file that sets them.
+FILE_ENTRY = re.compile(r"^(\s*set\s+(?:Mesh file|Terrain file|Piezometric surface file|"
+                        r"Acceleration record)\s*=\s*)([^#\n]*?)\s*$", re.MULTILINE)
 # Where filled copies of included files go, inside the run's folder.
 INCLUDED = "included"
 
@@ -78,31 +82,45 @@ def parse_prm(text):
     return values
 
 
-def fill_placeholders(prm, workdir, copy=None):
+def fill_placeholders(prm, workdir, copy=None, being_filled=()):
     """The file to run for the case @p prm. When neither it nor a file it
-    includes holds a placeholder, that is @p prm itself, so that its relative
-    mesh file names still hold. Otherwise a copy with the placeholders
-    filled, at @p copy (default: its name in @p workdir), whose includes
-    point to filled copies where those hold placeholders (in workdir/included)."""
+    includes holds a placeholder, that is @p prm itself. Otherwise a copy
+    with the placeholders filled, at @p copy (default: its name in
+    @p workdir), whose includes point to filled copies where those hold
+    placeholders (in workdir/included), and whose relative includes and file
+    entries are made absolute from @p prm's folder (the program reads them
+    relative to the file that names them, and the copy is elsewhere)."""
     prm = os.path.abspath(prm)
+    being_filled = being_filled + (prm,)
+    folder_of_prm = os.path.dirname(prm)
     original = open(prm).read()
     text = original.replace("@PRM_DIR@", PRM_DIR)
-    text = text.replace("@DATA_DIR@", os.path.join(os.path.dirname(prm), "data"))
+    text = text.replace("@DATA_DIR@", os.path.join(folder_of_prm, "data"))
+
+    def absolute(match):
+        target = match.group(2)
+        if not target or os.path.isabs(target):
+            return match.group(0)
+        return match.group(1) + os.path.join(folder_of_prm, target)
 
     def filled_include(match):
         target = match.group(2)
-        if not (os.path.isabs(target) and os.path.isfile(target)):
+        if not os.path.isabs(target):
+            target = os.path.join(folder_of_prm, target)
+        # A file that includes itself is left to the program to refuse.
+        if not os.path.isfile(target) or os.path.abspath(target) in being_filled:
             return match.group(0)
         folder = os.path.join(workdir, INCLUDED)
         os.makedirs(folder, exist_ok=True)
         handle, name = tempfile.mkstemp(suffix="-" + os.path.basename(target), dir=folder)
         os.close(handle)
-        filled = fill_placeholders(target, workdir, name)
+        filled = fill_placeholders(target, workdir, name, being_filled)
         return match.group(0) if filled == target else match.group(1) + filled
 
     text = INCLUDE.sub(filled_include, text)
     if text == original:
         return prm
+    text = INCLUDE.sub(absolute, FILE_ENTRY.sub(absolute, text))
     copy = copy or os.path.join(workdir, os.path.basename(prm))
     with open(copy, "w") as f:
         f.write(text)

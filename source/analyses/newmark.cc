@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 namespace fdem
 {
@@ -19,6 +21,29 @@ namespace fdem
       constexpr double max_acceleration = 100 * standard_gravity; // m/s^2
       constexpr double max_duration     = 86400;                  // s
     }                                                             // namespace
+
+    parameters::WorkEstimate
+    record_work_estimate(const std::string &file)
+    {
+      // Per sample: the record's time and acceleration, up to twice their
+      // size while the vectors grow (32 bytes), and the history's four
+      // values (32 bytes, twice while they grow).
+      constexpr double bytes_per_sample = 96;
+      // Reading, integrating and writing newmark.csv: 1.7e-6 s measured
+      // (doc/benchmarks.md, "Work estimates").
+      constexpr double         seconds_per_sample = 2e-6;
+      parameters::WorkEstimate work;
+      work.entry = "Yield acceleration/Acceleration record";
+      std::error_code      error;
+      const std::uintmax_t size = std::filesystem::file_size(file, error);
+      if (error)
+        return work;
+      const double n_samples = std::ceil(size / 4.0);
+      work.what    = "up to " + parameters::count_text(n_samples) + " samples";
+      work.seconds = n_samples * seconds_per_sample;
+      work.memory_MiB = n_samples * bytes_per_sample / (1024. * 1024.);
+      return work;
+    }
 
     AccelerationRecord
     read_acceleration_record(const std::string &file, const std::string &unit)

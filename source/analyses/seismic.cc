@@ -125,11 +125,8 @@ namespace fdem
       // The record is read first: a bad file is an error before any work.
       AccelerationRecord record;
       if (!yield.acceleration_record.empty())
-        record = read_acceleration_record(
-          (std::filesystem::path(model.get_parameters().prm_directory) /
-           yield.acceleration_record)
-            .string(),
-          yield.acceleration_unit);
+        record = read_acceleration_record(yield.acceleration_record,
+                                          yield.acceleration_unit);
       SeismicLoad<dim> load;
       load.kv            = results.kv;
       load.on_pore_water = results.on_pore_water;

@@ -121,10 +121,13 @@ namespace fdem
       rigid_sliding_directions(const contact::MixedSystem<dim>    &system,
                                const contact::ContactOutcome<dim> &outcome)
       {
-        const dealii::Vector<double> motion =
-          relative_rigid_motion(system, outcome);
+        dealii::Vector<double> motion = relative_rigid_motion(system, outcome);
         if (motion.size() == 0)
           return {};
+        // Only directions are wanted: the motion scaled to a largest entry
+        // of 1 first, so that the norms below neither underflow (a Young's
+        // modulus of 1e200, motions of 1e-200 m) nor overflow (1e-300).
+        motion /= motion.linfty_norm();
         std::vector<dealii::Tensor<1, dim>> directions(system.n_pairs());
         double                              largest = 0;
         for (unsigned int p = 0; p < system.n_pairs(); ++p)

@@ -47,14 +47,14 @@ namespace fdem
       prm.declare_entry(
         "Acceleration record",
         "",
-        Patterns::Anything(),
+        Patterns::FileName(),
         "A CSV file of the ground motion for the Newmark sliding "
         "displacement (needs Compute = true): two columns, time "
         "(s, strictly increasing) and acceleration, comma or "
         "blank separated, '#' comments, an optional header line; "
         "linear between samples. A positive acceleration drives "
         "the mass in the direction of a positive kh. Relative to "
-        "the .prm file's folder. Empty: no Newmark analysis.");
+        "the folder of the file that sets it. Empty: no Newmark analysis.");
       prm.declare_entry(
         "Acceleration unit",
         "g",

@@ -13,6 +13,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -252,7 +253,21 @@ namespace fdem
             }
         }
 
-      // The rows of the Schur dofs, on every rank: the solves need K_SI.
+      {
+        double largest = 0;
+        for (const double a : data->values)
+          largest = std::max(largest, std::abs(a));
+        if (n_ranks > 1)
+          largest = Utilities::MPI::max(largest, communicator);
+        value_scale = largest > 0 && std::isfinite(largest) ?
+                        std::ldexp(1.0, -std::ilogb(largest)) :
+                        1.0;
+        for (double &a : data->values)
+          a *= value_scale;
+      }
+
+      // The rows of the Schur dofs, on every rank: the solves need K_SI
+      // (unscaled: the solves scale their results back).
       {
         std::vector<int>    local_rows, local_columns;
         std::vector<double> local_values;
@@ -426,6 +441,8 @@ namespace fdem
       run(3, "solution");
       if (n_ranks > 1)
         broadcast_from_host(communicator, b.data(), n * n_rhs);
+      for (double &x : b)
+        x *= value_scale;
       for (unsigned int c = 0; c < n_rhs; ++c)
         for (const auto dof : schur)
           b[dof + c * n] = 0;
@@ -464,6 +481,8 @@ namespace fdem
       types::blas_int       info = 0;
       potrs("L", &n_s, &n_r, schur_factor.data(), &n_s, r.data(), &n_s, &info);
       Assert(info == 0, ExcInternalError());
+      for (double &x : r)
+        x *= value_scale;
 
       // x_I = y_I - K_II^{-1} K_IS x_S: solve with rhs -K_IS x_S, using
       // the symmetry K_IS = K_SI^T (the rows of the Schur dofs again).
@@ -500,6 +519,8 @@ namespace fdem
             for (types::blas_int i = 0; i < j; ++i)
               inverse[i + std::size_t(j) * n_s] =
                 inverse[j + std::size_t(i) * n_s];
+          for (double &x : inverse)
+            x *= value_scale;
         }
       return inverse;
     }
@@ -559,7 +580,7 @@ namespace fdem
 
       std::vector<double> result(entries.size());
       for (std::size_t k = 0; k < order.size(); ++k)
-        result[order[k]] = values[k];
+        result[order[k]] = values[k] * value_scale;
       return result;
     }
 

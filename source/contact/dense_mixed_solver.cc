@@ -82,7 +82,7 @@ namespace fdem
       for (unsigned int p = 0; p < n_pairs; ++p)
         for (unsigned int i = 0; i < dim; ++i)
           {
-            if (rows[p].gap[i].norm_square() != 0)
+            if (rows[p].is_gap_row(i))
               ++n_condensed;
             if (factorized_rows.size() != n_pairs ||
                 !(rows[p].gap[i] == factorized_rows[p].gap[i]) ||

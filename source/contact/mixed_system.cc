@@ -182,6 +182,7 @@ namespace fdem
       base_rigid_loads  = rigid_loads;
 
       set_diagonal_scales();
+      check_within_range();
       if (solver_type == MixedSystemSolver::dense)
         dense = std::make_unique<DenseMixedSolver<dim>>(*this);
       else
@@ -206,6 +207,33 @@ namespace fdem
       AssertThrow(iterative,
                   ExcMessage("This mixed system uses the dense solver."));
       return *iterative;
+    }
+
+    template <int dim>
+    void
+    MixedSystem<dim>::check_within_range() const
+    {
+      // K does not depend on a common modulus, but C and g_bar scale with
+      // its inverse: from about E = 1e-300 (kN loads) they are no numbers.
+      bool finite =
+        std::all_of(external_gap.begin(),
+                    external_gap.end(),
+                    [](const double g) { return std::isfinite(g); });
+      for (const Tensor<2, dim> &C_pp : self_flexibility)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            finite = finite && std::isfinite(C_pp[i][j]);
+      if (solver_type == MixedSystemSolver::dense)
+        for (unsigned int i = 0; i < flexibility.m(); ++i)
+          for (unsigned int j = 0; j < flexibility.n(); ++j)
+            finite = finite && std::isfinite(flexibility(i, j));
+      AssertThrow(finite,
+                  ExcMessage(
+                    "Interfaces: the flexibilities or the relative "
+                    "displacements under the loads exceed the range of a "
+                    "double (above 1e308): the Young's moduli are too small "
+                    "for the loads; give the moduli and the loads in one set "
+                    "of units."));
     }
 
     template <int dim>

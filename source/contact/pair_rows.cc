@@ -120,8 +120,7 @@ namespace fdem
       };
       for (unsigned int i = 0; i < dim; ++i)
         {
-          const Tensor<1, dim> gap = rows.gap[i];
-          if (gap.norm_square() != 0)
+          if (rows.is_gap_row(i))
             {
               condensed.kept_rows[n_kept++] = i;
               continue;

@@ -210,7 +210,7 @@ namespace fdem
                   g[k] = rows[p].gap[i][k] * scales.displacement / rho[i];
                   f[k] = rows[p].force[i][k] * scales.force / rho[i];
                 }
-              if (g.norm() == 0)
+              if (!rows[p].is_gap_row(i))
                 {
                   // A force row: it fixes a combination of the pair's forces.
                   h.push_back(f);

@@ -35,15 +35,18 @@ namespace fdem
 
     namespace
     {
-      /** Magnitude of the tangential part of a local vector. */
+      /**
+       * Magnitude of the tangential part of a local vector, without
+       * squares, which underflow or overflow at the extremes of the Young's
+       * modulus (a slip of 1e-170 m or a force of 1e170 N).
+       */
       template <int dim>
       double
       tangential_norm(const Vector<double> &v, const unsigned int p)
       {
-        double sum = 0;
-        for (unsigned int i = 1; i < dim; ++i)
-          sum += v[dim * p + i] * v[dim * p + i];
-        return std::sqrt(sum);
+        if (dim == 2)
+          return std::abs(v[dim * p + 1]);
+        return std::hypot(v[dim * p + 1], v[dim * p + dim - 1]);
       }
 
       /** Unit tangential direction of a local vector (+1 in 2D if zero). */
@@ -356,13 +359,12 @@ namespace fdem
       const Vector<double> &f = solution.forces;
       const Vector<double> &g = solution.relative_displacements;
       const double          r = system.tangential_stiffness(p);
-      double                z[dim - 1], norm = 0;
+      double                z[dim - 1];
       for (unsigned int i = 1; i < dim; ++i)
-        {
-          z[i - 1] = f[dim * p + i] + r * g[dim * p + i];
-          norm += z[i - 1] * z[i - 1];
-        }
-      norm = std::sqrt(norm);
+        z[i - 1] = f[dim * p + i] + r * g[dim * p + i];
+      // hypot: the squares of z overflow from forces of about 1e154 N.
+      const double norm =
+        dim == 2 ? std::abs(z[0]) : std::hypot(z[0], z[dim - 2]);
       // Beyond the apex of the Mohr-Coulomb cone (tension above c A / mu,
       // allowed by a larger tensile strength) the capacity is negative and
       // the force points against d: z says nothing about the slip there,

@@ -166,7 +166,6 @@ namespace fdem
     template <int dim>
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
-              const std::string                    &prm_directory,
               const std::string                    &msh_output_file,
               const unsigned int                    fe_degree,
               const std::vector<std::string>       &material_names,
@@ -197,14 +196,12 @@ namespace fdem
       MeshDescription<dim> mesh;
       const MeshWatchdog   watchdog(geometry.time_limit,
                                   geometry.source == Source::mesh_file ?
-                                      "Gmsh file '" +
-                                      geometry.mesh_file_path(prm_directory) +
-                                      "'" :
+                                      "Gmsh file '" + geometry.mesh_file + "'" :
                                       "a built-in generator");
       if (geometry.source == Source::mesh_file)
         {
-          const std::string file = geometry.mesh_file_path(prm_directory);
-          mesh                   = read_gmsh_file<dim>(
+          const std::string &file = geometry.mesh_file;
+          mesh                    = read_gmsh_file<dim>(
             file,
             [&]() { refuse_or_announce(estimate_gmsh_geometry(dim, file)); },
             material_names);
@@ -251,13 +248,11 @@ namespace fdem
     template MeshDescription<2>
     make_mesh<2>(const parameters::GeometryParameters &,
                  const std::string &,
-                 const std::string &,
                  unsigned int,
                  const std::vector<std::string> &,
                  bool);
     template MeshDescription<3>
     make_mesh<3>(const parameters::GeometryParameters &,
-                 const std::string &,
                  const std::string &,
                  unsigned int,
                  const std::vector<std::string> &,

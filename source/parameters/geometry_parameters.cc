@@ -61,7 +61,7 @@ namespace fdem
           "format 2 or 4) or a geometry (.geo, meshed by Gmsh in the model's "
           "dimension). Physical groups of the model's dimension are the "
           "blocks, those one dimension lower the face groups. A relative path "
-          "is relative to the directory of the .prm file.");
+          "is relative to the folder of the file that sets it.");
         prm.declare_entry(
           "Memory limit",
           "0",
@@ -143,8 +143,7 @@ namespace fdem
 
 
     void
-    GeometryParameters::parse_parameters(ParameterHandler  &prm,
-                                         const std::string &prm_directory)
+    GeometryParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
       {
@@ -205,7 +204,7 @@ namespace fdem
             hertz_sphere.validate();
             break;
           case Source::slope_3d:
-            slope_3d.load_terrain(prm_directory);
+            slope_3d.load_terrain();
             slope_3d.validate();
             break;
         }
@@ -220,13 +219,5 @@ namespace fdem
              source == Source::hertz_sphere || source == Source::slope_3d;
     }
 
-
-
-    std::string
-    GeometryParameters::mesh_file_path(const std::string &prm_directory) const
-    {
-      // operator/ keeps an absolute mesh_file as it is.
-      return (std::filesystem::path(prm_directory) / mesh_file).string();
-    }
   } // namespace parameters
 } // namespace fdem

@@ -386,7 +386,7 @@ namespace fdem
       prm.declare_entry(
         "Piezometric surface file",
         "",
-        Patterns::Anything(),
+        Patterns::FileName(),
         "3D: the water table as a surface over x and y, a text file of "
         "lines 'x, y, z' (length, in the coordinates before the Geometry "
         "transformation) on a rectangular grid, in any order, as "
@@ -397,8 +397,8 @@ namespace fdem
         "acts. Or a surface for Gmsh (.msh of triangles or quadrangles, "
         ".geo whose surfaces Gmsh meshes, .stl) covering a rectangle in x "
         "and y with one elevation at each point, sampled on a grid every "
-        "Piezometric surface grid spacing. Relative to the .prm file's "
-        "folder. Empty: none (or Piezometric line); not both.");
+        "Piezometric surface grid spacing. Relative to the folder of the "
+        "file that sets it. Empty: none (or Piezometric line); not both.");
       prm.declare_entry(
         "Piezometric surface grid spacing",
         "0",
@@ -413,8 +413,7 @@ namespace fdem
 
     void
     WaterParameters::parse_parameters(ParameterHandler  &prm,
-                                      const unsigned int dim,
-                                      const std::string &prm_directory)
+                                      const unsigned int dim)
     {
       prm.enter_subsection("Water");
       unit_weight      = prm.get_double("Unit weight of water");
@@ -433,10 +432,8 @@ namespace fdem
       AssertThrow(piezometric_line.empty(),
                   ExcMessage("Water/Piezometric surface file: give either it "
                              "or Water/Piezometric line, not both."));
-      const std::string path =
-        (std::filesystem::path(prm_directory) / piezometric_surface_file)
-          .string();
-      const std::string entry = "Water/Piezometric surface file";
+      const std::string &path  = piezometric_surface_file;
+      const std::string  entry = "Water/Piezometric surface file";
       piezometric_surface =
         geometry::is_surface_mesh_file(piezometric_surface_file) ?
           geometry::terrain_grid_from_surface(path, entry, spacing) :

@@ -109,13 +109,22 @@ namespace fdem
       /// ParameterHandler does not make); ParameterHandler's own errors say
       /// the line and file, which is what a user needs.
       void
-      parse_file(ParameterHandler  &prm,
-                 const std::string &filename,
-                 const bool         skip_undefined)
+      parse_file(FileRelativeParameterHandler &prm,
+                 const std::string            &filename,
+                 const bool                    skip_undefined)
       {
         parse_parameter_file(prm, filename, skip_undefined);
       }
     } // namespace
+
+    std::vector<std::string>
+    input_file_entries()
+    {
+      return {"Geometry/Mesh file",
+              "Geometry/Slope 3D/Terrain file",
+              "Water/Piezometric surface file",
+              "Yield acceleration/Acceleration record"};
+    }
 
     void
     Parameters::declare_parameters(ParameterHandler               &prm,
@@ -165,11 +174,11 @@ namespace fdem
     {
       dimension = prm.get_integer("Dimension");
       fe_degree = prm.get_integer("Finite element degree");
-      geometry.parse_parameters(prm, prm_directory);
+      geometry.parse_parameters(prm);
       loads.parse_parameters(prm, dimension);
       contact.parse_parameters(prm);
       safety_factor.parse_parameters(prm);
-      water.parse_parameters(prm, dimension, prm_directory);
+      water.parse_parameters(prm, dimension);
       solver.parse_parameters(prm);
       output.parse_parameters(prm);
       limit_equilibrium.parse_parameters(prm);
@@ -301,7 +310,7 @@ namespace fdem
     read_parameters(const std::string &filename, std::string *expanded)
     {
       // First pass: only the name lists, to know which subsections exist.
-      ParameterHandler names_prm;
+      FileRelativeParameterHandler names_prm(input_file_entries());
       Parameters::declare_parameters(names_prm, {}, {}, {}, {});
       parse_file(names_prm, filename, true);
 
@@ -312,7 +321,7 @@ namespace fdem
       parameters.interface_names = names_in(names_prm, "Interfaces");
 
       // Second pass: strict, every entry must be declared.
-      ParameterHandler prm;
+      FileRelativeParameterHandler prm(input_file_entries());
       Parameters::declare_parameters(prm,
                                      parameters.block_names,
                                      parameters.boundary_names,
@@ -321,8 +330,6 @@ namespace fdem
       parse_file(prm, filename, false);
       const std::filesystem::path path(filename);
       parameters.case_name = path.stem().string();
-      parameters.prm_directory =
-        path.has_parent_path() ? path.parent_path().string() : ".";
       parameters.parse_parameters(prm);
       if (expanded != nullptr)
         {
@@ -336,8 +343,8 @@ namespace fdem
     void
     print_parameters(std::ostream &out, const std::string &filename)
     {
-      std::vector<std::string> blocks, boundaries, interfaces, materials;
-      ParameterHandler         names_prm;
+      std::vector<std::string>     blocks, boundaries, interfaces, materials;
+      FileRelativeParameterHandler names_prm(input_file_entries());
       Parameters::declare_parameters(names_prm, {}, {}, {}, {});
       if (!filename.empty())
         parse_file(names_prm, filename, true);
@@ -346,7 +353,7 @@ namespace fdem
       interfaces = names_in(names_prm, "Interfaces");
       materials  = names_in(names_prm, "Materials");
 
-      ParameterHandler prm;
+      FileRelativeParameterHandler prm(input_file_entries());
       Parameters::declare_parameters(
         prm, blocks, boundaries, interfaces, materials);
       if (!filename.empty())

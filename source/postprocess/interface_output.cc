@@ -4,6 +4,7 @@
 #include <fdem/postprocess/output_files.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -32,25 +33,34 @@ namespace fdem
           PairResult<dim>               r;
           r.position     = pair.position_J;
           r.normal_force = solution.forces[dim * p];
-          double shear2 = 0, slip2 = 0;
           for (unsigned int i = 0; i + 1 < dim; ++i)
-            {
-              r.tangential_force[i] = solution.forces[dim * p + 1 + i];
-              shear2 += r.tangential_force[i] * r.tangential_force[i];
-              slip2 +=
-                std::pow(solution.relative_displacements[dim * p + 1 + i], 2);
-            }
+            r.tangential_force[i] = solution.forces[dim * p + 1 + i];
+          std::array<double, dim> g;
+          for (unsigned int i = 0; i < dim; ++i)
+            g[i] = solution.relative_displacements[dim * p + i];
+          AssertThrow(
+            std::isfinite(g[0]) && std::isfinite(g[1]) &&
+              std::isfinite(g[dim - 1]),
+            ExcMessage(
+              "Interfaces/" + interface.name +
+              ": the relative displacements exceed the range of a double "
+              "(above 1e308): the Young's moduli are too small for the loads; "
+              "give the moduli and the loads in one set of units."));
+          // hypot, not the root of a sum of squares, which underflows or
+          // overflows at the extremes of the Young's modulus.
+          const double shear =
+            dim == 2 ?
+              std::abs(r.tangential_force[0]) :
+              std::hypot(r.tangential_force[0], r.tangential_force[dim - 2]);
           r.normal_pressure = -r.normal_force / pair.area;
-          r.shear_stress    = std::sqrt(shear2) / pair.area;
-          r.gap             = solution.relative_displacements[dim * p];
-          r.slip   = dim == 2 ? solution.relative_displacements[dim * p + 1] :
-                                std::sqrt(slip2);
-          r.status = states[p].status;
+          r.shear_stress    = shear / pair.area;
+          r.gap             = g[0];
+          r.slip            = dim == 2 ? g[1] : std::hypot(g[1], g[dim - 1]);
+          r.status          = states[p].status;
           if (r.status != contact::PairStatus::open)
             {
               const double strength =
                 full_strengths[p].shear_capacity(r.normal_force);
-              const double shear = std::sqrt(shear2);
               r.local_safety_factor =
                 std::max(0.0,
                          shear * 1000 > strength ? strength / shear : 1000.0);

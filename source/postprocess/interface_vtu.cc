@@ -160,13 +160,13 @@ namespace fdem
                       paired.push_back(0);
                       continue;
                     }
-                  const PairResult<dim> &r     = results[k];
-                  double                 shear = 0;
-                  for (const double t : r.tangential_force)
-                    shear += t * t;
+                  const PairResult<dim> &r = results[k];
+                  const double           shear =
+                    dim == 2 ? r.tangential_force[0] :
+                                         std::hypot(r.tangential_force[0],
+                                          r.tangential_force[dim - 2]);
                   const double row[] = {r.normal_force,
-                                        dim == 2 ? r.tangential_force[0] :
-                                                   std::sqrt(shear),
+                                        shear,
                                         r.normal_pressure,
                                         r.shear_stress,
                                         r.gap,

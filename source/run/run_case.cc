@@ -42,6 +42,12 @@ namespace fdem
           analyses::sample_work_estimate(parameters.probabilistic, 0, 0),
           limit,
           budget);
+      const auto &yield = parameters.yield_acceleration;
+      if (yield.compute && !yield.acceleration_record.empty())
+        parameters::check_work_estimate(analyses::record_work_estimate(
+                                          yield.acceleration_record),
+                                        limit,
+                                        budget);
     }
   } // namespace
 
@@ -55,10 +61,7 @@ namespace fdem
     // The files the analyses read after the model: the record.
     const auto &yield = parameters.yield_acceleration;
     if (!yield.acceleration_record.empty())
-      analyses::read_acceleration_record((std::filesystem::path(
-                                            parameters.prm_directory) /
-                                          yield.acceleration_record)
-                                           .string(),
+      analyses::read_acceleration_record(yield.acceleration_record,
                                          yield.acceleration_unit);
     if (parameters.dimension == 2)
       {

@@ -219,7 +219,7 @@ TEST(BlockOnPlane, OtherSizesAndTheTransformation)
     " set Elements along length = 8\n set Elements along width = 3\n"
     " set Elements across height = 4\nend\n";
   const Parameters geometry = parse(entries);
-  const auto       mesh     = geometry::make_mesh<3>(geometry, "", "");
+  const auto       mesh     = geometry::make_mesh<3>(geometry, "");
   check_mesh(mesh, block_on_plane_blocks, block_on_plane_groups);
   expect_conforming_interface(mesh, "sliding surface");
   expect_conforming_mesh(mesh, {"sliding surface"});
@@ -240,7 +240,7 @@ TEST(BlockOnPlane, OtherSizesAndTheTransformation)
 
   // make_mesh applies the transformation to the 3D generators too.
   const auto moved = geometry::make_mesh<3>(
-    parse(entries + "set Scale factor = 2\nset Translation = 1, 2, 3"), "", "");
+    parse(entries + "set Scale factor = 2\nset Translation = 1, 2, 3"), "");
   ASSERT_EQ(moved.vertices.size(), mesh.vertices.size());
   for (unsigned int v = 0; v < mesh.vertices.size(); ++v)
     EXPECT_LT(moved.vertices[v].distance(

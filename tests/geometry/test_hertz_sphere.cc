@@ -14,7 +14,7 @@ TEST(HertzSphere, QuarterModelWithTheSphereAboveTheFoundationNodes)
   const Parameters::HertzSphere &p        = geometry.hertz_sphere;
   EXPECT_EQ(p.radius, 100);
   EXPECT_EQ(p.n_contact_zone_elements, 6u);
-  const auto mesh = geometry::make_mesh<3>(geometry, "", "");
+  const auto mesh = geometry::make_mesh<3>(geometry, "");
   check_mesh(mesh,
              {"sphere", "foundation"},
              {"contact surface",

@@ -2,7 +2,7 @@
 // Copyright (C) 2026 the fdem-slope authors
 //
 // Tests of what every case goes through: the subsection "Geometry" (its
-// validation messages, the mesh file path), make_mesh() (its dispatch and
+// validation messages), make_mesh() (its dispatch and
 // errors) and the transformation x -> R (s x) + t in 2D and 3D.
 
 #include "geometry_test_helpers.h"
@@ -12,11 +12,10 @@ using namespace geometry_test;
 TEST(Transform, RotationScaleAndTranslationIn2D)
 {
   const auto reference =
-    geometry::make_mesh<2>(parse("set Source = inclined block"), "", "");
+    geometry::make_mesh<2>(parse("set Source = inclined block"), "");
   const auto moved = geometry::make_mesh<2>(
     parse("set Source = inclined block\nset Scale factor = 2\n"
           "set Rotation angle = 30\nset Translation = 1, -2"),
-    "",
     "");
   ASSERT_EQ(moved.vertices.size(), reference.vertices.size());
   const double c = std::cos(numbers::PI / 6), s = std::sin(numbers::PI / 6);
@@ -50,13 +49,13 @@ TEST(Transform, RotationAboutAnAxisIn3D)
 
 
 
-TEST(MakeMesh, MeshFileRelativeToThePrmDirectoryAndOutput)
+TEST(MakeMesh, MeshFileAndOutput)
 {
   const std::string output = temporary_file(".msh");
-  const auto        mesh   = geometry::make_mesh<2>(
-    parse("set Source = mesh file\nset Mesh file = two_blocks.geo"),
-    data_directory,
-    output);
+  const auto        mesh =
+    geometry::make_mesh<2>(parse("set Source = mesh file\nset Mesh file = " +
+                                 data_directory + "/two_blocks.geo"),
+                           output);
   EXPECT_EQ(mesh.cells.size(), 32u);
   EXPECT_EQ(geometry::read_gmsh_file<2>(output).cells.size(), 32u);
   std::filesystem::remove(output);
@@ -66,21 +65,20 @@ TEST(MakeMesh, MeshFileRelativeToThePrmDirectoryAndOutput)
 
 TEST(MakeMesh, Errors)
 {
-  expect_error([] { geometry::make_mesh<3>(parse(""), "", ""); },
+  expect_error([] { geometry::make_mesh<3>(parse(""), ""); },
                "Geometry/Source: the built-in generators slope, hertz and "
                "inclined block are 2D only; in 3D use wedge, block on plane, "
                "hertz sphere, slope 3d or a mesh file.");
   for (const std::string source :
        {"wedge", "block on plane", "hertz sphere", "slope 3d"})
     expect_error(
-      [&] { geometry::make_mesh<2>(parse("set Source = " + source), "", ""); },
+      [&] { geometry::make_mesh<2>(parse("set Source = " + source), ""); },
       "Geometry/Source: the built-in generators wedge, block on plane, "
       "hertz sphere and slope 3d are 3D only; set Dimension = 3.");
   expect_error(
     [] {
       geometry::make_mesh<2>(parse("set Source = inclined block\n"
                                    "set Translation = 0, 0, 1"),
-                             "",
                              "");
     },
     "Geometry/Translation: a 2D model has no z component");
@@ -125,16 +123,4 @@ TEST(GeometryParameters, ValidationMessages)
   // Only the selected source is validated.
   EXPECT_NO_THROW(parse(
     "set Source = hertz\nsubsection Slope\n set Base elevation = 30\nend"));
-}
-
-
-
-TEST(GeometryParameters, MeshFilePath)
-{
-  Parameters geometry =
-    parse("set Source = mesh file\nset Mesh file = meshes/a.msh");
-  EXPECT_EQ(geometry.mesh_file_path("/work/case"), "/work/case/meshes/a.msh");
-  EXPECT_EQ(geometry.mesh_file_path(""), "meshes/a.msh");
-  geometry.mesh_file = "/data/b.msh";
-  EXPECT_EQ(geometry.mesh_file_path("/work/case"), "/data/b.msh");
 }

@@ -43,7 +43,7 @@ namespace
     SCOPED_TRACE(entries);
     const Parameters geometry = parse(entries);
     const auto       estimate = geometry::estimate_mesh(geometry);
-    const auto       mesh     = geometry::make_mesh<dim>(geometry, "", "");
+    const auto       mesh     = geometry::make_mesh<dim>(geometry, "");
     const double     cells    = mesh.cells.size();
     const double     vertices = mesh.vertices.size();
     std::cout << entries << ": " << cells << " cells (estimate "
@@ -96,7 +96,7 @@ TEST(MeshEstimate, PairsOfTheSlope3DAnUpperBoundWithin30Percent)
     SCOPED_TRACE(entries);
     const Parameters       geometry = parse(entries);
     const auto             estimate = geometry::estimate_mesh(geometry);
-    const auto             mesh     = geometry::make_mesh<3>(geometry, "", "");
+    const auto             mesh     = geometry::make_mesh<3>(geometry, "");
     std::set<unsigned int> vertices;
     for (const auto &face : faces_of(mesh, "sliding surface"))
       vertices.insert(face.vertices.begin(), face.vertices.end());

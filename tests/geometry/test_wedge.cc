@@ -308,7 +308,7 @@ TEST(Wedge, PlanesThatFormNoWedgeAreRejected)
       Parameters geometry = parse("subsection Wedge\n" + planes + "end");
       expect_error([&] { geometry::make_wedge_mesh(geometry.wedge); }, message);
       geometry.source = Parameters::Source::wedge;
-      expect_error([&] { geometry::make_mesh<3>(geometry, "", ""); }, message);
+      expect_error([&] { geometry::make_mesh<3>(geometry, ""); }, message);
     }
   expect_error(
     [] {

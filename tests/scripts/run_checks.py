@@ -80,6 +80,12 @@
                                          and stick/slip/open counts of each)
                                          and the same final statuses of every
                                          interface
+  run_checks.py modulus-scale EXE CASE.prm SOLVER BLOCK1,BLOCK2 E_REF E...
+                                         the Young's modulus of the blocks
+                                         set to E_REF, then to each E, with
+                                         Solver/Direct solver = SOLVER: the
+                                         same as invariance (1e-8, steps,
+                                         statuses)
   run_checks.py fe-stress EXE CASE.prm K0 [PATH=VALUE...]
                                          from Initial factor K0 (and the
                                          entries PATH set to VALUE), the
@@ -787,42 +793,69 @@ def check_wedge_slope(exe, prm, tolerance="1e-2"):
         assert abs(computed / between - 1) <= float(tolerance), "the slope of K* is not K*'s slope"
 
 
+def invariance_outcome(exe, prm, settings=None):
+    """What must not change between equivalent runs of @p prm: K, each
+    step's outcome and statuses, each interface's final statuses."""
+    result = fdem_run.run_case(exe, prm, settings=settings or {})
+    label = f"{os.path.basename(prm)} {settings or ''}".strip()
+    assert result.returncode == 0, f"{label}: exit {result.returncode}: {result.stderr}"
+    summary = result.summary
+    assert summary["status"] == "completed", f"{label}: {summary['status']}"
+    # Whether each solve converged, not why one failed: far beyond
+    # the limit (the wedge at K = 1) "runaway" and "no rigid-mode
+    # equilibrium" both say "a mechanism", and which test sees it
+    # first is round-off (measured on the wedge in lbf, ft, psf).
+    steps = [(s["contact_result"] == "converged", s["n_stick"], s["n_slip"], s["n_open"])
+             for s in summary["iterations"]]
+    statuses = {i["name"]: (i["n_stick"], i["n_slip"], i["n_open"])
+                for i in summary["interfaces"]}
+    return summary["safety_factor"], steps, statuses
+
+
+def compare_outcomes(labels, outcomes, tolerance=1e-8):
+    """The first outcome is the reference; every other must have its K to
+    @p tolerance relative, its steps and its statuses."""
+    K_ref, steps_ref, statuses_ref = outcomes[0]
+    print(f"{labels[0]}: K = {K_ref!r}, {len(steps_ref)} steps, statuses {statuses_ref}")
+    failures = []
+    for label, (K, steps, statuses) in zip(labels[1:], outcomes[1:]):
+        difference = K / K_ref - 1
+        print(f"{label}: K = {K!r} ({difference:+.2e}), {len(steps)} steps, "
+              f"statuses {statuses}")
+        if not abs(difference) <= tolerance:
+            failures.append(f"{label}: K = {K!r}, {difference:+.2e} from {K_ref!r}")
+        if steps != steps_ref:
+            failures.append(f"{label}: safety-factor steps {steps} differ from {steps_ref}")
+        if statuses != statuses_ref:
+            failures.append(f"{label}: statuses {statuses} differ from {statuses_ref}")
+    assert not failures, "\n".join(failures)
+
+
 def check_invariance(exe, reference, *others):
     """Runs REF and OTHERS; all must agree (see the usage above)."""
-    def outcome(prm):
-        result = fdem_run.run_case(exe, prm)
-        assert result.returncode == 0, f"{prm}: exit {result.returncode}: {result.stderr}"
-        summary = result.summary
-        assert summary["status"] == "completed", f"{prm}: {summary['status']}"
-        # Whether each solve converged, not why one failed: far beyond
-        # the limit (the wedge at K = 1) "runaway" and "no rigid-mode
-        # equilibrium" both say "a mechanism", and which test sees it
-        # first is round-off (measured on the wedge in lbf, ft, psf).
-        steps = [(s["contact_result"] == "converged", s["n_stick"], s["n_slip"], s["n_open"])
-                 for s in summary["iterations"]]
-        statuses = {i["name"]: (i["n_stick"], i["n_slip"], i["n_open"])
-                    for i in summary["interfaces"]}
-        return summary["safety_factor"], steps, statuses
-
     # Two runs at a time: most of a small run's time is the program's start.
     from concurrent.futures import ThreadPoolExecutor
     with ThreadPoolExecutor(2) as pool:
-        results = list(pool.map(outcome, (reference,) + others))
-    K_ref, steps_ref, statuses_ref = results[0]
-    print(f"{os.path.basename(reference)}: K = {K_ref!r}, {len(steps_ref)} steps, "
-          f"statuses {statuses_ref}")
-    failures = []
-    for prm, (K, steps, statuses) in zip(others, results[1:]):
-        difference = K / K_ref - 1
-        print(f"{os.path.basename(prm)}: K = {K!r} ({difference:+.2e}), {len(steps)} steps, "
-              f"statuses {statuses}")
-        if not abs(difference) <= 1e-8:
-            failures.append(f"{prm}: K = {K!r}, {difference:+.2e} from {K_ref!r}")
-        if steps != steps_ref:
-            failures.append(f"{prm}: safety-factor steps {steps} differ from {steps_ref}")
-        if statuses != statuses_ref:
-            failures.append(f"{prm}: statuses {statuses} differ from {statuses_ref}")
-    assert not failures, "\n".join(failures)
+        outcomes = list(pool.map(lambda prm: invariance_outcome(exe, prm),
+                                 (reference,) + others))
+    compare_outcomes([os.path.basename(p) for p in (reference,) + others], outcomes)
+
+
+def check_modulus_scale(exe, prm, solver, blocks, reference_modulus, *moduli):
+    """@p prm with the Young's modulus of each of @p blocks (comma-separated)
+    set to each of @p moduli, with Solver/Direct solver = @p solver: the same
+    K to 1e-8 (the invariance tests' tolerance), steps and statuses as at
+    @p reference_modulus. Loads and strengths stay: K does not depend on a
+    common stiffness (doc/theory.md), at every magnitude a double holds."""
+    def settings(modulus):
+        entries = {f"Blocks/{b.strip()}/Young's modulus": modulus for b in blocks.split(",")}
+        entries["Solver/Direct solver"] = solver
+        return entries
+    from concurrent.futures import ThreadPoolExecutor
+    all_moduli = (reference_modulus,) + moduli
+    with ThreadPoolExecutor(2) as pool:
+        outcomes = list(pool.map(lambda E: invariance_outcome(exe, prm, settings(E)), all_moduli))
+    compare_outcomes([f"{solver}, E = {E}" for E in all_moduli], outcomes)
 
 
 def check_cohesion_scale(exe, prm, *cohesions):
@@ -960,6 +993,6 @@ if __name__ == "__main__":
          "certified": check_certified, "fe-stress": check_fe_stress,
          "mesh-convergence": check_mesh_convergence,
          "stiffness-consistency": check_stiffness_consistency,
-         "invariance": check_invariance,
+         "invariance": check_invariance, "modulus-scale": check_modulus_scale,
          "cohesion-scale": check_cohesion_scale}[command](exe, path, *sys.argv[4:])
     print("passed")

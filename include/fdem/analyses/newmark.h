@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fdem/analyses/seismic_results.h>
+#include <fdem/parameters/work_estimate.h>
 
 #include <string>
 #include <vector>
@@ -30,6 +31,15 @@ namespace fdem
      */
     AccelerationRecord
     read_acceleration_record(const std::string &file, const std::string &unit);
+
+    /**
+     * The work of reading @p file as a record and integrating it
+     * (parameters/work_estimate.h), from the file's size before it is read:
+     * at most one sample per 4 bytes ("0,0" and a line end). Nothing is
+     * estimated for a file that cannot be sized (the reader names it).
+     */
+    parameters::WorkEstimate
+    record_work_estimate(const std::string &file);
 
     /**
      * Newmark's rigid-block sliding displacement (doc/theory.md, "Newmark

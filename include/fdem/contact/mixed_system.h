@@ -550,6 +550,10 @@ namespace fdem
       void
       set_diagonal_scales();
 
+      /** Throws one line if C or g_bar holds a value beyond a double. */
+      void
+      check_within_range() const;
+
       /** The solver: one of the two. */
       std::unique_ptr<DenseMixedSolver<dim>>     dense;
       std::unique_ptr<IterativeMixedSolver<dim>> iterative;

@@ -33,6 +33,20 @@ namespace fdem
       Tensor<2, dim> gap;
       Tensor<2, dim> force;
       Tensor<1, dim> value;
+
+      /**
+       * Whether row @p i has a gap coefficient. Decided entry by entry, not
+       * by a norm: at a Young's modulus of 1e-200 the squares of a row's
+       * entries underflow, and a slip row would be taken for a force row.
+       */
+      bool
+      is_gap_row(const unsigned int i) const
+      {
+        for (unsigned int k = 0; k < dim; ++k)
+          if (gap[i][k] != 0)
+            return true;
+        return false;
+      }
     };
 
     /**

@@ -14,7 +14,8 @@ namespace fdem
   {
     /**
      * The mesh that the subsection "Geometry" describes: read from the mesh
-     * file (relative to @p prm_directory) or made by a built-in generator
+     * file (as named, resolved by the parameter handler) or made by a
+     * built-in generator
      * (slope, hertz and inclined block in 2D, wedge and block on plane in
      * 3D; any other combination throws), then transformed by
      * apply_transformation(). If
@@ -34,7 +35,6 @@ namespace fdem
     template <int dim>
     MeshDescription<dim>
     make_mesh(const parameters::GeometryParameters &geometry,
-              const std::string                    &prm_directory,
               const std::string                    &msh_output_file,
               unsigned int                          fe_degree          = 1,
               const std::vector<std::string>       &material_names     = {},

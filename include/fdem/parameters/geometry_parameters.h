@@ -63,7 +63,7 @@ namespace fdem
       using Slope3D      = geometry::Slope3D;
 
       Source source = Source::slope;
-      /** The mesh file as written in the .prm file: see mesh_file_path(). */
+      /** The mesh file, resolved relative to the file that names it. */
       std::string mesh_file;
 
       /**
@@ -103,18 +103,11 @@ namespace fdem
 
       /**
        * Read and check the subsection "Geometry"; throws on invalid data.
-       * Files it names (a terrain) are read relative to @p prm_directory.
+       * Files it names (a mesh, a terrain) are as the handler gives them,
+       * resolved relative to the file that names them (parameter_file.h).
        */
       void
-      parse_parameters(ParameterHandler  &prm,
-                       const std::string &prm_directory = ".");
-
-      /**
-       * The mesh file to open: a relative name is taken relative to the
-       * directory of the .prm file, @p prm_directory.
-       */
-      std::string
-      mesh_file_path(const std::string &prm_directory) const;
+      parse_parameters(ParameterHandler &prm);
     };
   } // namespace parameters
 } // namespace fdem

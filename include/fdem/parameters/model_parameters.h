@@ -137,12 +137,10 @@ namespace fdem
     {
       static void
       declare_parameters(dealii::ParameterHandler &prm);
-      /** Reads the subsection; a surface file is read relative to
-       * @p prm_directory and only in 3D (@p dim). */
+      /** Reads the subsection; a surface file (its name resolved by the
+       * handler, parameter_file.h) only in 3D (@p dim). */
       void
-      parse_parameters(dealii::ParameterHandler &prm,
-                       const unsigned int        dim,
-                       const std::string        &prm_directory = ".");
+      parse_parameters(dealii::ParameterHandler &prm, const unsigned int dim);
 
       /** Whether a water table is given: the line or the surface. */
       bool

@@ -37,8 +37,6 @@ namespace fdem
       unsigned int fe_degree = 1;
       /** Name of the case: the .prm file's name without extension. */
       std::string case_name;
-      /** Folder of the .prm file; relative file names are taken from there. */
-      std::string prm_directory = ".";
 
       GeometryParameters     geometry;
       LoadParameters         loads;
@@ -103,6 +101,14 @@ namespace fdem
       std::string
       output_directory() const;
     };
+
+    /**
+     * The entries whose values name input files: each is read relative to
+     * the file that sets it, as include statements are (parameter_file.h),
+     * and holds the resolved name after read_parameters().
+     */
+    std::vector<std::string>
+    input_file_entries();
 
     /**
      * Reads and checks a .prm file. Throws an exception with a one-sentence

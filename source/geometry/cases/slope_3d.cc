@@ -128,12 +128,13 @@ namespace fdem
         prm.declare_entry(
           "Terrain file",
           "",
-          Patterns::Anything(),
+          Patterns::FileName(),
           "A ground surface from a grid of elevations instead of the "
           "straight slope: a text file of lines 'x, y, z' (m; commas, "
           "semicolons or blanks; '#' comments; an optional header line), one "
           "per point of a rectangular grid (every x of the file with every "
-          "y), in any order; relative names from the .prm file's directory. "
+          "y), in any order; a relative name from the folder of the file that "
+          "sets it. "
           "The ground is bilinear on each grid cell; the model spans the "
           "grid in x and y (its sides there), with its base Base depth below "
           "the lowest point; Slope height, Slope angle, Toe length, Crest "
@@ -206,14 +207,13 @@ namespace fdem
 
 
     void
-    Slope3D::load_terrain(const std::string &prm_directory)
+    Slope3D::load_terrain()
     {
       terrain = TerrainGrid();
       if (terrain_file.empty())
         return;
-      const std::string path =
-        (std::filesystem::path(prm_directory) / terrain_file).string();
-      const std::string entry = "Geometry/Slope 3D/Terrain file";
+      const std::string &path  = terrain_file;
+      const std::string  entry = "Geometry/Slope 3D/Terrain file";
       if (is_surface_mesh_file(terrain_file))
         {
           case_input::require(mesh_size > 0,

@@ -182,11 +182,11 @@ namespace fdem
       parse_parameters(ParameterHandler &prm);
 
       /**
-       * Read the terrain file, if one is named, relative to
-       * @p prm_directory (before validate()).
+       * Read the terrain file, if one is named (before validate()); its name
+       * as the parameter handler resolved it (parameter_file.h).
        */
       void
-      load_terrain(const std::string &prm_directory);
+      load_terrain();
 
       /**
        * Throw a one-sentence message naming the entry if the data are
