@@ -212,6 +212,13 @@ def check_owned(exe, prm):
                 f.write(text)
         os.symlink(os.path.join(project, "nowhere"), os.path.join(project, "dangling"))
         os.symlink(os.path.join(project, "mine"), os.path.join(project, "tomine"))
+        # The kinds the issue names (a user's folder, a file, the .prm's
+        # folder, '.', '/', a dangling link) twice each and with --validate;
+        # their variants (a trailing slash, an absolute name, a link to a
+        # folder, an empty folder, a previous that is not ours) once: each
+        # run of one folder decides alike, the second run checks that the
+        # first left nothing that changes the decision.
+        named = {"mine", "afile", "../proj", ".", "/", "dangling"}
         for directory, name in (("mine", "mine"), ("mine/", "mine"), ("afile", "afile"),
                                 ("../proj", "../proj"), (".", "'.'"), ("./", "./"),
                                 ("..", ".."), ("/", "'/'"), (project, project),
@@ -219,9 +226,10 @@ def check_owned(exe, prm):
                                 ("out", "out.previous")):
             run = case_into(prm, project, directory)
             before = tree(top)
-            for attempt in (1, 2):
+            for attempt in (1, 2) if directory in named else (1,):
                 line = refused(exe, [run], project, name)
-            refused(exe, ["--validate", run], project, name)
+            if directory in named:
+                refused(exe, ["--validate", run], project, name)
             assert tree(top) == before, f"Output/Directory = {directory}: the user's files changed"
             print(f"Output/Directory = {directory!r}: refused, nothing touched: {line}")
         # The program's own folders are replaced run after run, the
