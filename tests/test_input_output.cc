@@ -31,6 +31,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -296,6 +297,11 @@ namespace
     return name;
   }
 
+  /// A handler of the file entries with @p file read into it, from the
+  /// working directory @p folder.
+  std::unique_ptr<fdem::parameters::FileRelativeParameterHandler>
+  parsed(const std::string &file, const std::filesystem::path &folder);
+
   /// Runs @p action with the working directory @p folder.
   void
   in_folder(const std::filesystem::path &folder,
@@ -313,6 +319,18 @@ namespace
         throw;
       }
     std::filesystem::current_path(before);
+  }
+
+  std::unique_ptr<fdem::parameters::FileRelativeParameterHandler>
+  parsed(const std::string &file, const std::filesystem::path &folder)
+  {
+    auto prm = std::make_unique<fdem::parameters::FileRelativeParameterHandler>(
+      fdem::parameters::input_file_entries());
+    declare_file_entries(*prm);
+    in_folder(folder, [&] {
+      fdem::parameters::parse_parameter_file(*prm, file, false);
+    });
+    return prm;
   }
 } // namespace
 
@@ -340,33 +358,21 @@ TEST(ParameterFiles, PathsRelativeToTheFileThatNamesThem)
              "  end\n"
              "end\n");
   // From a working directory that is neither file's folder.
-  fdem::parameters::FileRelativeParameterHandler prm(
-    fdem::parameters::input_file_entries());
-  declare_file_entries(prm);
   const std::filesystem::path root = tree.root;
-  in_folder("/", [&] {
-    fdem::parameters::parse_parameter_file(prm,
-                                           (root / "case/main.prm").string(),
-                                           false);
-  });
-  EXPECT_EQ(entry(prm, "Geometry/Mesh file"),
+  const auto prm = parsed((root / "case/main.prm").string(), "/");
+  EXPECT_EQ(entry(*prm, "Geometry/Mesh file"),
             (root / "case/meshes/a.msh").string());
-  EXPECT_EQ(entry(prm, "Water/Piezometric surface file"),
+  EXPECT_EQ(entry(*prm, "Water/Piezometric surface file"),
             (root / "case/shared/water.csv").string());
-  EXPECT_EQ(entry(prm, "Yield acceleration/Acceleration record"),
+  EXPECT_EQ(entry(*prm, "Yield acceleration/Acceleration record"),
             (root / "case/shared/records/quake.csv").string());
-  EXPECT_EQ(entry(prm, "Geometry/Slope 3D/Terrain file"), "/data/terrain.csv");
+  EXPECT_EQ(entry(*prm, "Geometry/Slope 3D/Terrain file"), "/data/terrain.csv");
 
   // The top file named relative to the working directory: the names stay
   // relative to it.
-  fdem::parameters::FileRelativeParameterHandler relative(
-    fdem::parameters::input_file_entries());
-  declare_file_entries(relative);
-  in_folder(root, [&] {
-    fdem::parameters::parse_parameter_file(relative, "case/main.prm", false);
-  });
-  EXPECT_EQ(entry(relative, "Geometry/Mesh file"), "case/meshes/a.msh");
-  EXPECT_EQ(entry(relative, "Water/Piezometric surface file"),
+  const auto relative = parsed("case/main.prm", root);
+  EXPECT_EQ(entry(*relative, "Geometry/Mesh file"), "case/meshes/a.msh");
+  EXPECT_EQ(entry(*relative, "Water/Piezometric surface file"),
             "case/shared/water.csv");
 
   // deal.II's line numbers are the file's own after the two-line entry.
@@ -376,22 +382,14 @@ TEST(ParameterFiles, PathsRelativeToTheFileThatNamesThem)
              "      a.msh\n"
              "end\n"
              "set No such entry = 1\n");
-  fdem::parameters::FileRelativeParameterHandler typo(
-    fdem::parameters::input_file_entries());
-  declare_file_entries(typo);
-  const std::string message = io_error_message([&] {
-    fdem::parameters::parse_parameter_file(typo,
-                                           (root / "case/typo.prm").string(),
-                                           false);
-  });
+  const std::string message =
+    io_error_message([&] { parsed((root / "case/typo.prm").string(), root); });
   EXPECT_NE(message.find("Line <5>"), std::string::npos) << message;
 
   // A missing include is named as the program looked for it.
   tree.write("case/shared/missing.prm", "include neighbour.prm\n");
-  const std::string missing = io_error_message([&] {
-    fdem::parameters::parse_parameter_file(
-      typo, (root / "case/shared/missing.prm").string(), false);
-  });
+  const std::string missing = io_error_message(
+    [&] { parsed((root / "case/shared/missing.prm").string(), "/"); });
   EXPECT_NE(missing.find("the included file '" +
                          (root / "case/shared/neighbour.prm").string() +
                          "': no such file."),
@@ -404,12 +402,8 @@ TEST(ParameterFiles, FileEntriesOfAJsonFile)
   const TemporaryTree tree;
   tree.write("case/main.json",
              R"({"Geometry": {"Mesh file": "meshes/a.msh"}})");
-  fdem::parameters::FileRelativeParameterHandler prm(
-    fdem::parameters::input_file_entries());
-  declare_file_entries(prm);
-  fdem::parameters::parse_parameter_file(
-    prm, (tree.root / "case/main.json").string(), false);
-  EXPECT_EQ(entry(prm, "Geometry/Mesh file"),
+  const auto prm = parsed((tree.root / "case/main.json").string(), "/");
+  EXPECT_EQ(entry(*prm, "Geometry/Mesh file"),
             (tree.root / "case/meshes/a.msh").string());
 }
 
