@@ -211,11 +211,13 @@ def check_determinism(exe, prm):
                 if s["status"] == "certified")
     print(f"2 ranks: the same samples and statuses; K differs by at most {worst:.1e} relative "
           f"(the deterministic K {'is' if same_model else 'is not'} the same bit for bit)")
-    # With the model the same bit for bit, every sample must be too: each
-    # starts from the same state and a fresh factorisation. Where the ranks
-    # change the model's round-off (the assembly's sums, tests/mpi), 1e-10
-    # is the bound of the mpi tests.
-    assert worst <= (0 if same_model else 1e-10), "K depends on the number of ranks"
+    # Each sample starts from the same state and a fresh factorisation,
+    # whichever rank solves it, so only round-off may differ: 1e-10, the
+    # bound of the mpi tests. Not bit for bit even where the deterministic K
+    # is: OpenBLAS's kernels may round differently where the same arrays
+    # lie at other addresses in another process (no BLAS promises more);
+    # measured 1.3e-15 on an AVX-512 machine, 0 on others.
+    assert worst <= 1e-10, "K depends on the number of ranks"
 
 
 def check_start(exe, prm):
